@@ -1,0 +1,52 @@
+#pragma once
+/// Compressible Mooney-Rivlin rubber, DYNA3D material 27 / LS-DYNA *MAT_MOONEY-RIVLIN_RUBBER.
+///
+///   W = A (I1 - 3) + B (I2 - 3) + C (I3^-2 - 1) + D (I3 - 1)^2,
+///   C = A/2 + B,   D = [A (5 nu - 2) + B (11 nu - 5)] / [2 (1 - 2 nu)],
+///
+/// with I1, I2, I3 the invariants of the right Cauchy-Green tensor (I3 = J^2). C and D make the
+/// reference state stress free and give the small-strain moduli G = 2 (A + B) and
+/// lambda = 2 G nu / (1 - 2 nu). Cauchy stress (Bt = left Cauchy-Green tensor F F^T):
+///   sigma = (2/J) [ (W1 + I1 W2) Bt - W2 Bt^2 ] + 2 J W3 I.
+/// Reference: LS-DYNA Theory Manual, material 27; Hallquist, DYNA3D User Manual (Lin 2005).
+#include <cmath>
+
+#include "slideline/core/types.hpp"
+
+namespace slideline {
+
+class MooneyRivlin {
+ public:
+  MooneyRivlin(Real density, Real a, Real b, Real poisson)
+      : rho_(density), a_(a), b_(b), nu_(poisson) {
+    c_ = 0.5 * a_ + b_;
+    d_ = (a_ * (5.0 * nu_ - 2.0) + b_ * (11.0 * nu_ - 5.0)) / (2.0 * (1.0 - 2.0 * nu_));
+  }
+
+  Real density() const { return rho_; }
+  /// Small-strain shear modulus 2 (A + B).
+  Real shear_modulus() const { return 2.0 * (a_ + b_); }
+  Real lame_lambda() const { return 2.0 * shear_modulus() * nu_ / (1.0 - 2.0 * nu_); }
+  Real youngs_modulus() const { return 2.0 * shear_modulus() * (1.0 + nu_); }
+  /// Small-strain dilatational wave speed sqrt((lambda + 2G) / rho).
+  Real wave_speed() const { return std::sqrt((lame_lambda() + 2.0 * shear_modulus()) / rho_); }
+
+  /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
+  Mat3 cauchy_stress(const Mat3& F) const {
+    const Mat3 bt = F * F.transpose();
+    const Real J = F.determinant();
+    const Real i1 = bt.trace();
+    const Real i3 = J * J;
+    const Real w1 = a_;
+    const Real w2 = b_;
+    const Real w3 = -2.0 * c_ / (i3 * i3 * i3) + 2.0 * d_ * (i3 - 1.0);
+    Mat3 s = (2.0 / J) * ((w1 + i1 * w2) * bt - w2 * bt * bt);
+    s.diagonal().array() += 2.0 * J * w3;
+    return s;
+  }
+
+ private:
+  Real rho_, a_, b_, nu_, c_, d_;
+};
+
+}  // namespace slideline

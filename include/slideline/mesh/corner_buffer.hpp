@@ -1,0 +1,67 @@
+#pragma once
+/// Per-element-corner force (and moment) storage, gathered into nodes without atomics.
+///
+/// Every element writes the forces it applies to its nodes into its own corner slots; a node then
+/// sums its slots in a fixed order (a CSR list built once). The sum therefore does not depend on
+/// the thread count, and no two threads ever write the same memory.
+#include <vector>
+
+#include "slideline/core/parallel.hpp"
+#include "slideline/mesh/nodal_fields.hpp"
+
+namespace slideline {
+
+/// Compressed node -> slot lists.
+struct NodeSlots {
+  std::vector<Index> offset;  ///< size n_nodes + 1
+  std::vector<Index> slot;
+
+  /// Builds the lists from a flat connectivity: slot s belongs to node conn[s] (slot base added).
+  void build(Index n_nodes, const std::vector<std::pair<Index, Index>>& node_slot_pairs) {
+    offset.assign(n_nodes + 1, 0);
+    for (const auto& [n, s] : node_slot_pairs) ++offset[n + 1];
+    for (Index i = 0; i < n_nodes; ++i) offset[i + 1] += offset[i];
+    slot.assign(node_slot_pairs.size(), 0);
+    std::vector<Index> fill(offset.begin(), offset.end() - 1);
+    for (const auto& [n, s] : node_slot_pairs) slot[fill[n]++] = s;
+  }
+};
+
+/// Corner slots of all element blocks of a model. A block owns the range
+/// [base, base + nodes_per_element * elements) of `force`, and shells also a range of `moment`.
+struct CornerBuffer {
+  Vec3Field force;
+  Vec3Field moment;
+  NodeSlots force_slots;
+  NodeSlots moment_slots;
+
+  /// Sums the corner forces into `f` and the corner moments into `m` (both overwritten).
+  void gather(Vec3Field& f, Vec3Field& m) const {
+    const Index n = static_cast<Index>(f.size());
+    parallel_for(n, [&](Index i) {
+      Real sx = 0, sy = 0, sz = 0;
+      for (Index k = force_slots.offset[i]; k < force_slots.offset[i + 1]; ++k) {
+        const Index s = force_slots.slot[k];
+        sx += force.x[s];
+        sy += force.y[s];
+        sz += force.z[s];
+      }
+      f.x[i] = sx;
+      f.y[i] = sy;
+      f.z[i] = sz;
+      if (moment_slots.offset.empty()) return;
+      Real mx = 0, my = 0, mz = 0;
+      for (Index k = moment_slots.offset[i]; k < moment_slots.offset[i + 1]; ++k) {
+        const Index s = moment_slots.slot[k];
+        mx += moment.x[s];
+        my += moment.y[s];
+        mz += moment.z[s];
+      }
+      m.x[i] = mx;
+      m.y[i] = my;
+      m.z[i] = mz;
+    });
+  }
+};
+
+}  // namespace slideline

@@ -1,0 +1,359 @@
+#pragma once
+/// The model description: what a keyword deck says, card by card, with LS-DYNA's field names and
+/// semantics (ids, not indices; LS-DYNA sign conventions). The keyword reader fills it, the writer
+/// writes it back out, the scenarios generate it, and `build_simulation` turns it into the runtime
+/// state (dense arrays, internal indices, physical sign conventions).
+///
+/// Units are whatever consistent set the deck uses (the spec's problems are unitless).
+/// A field left blank in a deck keeps the default given here, which is LS-DYNA's default.
+#include <array>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "slideline/core/types.hpp"
+
+namespace slideline::model {
+
+/// Where a card came from, for error messages. line = 0 when built programmatically.
+struct Source {
+  std::string file;
+  int line = 0;
+};
+
+struct Node {
+  Id id = 0;
+  Vec3 x = Vec3::Zero();
+  int tc = 0;  ///< translational constraint code (0 = free)
+  int rc = 0;  ///< rotational constraint code (0 = free)
+};
+
+/// *ELEMENT_SOLID: 8-node hexahedron, LS-DYNA node ordering (bottom face 1-4, top face 5-8).
+struct SolidElement {
+  Id id = 0;
+  Id pid = 0;
+  std::array<Id, 8> n{};
+};
+
+/// *ELEMENT_SHELL: 4-node quadrilateral (n3 == n4 for a triangle is not supported yet).
+struct ShellElement {
+  Id id = 0;
+  Id pid = 0;
+  std::array<Id, 4> n{};
+};
+
+/// *PART
+struct Part {
+  Id pid = 0;
+  std::string title;
+  Id secid = 0;
+  Id mid = 0;
+  Id eosid = 0;
+  Id hgid = 0;  ///< 0 = use *CONTROL_HOURGLASS
+  Source src;
+};
+
+/// *SECTION_SOLID
+struct SectionSolid {
+  Id secid = 0;
+  int elform = 1;  ///< 1 = constant-stress (one-point) hexahedron, the only one supported
+  Source src;
+};
+
+/// *SECTION_SHELL
+struct SectionShell {
+  Id secid = 0;
+  int elform = 2;      ///< 2 = Belytschko-Tsay, the only one supported
+  Real shrf = 1.0;     ///< transverse shear factor (LS-DYNA default 1.0; 5/6 is usual)
+  int nip = 2;         ///< through-thickness integration points
+  Real propt = 1.0;
+  std::array<Real, 4> t{0.0, 0.0, 0.0, 0.0};  ///< nodal thicknesses (t2..t4 default to t1)
+  Source src;
+};
+
+/// *MAT_ELASTIC (type 1)
+struct MatElastic {
+  Id mid = 0;
+  Real ro = 0.0;  ///< density
+  Real e = 0.0;   ///< Young's modulus
+  Real pr = 0.0;  ///< Poisson ratio
+  std::string title;
+  Source src;
+};
+
+/// *MAT_MOONEY-RIVLIN_RUBBER (type 27): W = A(I1-3) + B(I2-3) + C(I3^-2 - 1) + D(I3-1)^2.
+struct MatMooneyRivlin {
+  Id mid = 0;
+  Real ro = 0.0;
+  Real pr = 0.0;
+  Real a = 0.0;
+  Real b = 0.0;
+  std::string title;
+  Source src;
+};
+
+/// *MAT_RIGID (type 20). E and PR are used only for contact stiffness and the time step.
+struct MatRigid {
+  Id mid = 0;
+  Real ro = 0.0;
+  Real e = 0.0;
+  Real pr = 0.0;
+  Real cmo = 0.0;  ///< 0 = no constraints; +1 = constrain the body's global translations/rotations
+  int con1 = 0;    ///< translational constraint code (with cmo = +1): 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 xyz
+  int con2 = 0;    ///< rotational constraint code (with cmo = +1), same coding
+  std::string title;
+  Source src;
+};
+
+using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid>;
+
+/// *HOURGLASS
+struct Hourglass {
+  Id hgid = 0;
+  int ihq = 1;     ///< 1,2 = Flanagan-Belytschko viscous; 10 = total-displacement physical stiffness
+  Real qm = 0.1;   ///< hourglass coefficient
+  Real q1 = 1.5;   ///< quadratic bulk viscosity (per part)
+  Real q2 = 0.06;  ///< linear bulk viscosity (per part)
+  Source src;
+};
+
+/// *CONTROL_HOURGLASS
+struct ControlHourglass {
+  int ihq = 1;
+  Real qh = 0.1;
+};
+
+/// *CONTROL_BULK_VISCOSITY
+struct ControlBulkViscosity {
+  Real q1 = 1.5;   ///< quadratic coefficient
+  Real q2 = 0.06;  ///< linear coefficient
+};
+
+/// *SET_NODE_LIST
+struct NodeSet {
+  Id sid = 0;
+  std::string title;
+  std::vector<Id> nodes;
+  Source src;
+};
+
+/// *SET_SEGMENT: each segment lists 4 node ids (n3 == n4 for a triangle).
+struct SegmentSet {
+  Id sid = 0;
+  std::string title;
+  std::vector<std::array<Id, 4>> segments;
+  Source src;
+};
+
+/// *SET_PART_LIST
+struct PartSet {
+  Id sid = 0;
+  std::string title;
+  std::vector<Id> parts;
+  Source src;
+};
+
+/// *BOUNDARY_SPC_SET: fixed degrees of freedom (1 = fixed) of every node of a node set.
+struct BoundarySpc {
+  Id id = 0;           ///< from the _ID option; 0 if absent
+  std::string title;   ///< heading from the _ID option
+  Id nsid = 0;
+  Id cid = 0;
+  std::array<int, 6> dof{0, 0, 0, 0, 0, 0};  ///< DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
+  Source src;
+};
+
+/// *BOUNDARY_PRESCRIBED_MOTION_SET: prescribed motion of a node set in one direction.
+struct PrescribedMotion {
+  Id id = 0;
+  std::string title;
+  Id nsid = 0;
+  int dof = 1;     ///< 1 x, 2 y, 3 z (translations only are supported)
+  int vad = 2;     ///< 0 velocity, 1 acceleration, 2 displacement
+  Id lcid = 0;     ///< curve of the prescribed quantity against time
+  Real sf = 1.0;   ///< curve scale factor
+  Id vid = 0;
+  Real death = 1e28;
+  Real birth = 0.0;
+  Source src;
+};
+
+/// *LOAD_BODY_X / _Y / _Z: base acceleration. LS-DYNA semantics: a positive value gives inertial
+/// forces in the negative direction (force on a node = -m * sf * curve(t) along the axis).
+struct LoadBody {
+  Axis axis = Axis::x;
+  Id lcid = 0;
+  Real sf = 1.0;
+  Id lciddr = 0;
+  Real xc = 0.0, yc = 0.0, zc = 0.0;
+  Id cid = 0;
+  Source src;
+};
+
+/// *LOAD_BODY_PARTS: the part set that *LOAD_BODY_X/Y/Z act on (all parts when absent).
+struct LoadBodyParts {
+  Id psid = 0;
+  Source src;
+};
+
+/// *DEFINE_CURVE: y = SFO * f((t - OFFA) / SFA) + OFFO, piecewise linear, constant outside.
+struct Curve {
+  Id lcid = 0;
+  std::string title;
+  int sidr = 0;
+  Real sfa = 1.0;
+  Real sfo = 1.0;
+  Real offa = 0.0;
+  Real offo = 0.0;
+  int dattyp = 0;
+  std::vector<std::pair<Real, Real>> points;
+  Source src;
+};
+
+/// *DAMPING_GLOBAL: mass-proportional damping, force = -VALDMP * m * v (VALDMP in 1/time).
+struct DampingGlobal {
+  Id lcid = 0;       ///< curve of the damping constant against time (0 = constant VALDMP)
+  Real valdmp = 0.0;
+  std::array<Real, 6> stf{0, 0, 0, 0, 0, 0};  ///< STX..SRZ scale factors (0 = 1)
+  Source src;
+};
+
+/// *DAMPING_PART_MASS: mass-proportional damping of one part (or part set with FLAG=1).
+struct DampingPartMass {
+  Id pid = 0;
+  Id lcid = 0;
+  Real sf = 1.0;
+  int flag = 0;
+  Source src;
+};
+
+/// *CONTROL_TERMINATION
+struct ControlTermination {
+  Real endtim = 0.0;
+  int endcyc = 0;
+};
+
+/// *CONTROL_TIMESTEP
+struct ControlTimestep {
+  Real dtinit = 0.0;
+  Real tssfac = 0.9;  ///< time-step scale factor
+  int isdo = 0;
+  Real tslimt = 0.0;
+  Real dt2ms = 0.0;
+  Id lctm = 0;
+};
+
+/// *CONTROL_CONTACT (card 1 fields used here)
+struct ControlContact {
+  Real slsfac = 0.1;  ///< default penalty scale factor
+  Real rwpnal = 0.0;
+  int islchk = 1;
+  int shlthk = 0;     ///< 0 = ignore shell thickness in non-automatic contacts; 1,2 = include
+  int penopt = 1;
+  int thkchg = 0;
+  int orien = 1;
+  int enmass = 0;
+};
+
+/// Output cadences (*DATABASE_...). 0 = not written.
+struct DatabaseControl {
+  Real rcforc = 0.0;   ///< interface forces
+  Real spcforc = 0.0;  ///< support reactions
+  Real nodout = 0.0;   ///< node histories
+  Real glstat = 0.0;   ///< energies
+  Real d3plot = 0.0;   ///< nodal states (deformed mesh)
+  std::vector<Id> history_nodes;  ///< *DATABASE_HISTORY_NODE
+};
+
+/// The DYNA3D interface types of the verification report, mapped to LS-DYNA contact cards.
+enum class ContactType : std::uint8_t {
+  sliding_only = 1,            ///< *CONTACT_SLIDING_ONLY
+  tied_surface = 2,            ///< *CONTACT_TIED_SURFACE_TO_SURFACE
+  surface_to_surface = 3,      ///< *CONTACT_SURFACE_TO_SURFACE
+  nodes_to_surface = 5,        ///< *CONTACT_NODES_TO_SURFACE
+  tied_nodes = 6,              ///< *CONTACT_TIED_NODES_TO_SURFACE
+  tied_shell_edge = 7,         ///< *CONTACT_TIED_SHELL_EDGE_TO_SURFACE
+  tiebreak_nodes = 8,          ///< *CONTACT_TIEBREAK_NODES_TO_SURFACE
+  tiebreak_surface = 9,        ///< *CONTACT_TIEBREAK_SURFACE_TO_SURFACE
+  one_way = 10,                ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
+  automatic = 12,              ///< *CONTACT_AUTOMATIC_SINGLE_SURFACE / _GENERAL
+};
+
+enum class Enforcement : std::uint8_t { kinematic, penalty, lagrange };
+
+/// A *CONTACT_... card with its cards 1-3 and the optional tiebreak card 4.
+struct Contact {
+  Id cid = 0;             ///< from _ID; 0 if absent
+  std::string title;      ///< heading from _ID / _TITLE
+  std::string keyword;    ///< the keyword as written, e.g. "*CONTACT_SURFACE_TO_SURFACE_ID"
+  ContactType type = ContactType::surface_to_surface;
+  Enforcement enforcement = Enforcement::penalty;
+  bool sliding_only_option = false;  ///< Type 10's sliding-only (no separation) option
+  bool automatic_general = false;    ///< _GENERAL rather than _SINGLE_SURFACE for type 12
+  // Card 1
+  Id ssid = 0, msid = 0;
+  int sstyp = 0, mstyp = 0;  ///< 0 segment set, 2 part set, 3 part id, 4 node set, 5 all
+  Id sboxid = 0, mboxid = 0;
+  int spr = 0, mpr = 0;
+  // Card 2
+  Real fs = 0.0;    ///< static friction coefficient
+  Real fd = 0.0;    ///< dynamic friction coefficient
+  Real dc = 0.0;    ///< exponential decay coefficient
+  Real vc = 0.0;    ///< viscous friction coefficient
+  Real vdc = 0.0;   ///< viscous damping coefficient (% of critical)
+  int penchk = 0;
+  Real bt = 0.0;    ///< birth time
+  Real dt = 1e20;   ///< death time
+  // Card 3
+  Real sfs = 1.0, sfm = 1.0;    ///< penalty scale factors (slave, master)
+  Real sst = 0.0, mst = 0.0;    ///< optional thickness (0 = from the elements)
+  Real sfst = 1.0, sfmt = 1.0;  ///< thickness scale factors
+  Real fsf = 1.0, vsf = 1.0;
+  // Card 4 (tiebreak)
+  Real nflf = 0.0;  ///< normal failure force (type 8) / stress (type 9)
+  Real sflf = 0.0;  ///< shear failure force (type 8) / stress (type 9)
+  Real nen = 2.0;   ///< normal exponent
+  Real mes = 2.0;   ///< shear exponent
+  int option = 0;   ///< tiebreak OPTION
+  Real nfls = 0.0, sfls = 0.0;
+  Real radius = 0.0;  ///< nodal contact radius for discrete nodes (type 5)
+  Source src;
+};
+
+/// Everything a deck says.
+struct Model {
+  std::string title;
+  std::vector<Node> nodes;
+  std::vector<SolidElement> solids;
+  std::vector<ShellElement> shells;
+  std::vector<Part> parts;
+  std::vector<SectionSolid> solid_sections;
+  std::vector<SectionShell> shell_sections;
+  std::vector<Material> materials;
+  std::vector<Hourglass> hourglasses;
+  ControlHourglass control_hourglass;
+  ControlBulkViscosity bulk_viscosity;
+  std::vector<NodeSet> node_sets;
+  std::vector<SegmentSet> segment_sets;
+  std::vector<PartSet> part_sets;
+  std::vector<BoundarySpc> spcs;
+  std::vector<PrescribedMotion> prescribed_motions;
+  std::vector<LoadBody> body_loads;
+  std::optional<LoadBodyParts> body_load_parts;
+  std::vector<Curve> curves;
+  std::optional<DampingGlobal> damping_global;
+  std::vector<DampingPartMass> damping_parts;
+  ControlTermination termination;
+  ControlTimestep timestep;
+  ControlContact control_contact;
+  DatabaseControl database;
+  std::vector<Contact> contacts;
+};
+
+/// The material id of any material alternative.
+inline Id material_id(const Material& m) {
+  return std::visit([](const auto& mm) { return mm.mid; }, m);
+}
+
+}  // namespace slideline::model

@@ -1,0 +1,53 @@
+#pragma once
+/// Loads and supports in physical form (the builder converts deck semantics into these).
+#include <string>
+#include <vector>
+
+#include "slideline/core/types.hpp"
+#include "slideline/solver/load_curve.hpp"
+
+namespace slideline {
+
+/// An acceleration field on a set of nodes: force on node i = mass_i * scale * curve(t) along axis.
+/// (Physical sign: a positive scale pushes in +axis. The deck reader turns LS-DYNA's base
+/// accelerations into this form.)
+struct BodyLoad {
+  Axis axis = Axis::x;
+  Real scale = 0.0;
+  LoadCurve curve = LoadCurve::constant(1.0);
+  std::vector<Index> nodes;  ///< nodes of the loaded parts (unique)
+};
+
+/// Prescribed displacement of a node set along one axis: u(t) = scale * curve(t), or zero when
+/// `curve` is empty. Records the reaction: the total force the body exerts on the support.
+struct Support {
+  std::string name;  ///< output title, e.g. "spc_1" or the deck heading
+  Axis axis = Axis::x;
+  std::vector<Index> nodes;
+  bool has_curve = false;
+  LoadCurve curve;
+  Real scale = 1.0;
+};
+
+/// A group of supports reported together (one *BOUNDARY_SPC_SET fixing several directions is one
+/// group with one reaction vector).
+struct SupportGroup {
+  std::string name;
+  std::vector<Support> supports;
+  Vec3 reaction = Vec3::Zero();  ///< force the body exerts on the supports at the last step
+};
+
+/// Mass-proportional (Rayleigh alpha) damping: force = -alpha(t) * m * v on the nodes in `nodes`
+/// (all nodes when empty).
+struct MassDamping {
+  Real alpha = 0.0;  ///< 1/time
+  bool has_curve = false;
+  LoadCurve curve;
+  std::vector<Index> nodes;
+
+  /// alpha from a fraction of critical damping at a circular frequency: alpha = 2 zeta omega.
+  static Real alpha_from_critical(Real fraction, Real omega) { return 2.0 * fraction * omega; }
+  Real value(Real t) const { return has_curve ? alpha * curve(t) : alpha; }
+};
+
+}  // namespace slideline

@@ -1,0 +1,23 @@
+#pragma once
+/// Turns a model description (deck semantics, ids) into a runnable Simulation (physical
+/// semantics, dense indices). Every reference is checked; errors name the card and its line.
+#include <memory>
+
+#include "slideline/model/model.hpp"
+#include "slideline/solver/simulation.hpp"
+
+namespace slideline {
+
+struct BuildOptions {
+  /// Overrides *CONTROL_TERMINATION's ENDTIM when > 0.
+  Real end_time = 0.0;
+};
+
+/// Builds the simulation. Throws InputError for a bad reference or value, NotImplementedError for
+/// a card this version cannot run yet (naming the card and its line).
+std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options = {});
+
+/// "file:line" of a card, or "(generated)" when it was built programmatically.
+std::string describe(const model::Source& src);
+
+}  // namespace slideline
