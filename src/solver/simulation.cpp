@@ -86,11 +86,12 @@ void Simulation::initialize() {
 
   // Supports.
   for (auto& f : fixed_) f.assign(n, 0);
+  for (auto& f : fixed_rot_) f.assign(n, 0);
   for (const auto& g : supports)
     for (const auto& s : g.supports)
       for (Index i : s.nodes) {
         if (i < 0 || i >= n) throw InputError("support " + g.name + " refers to a missing node");
-        fixed_[static_cast<int>(s.axis)][i] = 1;
+        (s.rotational ? fixed_rot_ : fixed_)[static_cast<int>(s.axis)][i] = 1;
       }
 
   // Damping.
@@ -193,6 +194,7 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
   for (auto& g : supports) {
     Vec3 r = Vec3::Zero();
     for (const auto& s : g.supports) {
+      if (s.rotational) continue;
       const int c = static_cast<int>(s.axis);
       for (Index i : s.nodes) {
         Real vnew = 0.0;
@@ -251,7 +253,8 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
         for (int c = 0; c < 3; ++c) {
           const Real wold = nodes.omega[c][i];
           const Real mom = nodes.m_int[c][i] + nodes.m_ext[c][i];
-          const Real wnew = ((1.0 - h) * wold + dt_avg * mom / inertia) / (1.0 + h);
+          const Real wnew =
+              fixed_rot_[c][i] ? 0.0 : ((1.0 - h) * wold + dt_avg * mom / inertia) / (1.0 + h);
           nodes.omega[c][i] = wnew;
           const Real wbar = 0.5 * (wold + wnew);
           const Real dprev = 0.5 * dt_old * wold;

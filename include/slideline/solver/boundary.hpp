@@ -23,6 +23,7 @@ struct BodyLoad {
 struct Support {
   std::string name;  ///< output title, e.g. "spc_1" or the deck heading
   Axis axis = Axis::x;
+  bool rotational = false;  ///< fixes the rotation about `axis` (zero only; no reaction moment recorded)
   std::vector<Index> nodes;
   bool has_curve = false;
   LoadCurve curve;

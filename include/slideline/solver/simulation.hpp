@@ -112,6 +112,7 @@ class Simulation {
   CornerBuffer corners_;
   std::vector<Real> alpha_;            // per-node damping coefficient
   std::vector<std::uint8_t> fixed_[3];  // per axis: 1 if a support prescribes this component
+  std::vector<std::uint8_t> fixed_rot_[3];  // per axis: 1 if a support fixes this rotation
   std::vector<Real> chunk_e_;          // energy partial sums, kEnergyTerms per chunk
   std::vector<Real> history_values_;
   std::vector<Real> state_values_;
