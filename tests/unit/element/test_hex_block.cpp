@@ -1,0 +1,166 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "slideline/element/hex_block.hpp"
+#include "slideline/material/elastic.hpp"
+#include "slideline/material/mooney_rivlin.hpp"
+#include "test_support/block_eval.hpp"
+#include "test_support/hex_fixtures.hpp"
+
+using namespace slideline;
+
+namespace {
+
+/// A 2x2x2 mesh of the unit cube with its centre node and mid-face nodes moved (distorted).
+struct PatchMesh {
+  NodalFields nodes;
+  std::vector<Index> conn;
+  std::vector<Id> ids;
+  std::vector<int> interior;  // node indices not on the boundary
+};
+
+PatchMesh make_patch_mesh() {
+  PatchMesh p;
+  auto idx = [](int i, int j, int k) { return i + 3 * (j + 3 * k); };
+  p.nodes.resize(27);
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        Vec3 x(0.5 * i, 0.5 * j, 0.5 * k);
+        if (i == 1 && j == 1 && k == 1) x += Vec3(0.12, -0.08, 0.1);
+        else if (i == 1 && j == 1) x += Vec3(0.07, -0.05, 0.0);   // mid nodes of z faces
+        else if (j == 1 && k == 1) x += Vec3(0.0, 0.06, -0.09);   // mid nodes of x faces
+        const Index n = idx(i, j, k);
+        p.nodes.ids[n] = n + 1;
+        p.nodes.x0.set(n, x);
+        p.nodes.x.set(n, x);
+        if (i == 1 && j == 1 && k == 1) p.interior.push_back(n);
+      }
+  Id eid = 1;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const Index c[8] = {idx(i, j, k),         idx(i + 1, j, k),         idx(i + 1, j + 1, k),
+                            idx(i, j + 1, k),     idx(i, j, k + 1),         idx(i + 1, j, k + 1),
+                            idx(i + 1, j + 1, k + 1), idx(i, j + 1, k + 1)};
+        p.conn.insert(p.conn.end(), c, c + 8);
+        p.ids.push_back(eid++);
+      }
+  return p;
+}
+
+template <class Mat>
+HexBlock<Mat> make_block(const PatchMesh& p, Mat mat, HexHourglass::Kind hk) {
+  return HexBlock<Mat>(1, mat, HexHourglass{hk, hk == HexHourglass::Kind::viscous ? 0.1 : 1.0},
+                       BulkViscosity{}, p.conn, p.ids);
+}
+
+}  // namespace
+
+class HexBlockRigidMotion : public ::testing::TestWithParam<HexHourglass::Kind> {};
+
+TEST_P(HexBlockRigidMotion, GivesZeroInternalForce) {
+  PatchMesh p = make_patch_mesh();
+  auto block = make_block(p, MooneyRivlin(0.01, 909.091, 0.0, 0.1), GetParam());
+  CornerBuffer corners;
+  test_support::prepare(block, p.nodes, corners);
+  // A large rotation plus translation, applied to positions; velocities of the same rigid motion.
+  const Mat3 R = Eigen::AngleAxis<Real>(1.1, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+  const Vec3 w(0.3, -1.2, 0.7), v0(2.0, -1.0, 0.5);
+  for (Index i = 0; i < 27; ++i) {
+    const Vec3 x = R * p.nodes.x0.get(i) + Vec3(3.0, -2.0, 1.0);
+    p.nodes.x.set(i, x);
+    p.nodes.v.set(i, v0 + w.cross(x));
+  }
+  test_support::evaluate(block, p.nodes, corners);
+  Real fmax = 0.0;
+  for (Index i = 0; i < 27; ++i) fmax = std::max(fmax, p.nodes.f_int.get(i).norm());
+  EXPECT_LT(fmax, 1e-10);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothHourglassForms, HexBlockRigidMotion,
+                         ::testing::Values(HexHourglass::Kind::viscous,
+                                           HexHourglass::Kind::physical_stiffness));
+
+TEST(HexBlockPatch, ConstantStrainOnDistortedMeshGivesUniformStressAndInteriorEquilibrium) {
+  PatchMesh p = make_patch_mesh();
+  const ElasticSolid mat(1.0, 1000.0, 0.3);
+  auto block = make_block(p, mat, HexHourglass::Kind::physical_stiffness);
+  CornerBuffer corners;
+  test_support::prepare(block, p.nodes, corners);
+  Mat3 F;
+  F << 1.02, 0.01, -0.005, 0.003, 0.985, 0.01, 0.0, 0.004, 1.01;
+  for (Index i = 0; i < 27; ++i) p.nodes.x.set(i, F * p.nodes.x0.get(i));
+  test_support::evaluate(block, p.nodes, corners);
+  // The interior node is shared by all 8 elements: its force vanishes only if every element has
+  // the same stress and the gradient operator is the exact volume average.
+  for (int n : p.interior) EXPECT_LT(p.nodes.f_int.get(n).norm(), 1e-10);
+  // Total force on the x = max face equals the traction sigma . n times the deformed face area.
+  const Mat3 sigma = mat.cauchy_stress(F);
+  Vec3 face = Vec3::Zero();
+  for (Index i = 0; i < 27; ++i)
+    if (std::abs(p.nodes.x0.x[i] - 1.0) < 1e-12) face += p.nodes.f_int.get(i);
+  const Vec3 area_vec = F.determinant() * F.inverse().transpose() * Vec3(1, 0, 0);  // Nanson
+  const Vec3 expected = -(sigma * area_vec);  // residual form: the element pulls the face inward
+  EXPECT_LT((face - expected).norm(), 1e-10 * expected.norm() + 1e-12);
+}
+
+TEST(HexBlockUniaxial, OneElementForcesMatchMooneyRivlinClosedForm) {
+  // One element stretched to lambda = 1.8 in x with the lateral stretch of uniaxial stress: the
+  // x-face force must equal sigma_11 times the current face area, and the lateral faces carry none.
+  // (A nearly incompressible rubber: with nu = 0.1 DYNA3D's form has no uniaxial state at 1.8.)
+  const MooneyRivlin mat(1.0, 300.0, 120.0, 0.45);
+  NodalFields nodes;
+  nodes.resize(8);
+  const hex8::NodeMat X = test_support::unit_hex();
+  // lateral stretch from the material itself (sigma_22 = 0), found by bisection
+  const Real l1 = 1.8;
+  Real lo = 0.5, hi = 1.0;
+  ASSERT_LT(mat.cauchy_stress(Vec3(l1, lo, lo).asDiagonal())(1, 1), 0.0);
+  ASSERT_GT(mat.cauchy_stress(Vec3(l1, hi, hi).asDiagonal())(1, 1), 0.0);
+  for (int it = 0; it < 200; ++it) {
+    const Real mid = 0.5 * (lo + hi);
+    (mat.cauchy_stress(Vec3(l1, mid, mid).asDiagonal())(1, 1) > 0 ? hi : lo) = mid;
+  }
+  const Real l2 = 0.5 * (lo + hi);
+  for (int i = 0; i < 8; ++i) {
+    nodes.ids[i] = i + 1;
+    nodes.x0.set(i, X.row(i).transpose());
+    nodes.x.set(i, Vec3(l1 * X(i, 0), l2 * X(i, 1), l2 * X(i, 2)));
+  }
+  HexBlock<MooneyRivlin> block(1, mat, {HexHourglass::Kind::physical_stiffness, 1.0}, {},
+                               {0, 1, 2, 3, 4, 5, 6, 7}, {1});
+  CornerBuffer corners;
+  test_support::prepare(block, nodes, corners);
+  test_support::evaluate(block, nodes, corners);
+  const Real s11 = mat.cauchy_stress(Vec3(l1, l2, l2).asDiagonal())(0, 0);
+  Real fx = 0.0, fy = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    if (X(i, 0) == 1.0) fx += nodes.f_int.x[i];
+    if (X(i, 1) == 1.0) fy += nodes.f_int.y[i];
+  }
+  EXPECT_GT(s11, 0.0);
+  EXPECT_NEAR(-fx, s11 * l2 * l2, 1e-9 * s11);
+  EXPECT_NEAR(fy, 0.0, 1e-6 * s11);
+}
+
+TEST(HexBlockTimeStep, EqualsEdgeOverWaveSpeedForCubeAtRest) {
+  const ElasticSolid mat(7.8e-3, 2.0e5, 0.3);
+  NodalFields nodes;
+  nodes.resize(8);
+  const hex8::NodeMat X = test_support::unit_hex() * 0.25;
+  for (int i = 0; i < 8; ++i) {
+    nodes.x0.set(i, X.row(i).transpose());
+    nodes.x.set(i, X.row(i).transpose());
+  }
+  HexBlock<ElasticSolid> block(1, mat, {}, {}, {0, 1, 2, 3, 4, 5, 6, 7}, {1});
+  CornerBuffer corners;
+  test_support::prepare(block, nodes, corners);
+  const Real dt = test_support::evaluate(block, nodes, corners);
+  const Real c = std::sqrt(2.0e5 * 0.7 / (1.3 * 0.4) / 7.8e-3);  // sqrt((lambda + 2 mu) / rho)
+  EXPECT_NEAR(dt, 0.25 / c, 1e-12);
+  Real m = 0;
+  for (int i = 0; i < 8; ++i) m += nodes.mass[i];
+  EXPECT_NEAR(m, 7.8e-3 * 0.25 * 0.25 * 0.25, 1e-15);
+}
