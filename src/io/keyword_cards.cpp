@@ -1,0 +1,534 @@
+// Card handlers of the keyword reader (everything but *CONTACT_..., see keyword_contacts.cpp).
+// Field orders follow the LS-DYNA keyword manual (docs/keywords.md lists them with sources).
+#include <functional>
+#include <string>
+
+#include "keyword_card.hpp"
+#include "slideline/core/error.hpp"
+
+namespace slideline::keyword {
+namespace {
+
+using model::Model;
+
+Card card_of(const Context& ctx, const Line& l, const Block& b,
+             std::span<const int> widths = kStandard) {
+  return Card(ctx, l, b.keyword, widths);
+}
+
+/// The next card, or throws when a block lacks a card it must have.
+const Line& require(const Context& ctx, Block& b, const char* what) {
+  const Line* l = b.take();
+  if (!l)
+    throw InputError(ctx.file + ":" + std::to_string(b.line) + ": " + b.keyword + ": missing " +
+                     what + " card");
+  return *l;
+}
+
+/// Skips blank cards; returns the next non-blank card or nullptr. Used by keywords that repeat a
+/// record until the next keyword, where a trailing blank line is not a record.
+const Line* next_record(Block& b) {
+  while (const Line* l = b.take())
+    if (!trim(l->text).empty()) return l;
+  return nullptr;
+}
+
+/// Like next_record, but a blank card counts when a non-blank card follows it: the first card of
+/// a record may be a blank heading (an untitled *PART, an empty _TITLE).
+const Line* next_record_keep_blank(Block& b) {
+  for (std::size_t k = b.next; k < b.cards.size(); ++k)
+    if (!trim(b.cards[k].text).empty()) return b.take();
+  b.next = b.cards.size();
+  return nullptr;
+}
+
+void read_title(const Context&, Block& b, Model& m) {
+  if (const Line* l = b.take()) m.title = heading(*l);
+}
+
+void read_nodes(const Context& ctx, Block& b, Model& m) {
+  while (const Line* l = next_record(b)) {
+    Card c = card_of(ctx, *l, b, kNodeCard);
+    model::Node n;
+    c.get(0, "NID", n.id);
+    c.get(1, "X", n.x[0]);
+    c.get(2, "Y", n.x[1]);
+    c.get(3, "Z", n.x[2]);
+    c.get(4, "TC", n.tc);
+    c.get(5, "RC", n.rc);
+    m.nodes.push_back(n);
+  }
+}
+
+static const char* const kNodeNames[] = {"N1", "N2", "N3", "N4", "N5", "N6", "N7", "N8"};
+
+void read_solids(const Context& ctx, Block& b, Model& m) {
+  while (const Line* l = next_record(b)) {
+    Card c = card_of(ctx, *l, b, kElementCard);
+    model::SolidElement e;
+    c.get(0, "EID", e.id);
+    c.get(1, "PID", e.pid);
+    bool nodes_blank = true;
+    for (int k = 2; k < 10; ++k) nodes_blank = nodes_blank && c.blank(k);
+    if (nodes_blank && !b.done()) {
+      // Two-card layout: EID PID on the first card, N1..N8 on the second.
+      const Line& l2 = require(ctx, b, "node");
+      Card c2 = card_of(ctx, l2, b, kElementCard);
+      for (int k = 0; k < 8; ++k) c2.get(k, kNodeNames[k], e.n[static_cast<std::size_t>(k)]);
+    } else {
+      for (int k = 0; k < 8; ++k) c.get(k + 2, kNodeNames[k], e.n[static_cast<std::size_t>(k)]);
+    }
+    m.solids.push_back(e);
+  }
+}
+
+void read_shells(const Context& ctx, Block& b, Model& m) {
+  while (const Line* l = next_record(b)) {
+    Card c = card_of(ctx, *l, b, kElementCard);
+    model::ShellElement e;
+    c.get(0, "EID", e.id);
+    c.get(1, "PID", e.pid);
+    for (int k = 0; k < 4; ++k) c.get(k + 2, kNodeNames[k], e.n[static_cast<std::size_t>(k)]);
+    m.shells.push_back(e);
+  }
+}
+
+void read_parts(const Context& ctx, Block& b, Model& m) {
+  while (const Line* h = next_record_keep_blank(b)) {
+    model::Part p;
+    p.title = heading(*h);
+    const Line& l = require(ctx, b, "PID");
+    Card c = card_of(ctx, l, b);
+    c.get(0, "PID", p.pid);
+    c.get(1, "SECID", p.secid);
+    c.get(2, "MID", p.mid);
+    c.get(3, "EOSID", p.eosid);
+    c.get(4, "HGID", p.hgid);
+    p.src = ctx.source(l.number);
+    m.parts.push_back(p);
+  }
+}
+
+/// Calls `record(card line)` for each record of a keyword whose _TITLE option puts a heading
+/// card before each record.
+template <class F>
+void each_titled(const Context& ctx, Block& b, bool titled, F&& record) {
+  while (const Line* first = titled ? next_record_keep_blank(b) : next_record(b)) {
+    std::string title;
+    const Line* l = first;
+    if (titled) {
+      title = heading(*first);
+      l = &require(ctx, b, "data");
+    }
+    record(*l, title);
+  }
+}
+
+void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
+  each_titled(ctx, b, titled, [&](const Line& l, const std::string&) {
+    Card c = card_of(ctx, l, b);
+    model::SectionSolid s;
+    c.get(0, "SECID", s.secid);
+    c.get(1, "ELFORM", s.elform);
+    s.src = ctx.source(l.number);
+    m.solid_sections.push_back(s);
+  });
+}
+
+void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
+  each_titled(ctx, b, titled, [&](const Line& l, const std::string&) {
+    Card c = card_of(ctx, l, b);
+    model::SectionShell s;
+    c.get(0, "SECID", s.secid);
+    c.get(1, "ELFORM", s.elform);
+    c.get(2, "SHRF", s.shrf);
+    c.get(3, "NIP", s.nip);
+    c.get(4, "PROPT", s.propt);
+    if (const Line* l2 = b.take()) {
+      Card c2 = card_of(ctx, *l2, b);
+      static const char* const names[] = {"T1", "T2", "T3", "T4"};
+      for (int k = 0; k < 4; ++k) c2.get(k, names[k], s.t[static_cast<std::size_t>(k)]);
+    }
+    s.src = ctx.source(l.number);
+    m.shell_sections.push_back(s);
+  });
+}
+
+void read_mat_elastic(const Context& ctx, Block& b, Model& m, bool titled) {
+  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
+  const Line& l = require(ctx, b, "MID");
+  Card c = card_of(ctx, l, b);
+  model::MatElastic mat;
+  c.get(0, "MID", mat.mid);
+  c.get(1, "RO", mat.ro);
+  c.get(2, "E", mat.e);
+  c.get(3, "PR", mat.pr);
+  mat.title = title;
+  mat.src = ctx.source(l.number);
+  m.materials.emplace_back(mat);
+  warn_extra_cards(ctx, b);
+}
+
+void read_mat_mooney_rivlin(const Context& ctx, Block& b, Model& m, bool titled) {
+  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
+  const Line& l = require(ctx, b, "MID");
+  Card c = card_of(ctx, l, b);
+  model::MatMooneyRivlin mat;
+  c.get(0, "MID", mat.mid);
+  c.get(1, "RO", mat.ro);
+  c.get(2, "PR", mat.pr);
+  c.get(3, "A", mat.a);
+  c.get(4, "B", mat.b);
+  // Card 2 (SGL SW ST LCID) fits A and B to test data; only given A and B are supported.
+  if (const Line* l2 = b.take()) {
+    Card c2 = card_of(ctx, *l2, b);
+    Id lcid = 0;
+    c2.get(3, "LCID", lcid);
+    if (lcid != 0)
+      ctx.warn(l2->number, b.keyword + ": fitting A, B to curve LCID is not supported; A and B used");
+  }
+  mat.title = title;
+  mat.src = ctx.source(l.number);
+  m.materials.emplace_back(mat);
+  warn_extra_cards(ctx, b);
+}
+
+void read_mat_rigid(const Context& ctx, Block& b, Model& m, bool titled) {
+  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
+  const Line& l = require(ctx, b, "MID");
+  Card c = card_of(ctx, l, b);
+  model::MatRigid mat;
+  c.get(0, "MID", mat.mid);
+  c.get(1, "RO", mat.ro);
+  c.get(2, "E", mat.e);
+  c.get(3, "PR", mat.pr);
+  if (const Line* l2 = b.take()) {
+    Card c2 = card_of(ctx, *l2, b);
+    c2.get(0, "CMO", mat.cmo);
+    c2.get(1, "CON1", mat.con1);
+    c2.get(2, "CON2", mat.con2);
+  }
+  b.take();  // card 3 (LCO or A1..V3, alignment for output) has no effect here
+  mat.title = title;
+  mat.src = ctx.source(l.number);
+  m.materials.emplace_back(mat);
+  warn_extra_cards(ctx, b);
+}
+
+void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
+  each_titled(ctx, b, titled, [&](const Line& l, const std::string&) {
+    Card c = card_of(ctx, l, b);
+    model::Hourglass h;
+    c.get(0, "HGID", h.hgid);
+    c.get(1, "IHQ", h.ihq);
+    c.get(2, "QM", h.qm);
+    c.get(4, "Q1", h.q1);
+    c.get(5, "Q2", h.q2);
+    h.src = ctx.source(l.number);
+    m.hourglasses.push_back(h);
+  });
+}
+
+/// Runs `f` on the first card of a single-card keyword (no card: all defaults).
+template <class F>
+void single_card(const Context& ctx, Block& b, F&& f) {
+  if (const Line* l = b.take()) f(card_of(ctx, *l, b), *l);
+  warn_extra_cards(ctx, b);
+}
+
+/// Reads the card after a set's first card: ids, 8 per card, until the next keyword.
+template <class Out>
+void read_id_list(const Context& ctx, Block& b, const char* name, Out& out) {
+  while (const Line* l = b.take()) {
+    Card c = card_of(ctx, *l, b);
+    for (int k = 0; k < c.size() && k < 8; ++k) {
+      Id id = 0;
+      c.get(k, name, id);
+      if (id != 0) out.push_back(id);
+    }
+  }
+}
+
+void read_set_node(const Context& ctx, Block& b, Model& m, bool titled) {
+  model::NodeSet s;
+  if (titled) s.title = heading(require(ctx, b, "title"));
+  const Line& l = require(ctx, b, "SID");
+  card_of(ctx, l, b).get(0, "SID", s.sid);
+  s.src = ctx.source(l.number);
+  read_id_list(ctx, b, "NID", s.nodes);
+  m.node_sets.push_back(std::move(s));
+}
+
+void read_set_part(const Context& ctx, Block& b, Model& m, bool titled) {
+  model::PartSet s;
+  if (titled) s.title = heading(require(ctx, b, "title"));
+  const Line& l = require(ctx, b, "SID");
+  card_of(ctx, l, b).get(0, "SID", s.sid);
+  s.src = ctx.source(l.number);
+  read_id_list(ctx, b, "PID", s.parts);
+  m.part_sets.push_back(std::move(s));
+}
+
+void read_set_segment(const Context& ctx, Block& b, Model& m, bool titled) {
+  model::SegmentSet s;
+  if (titled) s.title = heading(require(ctx, b, "title"));
+  const Line& l = require(ctx, b, "SID");
+  card_of(ctx, l, b).get(0, "SID", s.sid);
+  s.src = ctx.source(l.number);
+  while (const Line* sl = next_record(b)) {
+    Card c = card_of(ctx, *sl, b);
+    std::array<Id, 4> seg{};
+    for (int k = 0; k < 4; ++k) c.get(k, kNodeNames[k], seg[static_cast<std::size_t>(k)]);
+    s.segments.push_back(seg);
+  }
+  m.segment_sets.push_back(std::move(s));
+}
+
+void read_spc(const Context& ctx, Block& b, Model& m, bool with_id) {
+  while (const Line* first = with_id ? next_record_keep_blank(b) : next_record(b)) {
+    model::BoundarySpc s;
+    const Line* l = first;
+    if (with_id) {
+      read_id_heading(ctx, *first, b.keyword, s.id, s.title);
+      l = &require(ctx, b, "NSID");
+    }
+    Card c = card_of(ctx, *l, b);
+    c.get(0, "NSID", s.nsid);
+    c.get(1, "CID", s.cid);
+    static const char* const names[] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
+    for (int k = 0; k < 6; ++k) c.get(k + 2, names[k], s.dof[static_cast<std::size_t>(k)]);
+    s.src = ctx.source(l->number);
+    m.spcs.push_back(s);
+  }
+}
+
+void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id) {
+  while (const Line* first = with_id ? next_record_keep_blank(b) : next_record(b)) {
+    model::PrescribedMotion p;
+    const Line* l = first;
+    if (with_id) {
+      read_id_heading(ctx, *first, b.keyword, p.id, p.title);
+      l = &require(ctx, b, "NSID");
+    }
+    Card c = card_of(ctx, *l, b);
+    c.get(0, "NSID", p.nsid);
+    c.get(1, "DOF", p.dof);
+    c.get(2, "VAD", p.vad);
+    c.get(3, "LCID", p.lcid);
+    c.get(4, "SF", p.sf);
+    c.get(5, "VID", p.vid);
+    c.get(6, "DEATH", p.death);
+    c.get(7, "BIRTH", p.birth);
+    p.src = ctx.source(l->number);
+    m.prescribed_motions.push_back(p);
+  }
+}
+
+void read_load_body(const Context& ctx, Block& b, Model& m, Axis axis) {
+  single_card(ctx, b, [&](const Card& c, const Line& l) {
+    model::LoadBody lb;
+    lb.axis = axis;
+    c.get(0, "LCID", lb.lcid);
+    c.get(1, "SF", lb.sf);
+    c.get(2, "LCIDDR", lb.lciddr);
+    c.get(3, "XC", lb.xc);
+    c.get(4, "YC", lb.yc);
+    c.get(5, "ZC", lb.zc);
+    c.get(6, "CID", lb.cid);
+    lb.src = ctx.source(l.number);
+    m.body_loads.push_back(lb);
+  });
+}
+
+void read_curve(const Context& ctx, Block& b, Model& m, bool titled) {
+  model::Curve cv;
+  if (titled) cv.title = heading(require(ctx, b, "title"));
+  const Line& l = require(ctx, b, "LCID");
+  Card c = card_of(ctx, l, b);
+  c.get(0, "LCID", cv.lcid);
+  c.get(1, "SIDR", cv.sidr);
+  c.get(2, "SFA", cv.sfa);
+  c.get(3, "SFO", cv.sfo);
+  c.get(4, "OFFA", cv.offa);
+  c.get(5, "OFFO", cv.offo);
+  c.get(6, "DATTYP", cv.dattyp);
+  cv.src = ctx.source(l.number);
+  while (const Line* pl = next_record(b)) {
+    Card pc = card_of(ctx, *pl, b, kCurvePoint);
+    std::pair<Real, Real> p{0.0, 0.0};
+    pc.get(0, "A", p.first);
+    pc.get(1, "O", p.second);
+    cv.points.push_back(p);
+  }
+  m.curves.push_back(std::move(cv));
+}
+
+void read_damping_global(const Context& ctx, Block& b, Model& m) {
+  single_card(ctx, b, [&](const Card& c, const Line& l) {
+    model::DampingGlobal d;
+    c.get(0, "LCID", d.lcid);
+    c.get(1, "VALDMP", d.valdmp);
+    static const char* const names[] = {"STX", "STY", "STZ", "SRX", "SRY", "SRZ"};
+    for (int k = 0; k < 6; ++k) c.get(k + 2, names[k], d.stf[static_cast<std::size_t>(k)]);
+    d.src = ctx.source(l.number);
+    m.damping_global = d;
+  });
+}
+
+void read_damping_part(const Context& ctx, Block& b, Model& m) {
+  while (const Line* l = next_record(b)) {
+    Card c = card_of(ctx, *l, b);
+    model::DampingPartMass d;
+    c.get(0, "PID", d.pid);
+    c.get(1, "LCID", d.lcid);
+    c.get(2, "SF", d.sf);
+    c.get(3, "FLAG", d.flag);
+    // FLAG = 1 adds a card of per-direction scale factors, not modelled.
+    if (d.flag == 1 && b.take())
+      ctx.warn(l->number, b.keyword + ": per-direction scale factors (FLAG=1 card) ignored");
+    d.src = ctx.source(l->number);
+    m.damping_parts.push_back(d);
+  }
+}
+
+void read_database_dt(const Context& ctx, Block& b, Real& dt) {
+  single_card(ctx, b, [&](const Card& c, const Line&) { c.get(0, "DT", dt); });
+}
+
+using Handler = std::function<void(const Context&, Block&, Model&, bool)>;
+
+struct Entry {
+  const char* name;
+  const char* option;  // "_TITLE", "_ID" or nullptr
+  Handler read;
+};
+
+template <class F>
+Handler plain(F f) {
+  return [f](const Context& c, Block& b, Model& m, bool) { f(c, b, m); };
+}
+
+const std::vector<Entry>& table() {
+  static const std::vector<Entry> entries = {
+      {"*KEYWORD", nullptr, plain([](const Context&, Block&, Model&) {})},
+      {"*TITLE", nullptr, plain(read_title)},
+      {"*NODE", nullptr, plain(read_nodes)},
+      {"*ELEMENT_SOLID", nullptr, plain(read_solids)},
+      {"*ELEMENT_SHELL", nullptr, plain(read_shells)},
+      {"*PART", nullptr, plain(read_parts)},
+      {"*SECTION_SOLID", "_TITLE", read_section_solid},
+      {"*SECTION_SHELL", "_TITLE", read_section_shell},
+      {"*MAT_ELASTIC", "_TITLE", read_mat_elastic},
+      {"*MAT_001", "_TITLE", read_mat_elastic},
+      {"*MAT_MOONEY-RIVLIN_RUBBER", "_TITLE", read_mat_mooney_rivlin},
+      {"*MAT_027", "_TITLE", read_mat_mooney_rivlin},
+      {"*MAT_RIGID", "_TITLE", read_mat_rigid},
+      {"*MAT_020", "_TITLE", read_mat_rigid},
+      {"*HOURGLASS", "_TITLE", read_hourglass},
+      {"*CONTROL_HOURGLASS", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         single_card(c, b, [&](const Card& k, const Line&) {
+           k.get(0, "IHQ", m.control_hourglass.ihq);
+           k.get(1, "QH", m.control_hourglass.qh);
+         });
+       })},
+      {"*CONTROL_BULK_VISCOSITY", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         single_card(c, b, [&](const Card& k, const Line&) {
+           k.get(0, "Q1", m.bulk_viscosity.q1);
+           k.get(1, "Q2", m.bulk_viscosity.q2);
+         });
+       })},
+      {"*CONTROL_TERMINATION", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         single_card(c, b, [&](const Card& k, const Line&) {
+           k.get(0, "ENDTIM", m.termination.endtim);
+           k.get(1, "ENDCYC", m.termination.endcyc);
+         });
+       })},
+      {"*CONTROL_TIMESTEP", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         single_card(c, b, [&](const Card& k, const Line&) {
+           auto& t = m.timestep;
+           k.get(0, "DTINIT", t.dtinit);
+           k.get(1, "TSSFAC", t.tssfac);
+           k.get(2, "ISDO", t.isdo);
+           k.get(3, "TSLIMT", t.tslimt);
+           k.get(4, "DT2MS", t.dt2ms);
+           k.get(5, "LCTM", t.lctm);
+         });
+       })},
+      {"*CONTROL_CONTACT", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         // Cards 2-6 of *CONTROL_CONTACT are optional and hold nothing this code uses.
+         if (const Line* l = b.take()) {
+           Card k = card_of(c, *l, b);
+           auto& t = m.control_contact;
+           k.get(0, "SLSFAC", t.slsfac);
+           k.get(1, "RWPNAL", t.rwpnal);
+           k.get(2, "ISLCHK", t.islchk);
+           k.get(3, "SHLTHK", t.shlthk);
+           k.get(4, "PENOPT", t.penopt);
+           k.get(5, "THKCHG", t.thkchg);
+           k.get(6, "ORIEN", t.orien);
+           k.get(7, "ENMASS", t.enmass);
+         }
+         while (b.take()) {
+         }
+       })},
+      {"*SET_NODE_LIST", "_TITLE", read_set_node},
+      {"*SET_NODE", "_TITLE", read_set_node},
+      {"*SET_SEGMENT", "_TITLE", read_set_segment},
+      {"*SET_PART_LIST", "_TITLE", read_set_part},
+      {"*SET_PART", "_TITLE", read_set_part},
+      {"*BOUNDARY_SPC_SET", "_ID", read_spc},
+      {"*BOUNDARY_PRESCRIBED_MOTION_SET", "_ID", read_prescribed},
+      {"*LOAD_BODY_X", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::x); })},
+      {"*LOAD_BODY_Y", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::y); })},
+      {"*LOAD_BODY_Z", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::z); })},
+      {"*LOAD_BODY_PARTS", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         single_card(c, b, [&](const Card& k, const Line& l) {
+           model::LoadBodyParts p;
+           k.get(0, "PSID", p.psid);
+           p.src = c.source(l.number);
+           m.body_load_parts = p;
+         });
+       })},
+      {"*DEFINE_CURVE", "_TITLE", read_curve},
+      {"*DAMPING_GLOBAL", nullptr, plain(read_damping_global)},
+      {"*DAMPING_PART_MASS", nullptr, plain(read_damping_part)},
+      {"*DATABASE_HISTORY_NODE", nullptr, plain([](const Context& c, Block& b, Model& m) {
+         read_id_list(c, b, "ID", m.database.history_nodes);
+       })},
+      {"*DATABASE_RCFORC", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.rcforc); })},
+      {"*DATABASE_SPCFORC", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.spcforc); })},
+      {"*DATABASE_NODOUT", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.nodout); })},
+      {"*DATABASE_GLSTAT", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.glstat); })},
+      {"*DATABASE_BINARY_D3PLOT", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.d3plot); })},
+  };
+  return entries;
+}
+
+}  // namespace
+
+bool read_block(const Context& ctx, Block& block, model::Model& model) {
+  const std::string& kw = block.keyword;
+  if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
+  for (const auto& e : table()) {
+    if (kw == e.name) {
+      e.read(ctx, block, model, false);
+      return true;
+    }
+    if (e.option && kw.size() > std::char_traits<char>::length(e.name) && kw.rfind(e.name, 0) == 0 &&
+        kw.substr(std::char_traits<char>::length(e.name)) == e.option) {
+      e.read(ctx, block, model, true);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace slideline::keyword

@@ -1,0 +1,164 @@
+// *CONTACT_... cards: one keyword per DYNA3D interface type (model::ContactType), cards 1-3 and
+// the tiebreak card 4. See docs/keywords.md, "Contact".
+#include <string>
+#include <string_view>
+
+#include "keyword_card.hpp"
+#include "slideline/core/error.hpp"
+
+namespace slideline::keyword {
+namespace {
+
+using model::ContactType;
+using model::Enforcement;
+
+struct ContactBase {
+  std::string_view name;  // after "*CONTACT_"
+  ContactType type;
+  bool general;
+};
+
+constexpr ContactBase kBases[] = {
+    {"SLIDING_ONLY", ContactType::sliding_only, false},
+    {"TIED_SURFACE_TO_SURFACE", ContactType::tied_surface, false},
+    {"SURFACE_TO_SURFACE", ContactType::surface_to_surface, false},
+    {"NODES_TO_SURFACE", ContactType::nodes_to_surface, false},
+    {"TIED_NODES_TO_SURFACE", ContactType::tied_nodes, false},
+    {"TIED_SHELL_EDGE_TO_SURFACE", ContactType::tied_shell_edge, false},
+    {"TIEBREAK_NODES_TO_SURFACE", ContactType::tiebreak_nodes, false},
+    {"TIEBREAK_SURFACE_TO_SURFACE", ContactType::tiebreak_surface, false},
+    {"ONE_WAY_SURFACE_TO_SURFACE", ContactType::one_way, false},
+    {"AUTOMATIC_SINGLE_SURFACE", ContactType::automatic, false},
+    {"AUTOMATIC_GENERAL", ContactType::automatic, true},
+};
+
+const ContactBase* find_base(std::string_view name) {
+  for (const auto& b : kBases)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+bool strip_suffix(std::string_view& s, std::string_view suffix) {
+  if (s.size() > suffix.size() && s.substr(s.size() - suffix.size()) == suffix) {
+    s.remove_suffix(suffix.size());
+    return true;
+  }
+  return false;
+}
+
+/// DYNA3D enforced these types with kinematic constraints; the others default to penalty.
+Enforcement default_enforcement(ContactType t) {
+  switch (t) {
+    case ContactType::sliding_only:
+    case ContactType::tied_surface:
+    case ContactType::tied_nodes:
+    case ContactType::tied_shell_edge:
+      return Enforcement::kinematic;
+    default:
+      return Enforcement::penalty;
+  }
+}
+
+}  // namespace
+
+bool read_contact(const Context& ctx, Block& b, model::Model& m) {
+  std::string_view name = b.keyword;
+  name.remove_prefix(std::string_view("*CONTACT_").size());
+  bool with_heading = strip_suffix(name, "_ID") || strip_suffix(name, "_TITLE");
+  bool lagrange = false;
+  bool sliding = false;
+  const ContactBase* base = find_base(name);
+  // Options: _LAGRANGE (Lagrange-multiplier enforcement) and _SLIDING_ONLY (type 10's no-separation
+  // option), in either order, before _ID/_TITLE. Checked only when the name is not a base itself,
+  // so that *CONTACT_SLIDING_ONLY stays type 1.
+  while (!base) {
+    if (!lagrange && strip_suffix(name, "_LAGRANGE")) {
+      lagrange = true;
+    } else if (!sliding && strip_suffix(name, "_SLIDING_ONLY")) {
+      sliding = true;
+    } else {
+      return false;
+    }
+    base = find_base(name);
+  }
+
+  model::Contact c;
+  c.keyword = b.keyword;
+  c.type = base->type;
+  c.automatic_general = base->general;
+  c.enforcement = lagrange ? Enforcement::lagrange : default_enforcement(c.type);
+  if (sliding) {
+    if (c.type == ContactType::one_way)
+      c.sliding_only_option = true;
+    else
+      ctx.warn(b.line, b.keyword + ": _SLIDING_ONLY applies to *CONTACT_ONE_WAY_SURFACE_TO_SURFACE only; ignored");
+  }
+
+  const Line* l = b.take();
+  if (with_heading) {
+    if (!l) throw InputError(ctx.file + ":" + std::to_string(b.line) + ": " + b.keyword + ": missing ID card");
+    read_id_heading(ctx, *l, b.keyword, c.cid, c.title);
+    l = b.take();
+  }
+  if (!l) throw InputError(ctx.file + ":" + std::to_string(b.line) + ": " + b.keyword + ": missing card 1 (SSID MSID ...)");
+  c.src = ctx.source(l->number);
+  {
+    Card k(ctx, *l, b.keyword, kStandard);
+    k.get(0, "SSID", c.ssid);
+    k.get(1, "MSID", c.msid);
+    k.get(2, "SSTYP", c.sstyp);
+    k.get(3, "MSTYP", c.mstyp);
+    k.get(4, "SBOXID", c.sboxid);
+    k.get(5, "MBOXID", c.mboxid);
+    k.get(6, "SPR", c.spr);
+    k.get(7, "MPR", c.mpr);
+  }
+  if ((l = b.take())) {
+    Card k(ctx, *l, b.keyword, kStandard);
+    k.get(0, "FS", c.fs);
+    k.get(1, "FD", c.fd);
+    k.get(2, "DC", c.dc);
+    k.get(3, "VC", c.vc);
+    k.get(4, "VDC", c.vdc);
+    k.get(5, "PENCHK", c.penchk);
+    k.get(6, "BT", c.bt);
+    k.get(7, "DT", c.dt);
+  }
+  if ((l = b.take())) {
+    Card k(ctx, *l, b.keyword, kStandard);
+    k.get(0, "SFS", c.sfs);
+    k.get(1, "SFM", c.sfm);
+    k.get(2, "SST", c.sst);
+    k.get(3, "MST", c.mst);
+    k.get(4, "SFST", c.sfst);
+    k.get(5, "SFMT", c.sfmt);
+    k.get(6, "FSF", c.fsf);
+    k.get(7, "VSF", c.vsf);
+  }
+  if (c.type == ContactType::tiebreak_nodes) {
+    if ((l = b.take())) {
+      Card k(ctx, *l, b.keyword, kStandard);
+      k.get(0, "NFLF", c.nflf);
+      k.get(1, "SFLF", c.sflf);
+      k.get(2, "NEN", c.nen);
+      k.get(3, "MES", c.mes);
+    }
+  } else if (c.type == ContactType::tiebreak_surface) {
+    if ((l = b.take())) {
+      Card k(ctx, *l, b.keyword, kStandard);
+      k.get(0, "OPTION", c.option);
+      k.get(1, "NFLS", c.nfls);
+      k.get(2, "SFLS", c.sfls);
+    }
+    // The model keeps one pair of failure fields for both tiebreak types (stresses for type 9).
+    c.nflf = c.nfls;
+    c.sflf = c.sfls;
+  }
+  // Type 5 with discrete slave nodes: SST is the nodal contact radius.
+  if (c.type == ContactType::nodes_to_surface && c.sstyp == 4) c.radius = c.sst;
+  m.contacts.push_back(std::move(c));
+  warn_extra_cards(ctx, b);
+  return true;
+}
+
+}  // namespace slideline::keyword

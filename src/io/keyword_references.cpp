@@ -1,0 +1,149 @@
+// check_references: dangling and duplicate ids of a model, each named with its card and line.
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "slideline/io/keyword_reader.hpp"
+
+namespace slideline {
+namespace {
+
+using IdSet = std::unordered_set<Id>;
+
+struct Checker {
+  std::vector<Diagnostic> out;
+
+  void add(const model::Source& src, std::string message) {
+    out.push_back({src.file, src.line, std::move(message)});
+  }
+
+  /// Collects ids; reports duplicates.
+  template <class Range, class GetId, class GetSrc>
+  IdSet collect(const Range& items, const char* what, GetId id_of, GetSrc src_of) {
+    IdSet ids;
+    for (const auto& it : items) {
+      const Id id = id_of(it);
+      if (!ids.insert(id).second) add(src_of(it), std::string(what) + " " + std::to_string(id) + " is defined more than once");
+    }
+    return ids;
+  }
+};
+
+template <class T>
+model::Source src_member(const T& t) {
+  return t.src;
+}
+
+}  // namespace
+
+std::vector<Diagnostic> check_references(const model::Model& m) {
+  Checker ck;
+  const model::Source none;
+  const auto no_src = [&](const auto&) { return none; };
+
+  const IdSet nodes = ck.collect(m.nodes, "node", [](const auto& n) { return n.id; }, no_src);
+  ck.collect(m.solids, "solid element", [](const auto& e) { return e.id; }, no_src);
+  ck.collect(m.shells, "shell element", [](const auto& e) { return e.id; }, no_src);
+  const IdSet parts = ck.collect(m.parts, "part", [](const auto& p) { return p.pid; },
+                                 [](const auto& p) { return p.src; });
+  IdSet sections = ck.collect(m.solid_sections, "section", [](const auto& s) { return s.secid; },
+                              [](const auto& s) { return s.src; });
+  for (const auto& s : m.shell_sections)
+    if (!sections.insert(s.secid).second) ck.add(s.src, "section " + std::to_string(s.secid) + " is defined more than once");
+  IdSet materials;
+  for (const auto& mat : m.materials) {
+    const Id mid = model::material_id(mat);
+    const auto src = std::visit([](const auto& mm) { return mm.src; }, mat);
+    if (!materials.insert(mid).second) ck.add(src, "material " + std::to_string(mid) + " is defined more than once");
+  }
+  const IdSet hourglasses = ck.collect(m.hourglasses, "hourglass", [](const auto& h) { return h.hgid; },
+                                       [](const auto& h) { return h.src; });
+  const IdSet node_sets = ck.collect(m.node_sets, "node set", [](const auto& s) { return s.sid; },
+                                     [](const auto& s) { return s.src; });
+  const IdSet segment_sets = ck.collect(m.segment_sets, "segment set", [](const auto& s) { return s.sid; },
+                                        [](const auto& s) { return s.src; });
+  const IdSet part_sets = ck.collect(m.part_sets, "part set", [](const auto& s) { return s.sid; },
+                                     [](const auto& s) { return s.src; });
+  const IdSet curves = ck.collect(m.curves, "curve", [](const auto& c) { return c.lcid; },
+                                  [](const auto& c) { return c.src; });
+
+  for (const auto& e : m.solids) {
+    const std::string who = "*ELEMENT_SOLID " + std::to_string(e.id);
+    if (!parts.count(e.pid)) ck.add(none, who + " refers to undefined part " + std::to_string(e.pid));
+    for (Id n : e.n)
+      if (!nodes.count(n)) ck.add(none, who + " refers to undefined node " + std::to_string(n));
+  }
+  for (const auto& e : m.shells) {
+    const std::string who = "*ELEMENT_SHELL " + std::to_string(e.id);
+    if (!parts.count(e.pid)) ck.add(none, who + " refers to undefined part " + std::to_string(e.pid));
+    for (Id n : e.n)
+      if (!nodes.count(n)) ck.add(none, who + " refers to undefined node " + std::to_string(n));
+  }
+  for (const auto& p : m.parts) {
+    const std::string who = "*PART " + std::to_string(p.pid);
+    if (!sections.count(p.secid)) ck.add(p.src, who + " refers to undefined section " + std::to_string(p.secid));
+    if (!materials.count(p.mid)) ck.add(p.src, who + " refers to undefined material " + std::to_string(p.mid));
+    if (p.hgid != 0 && !hourglasses.count(p.hgid))
+      ck.add(p.src, who + " refers to undefined hourglass " + std::to_string(p.hgid));
+  }
+  for (const auto& s : m.node_sets)
+    for (Id n : s.nodes)
+      if (!nodes.count(n))
+        ck.add(s.src, "*SET_NODE_LIST " + std::to_string(s.sid) + " refers to undefined node " + std::to_string(n));
+  for (const auto& s : m.segment_sets)
+    for (const auto& seg : s.segments)
+      for (Id n : seg)
+        if (!nodes.count(n))
+          ck.add(s.src, "*SET_SEGMENT " + std::to_string(s.sid) + " refers to undefined node " + std::to_string(n));
+  for (const auto& s : m.part_sets)
+    for (Id p : s.parts)
+      if (!parts.count(p))
+        ck.add(s.src, "*SET_PART_LIST " + std::to_string(s.sid) + " refers to undefined part " + std::to_string(p));
+  for (const auto& s : m.spcs)
+    if (!node_sets.count(s.nsid))
+      ck.add(s.src, "*BOUNDARY_SPC_SET refers to undefined node set " + std::to_string(s.nsid));
+  for (const auto& p : m.prescribed_motions) {
+    if (!node_sets.count(p.nsid))
+      ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined node set " + std::to_string(p.nsid));
+    if (!curves.count(p.lcid))
+      ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined curve " + std::to_string(p.lcid));
+  }
+  for (const auto& l : m.body_loads)
+    if (!curves.count(l.lcid))
+      ck.add(l.src, std::string("*LOAD_BODY_") + (l.axis == Axis::x ? "X" : l.axis == Axis::y ? "Y" : "Z") +
+                        " refers to undefined curve " + std::to_string(l.lcid));
+  if (m.body_load_parts && !part_sets.count(m.body_load_parts->psid))
+    ck.add(m.body_load_parts->src, "*LOAD_BODY_PARTS refers to undefined part set " + std::to_string(m.body_load_parts->psid));
+  if (m.damping_global && m.damping_global->lcid != 0 && !curves.count(m.damping_global->lcid))
+    ck.add(m.damping_global->src, "*DAMPING_GLOBAL refers to undefined curve " + std::to_string(m.damping_global->lcid));
+  for (const auto& d : m.damping_parts) {
+    if (!parts.count(d.pid)) ck.add(d.src, "*DAMPING_PART_MASS refers to undefined part " + std::to_string(d.pid));
+    if (!curves.count(d.lcid)) ck.add(d.src, "*DAMPING_PART_MASS refers to undefined curve " + std::to_string(d.lcid));
+  }
+  for (Id n : m.database.history_nodes)
+    if (!nodes.count(n)) ck.add(none, "*DATABASE_HISTORY_NODE refers to undefined node " + std::to_string(n));
+
+  // Contact sides: SSTYP/MSTYP 0 segment set, 2 part set, 3 part, 4 node set, 5 all parts.
+  const auto check_side = [&](const model::Contact& c, const char* side, Id id, int type) {
+    const std::string who = c.keyword.empty() ? std::string("*CONTACT") : c.keyword;
+    const auto missing = [&](const char* what) {
+      ck.add(c.src, who + " " + side + " refers to undefined " + what + " " + std::to_string(id));
+    };
+    switch (type) {
+      case 0: if (!segment_sets.count(id)) missing("segment set"); break;
+      case 2: if (!part_sets.count(id)) missing("part set"); break;
+      case 3: if (!parts.count(id)) missing("part"); break;
+      case 4: if (!node_sets.count(id)) missing("node set"); break;
+      case 5: break;
+      default:
+        ck.add(c.src, who + " " + side + ": set type " + std::to_string(type) + " is not supported");
+    }
+  };
+  for (const auto& c : m.contacts) {
+    check_side(c, "SSID", c.ssid, c.sstyp);
+    if (c.type != model::ContactType::automatic) check_side(c, "MSID", c.msid, c.mstyp);
+  }
+  return ck.out;
+}
+
+}  // namespace slideline

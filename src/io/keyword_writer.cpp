@@ -1,0 +1,290 @@
+// Keyword deck writer. Each card is written in fixed columns when every value fits with a space to
+// spare, else as a free-format (comma-separated) card, so that no digit is lost: reals are written
+// in their shortest exact form (std::to_chars), which the reader parses back to the same double.
+#include "slideline/io/keyword_writer.hpp"
+
+#include <charconv>
+#include <fstream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "slideline/core/error.hpp"
+
+namespace slideline {
+namespace {
+
+constexpr int kStandard[] = {10, 10, 10, 10, 10, 10, 10, 10};
+constexpr int kNodeCard[] = {8, 16, 16, 16, 8, 8};
+constexpr int kElementCard[] = {8, 8, 8, 8, 8, 8, 8, 8, 8, 8};
+constexpr int kCurvePoint[] = {20, 20};
+
+std::string real_text(Real v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  std::string s(buf, r.ptr);
+  // "1" reads back as 1.0 too, but a point tells a reader of the deck that the field is real.
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+/// One card being written: field texts, then laid out fixed or free.
+class CardOut {
+ public:
+  explicit CardOut(std::span<const int> widths = kStandard) : widths_(widths) {}
+  CardOut& r(Real v) { fields_.push_back(real_text(v)); return *this; }
+  CardOut& i(Id v) { fields_.push_back(std::to_string(v)); return *this; }
+  CardOut& blank() { fields_.emplace_back(); return *this; }
+
+  std::string str() const {
+    bool fits = fields_.size() <= widths_.size();
+    for (std::size_t k = 0; fits && k < fields_.size(); ++k)
+      fits = static_cast<int>(fields_[k].size()) < widths_[k];
+    std::string out;
+    if (fits) {
+      for (std::size_t k = 0; k < fields_.size(); ++k)
+        out += std::string(static_cast<std::size_t>(widths_[k]) - fields_[k].size(), ' ') + fields_[k];
+    } else {
+      for (std::size_t k = 0; k < fields_.size(); ++k) out += (k ? "," : "") + fields_[k];
+      if (fields_.size() == 1) out += ",";  // a comma marks the card as free format
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out + "\n";
+  }
+
+ private:
+  std::span<const int> widths_;
+  std::vector<std::string> fields_;
+};
+
+/// "ID + heading" card of the _ID options: the id in columns 1-10 and the heading after it.
+std::string id_heading(Id id, const std::string& title) {
+  std::string s = std::to_string(id);
+  if (s.size() >= 10) return s + "," + title + "\n";
+  return std::string(10 - s.size(), ' ') + s + title + "\n";
+}
+
+/// A heading card on its own line. A heading starting with '*' or '$' would read as a keyword or
+/// comment: it gets a leading space (which the reader trims).
+std::string heading(const std::string& title) {
+  if (!title.empty() && (title.front() == '*' || title.front() == '$')) return " " + title + "\n";
+  return title + "\n";
+}
+
+void write_materials(const model::Model& m, std::string& o) {
+  for (const auto& mat : m.materials) {
+    if (const auto* e = std::get_if<model::MatElastic>(&mat)) {
+      o += e->title.empty() ? "*MAT_ELASTIC\n" : "*MAT_ELASTIC_TITLE\n" + heading(e->title);
+      o += "$#     MID        RO         E        PR\n";
+      o += CardOut().i(e->mid).r(e->ro).r(e->e).r(e->pr).str();
+    } else if (const auto* mr = std::get_if<model::MatMooneyRivlin>(&mat)) {
+      o += mr->title.empty() ? "*MAT_MOONEY-RIVLIN_RUBBER\n" : "*MAT_MOONEY-RIVLIN_RUBBER_TITLE\n" + heading(mr->title);
+      o += "$#     MID        RO        PR         A         B\n";
+      o += CardOut().i(mr->mid).r(mr->ro).r(mr->pr).r(mr->a).r(mr->b).str();
+      o += "$#     SGL        SW        ST      LCID\n\n";
+    } else if (const auto* rg = std::get_if<model::MatRigid>(&mat)) {
+      o += rg->title.empty() ? "*MAT_RIGID\n" : "*MAT_RIGID_TITLE\n" + heading(rg->title);
+      o += "$#     MID        RO         E        PR\n";
+      o += CardOut().i(rg->mid).r(rg->ro).r(rg->e).r(rg->pr).str();
+      o += "$#     CMO      CON1      CON2\n";
+      o += CardOut().r(rg->cmo).i(rg->con1).i(rg->con2).str();
+    }
+  }
+}
+
+const char* contact_base(const model::Contact& c) {
+  using model::ContactType;
+  switch (c.type) {
+    case ContactType::sliding_only: return "*CONTACT_SLIDING_ONLY";
+    case ContactType::tied_surface: return "*CONTACT_TIED_SURFACE_TO_SURFACE";
+    case ContactType::surface_to_surface: return "*CONTACT_SURFACE_TO_SURFACE";
+    case ContactType::nodes_to_surface: return "*CONTACT_NODES_TO_SURFACE";
+    case ContactType::tied_nodes: return "*CONTACT_TIED_NODES_TO_SURFACE";
+    case ContactType::tied_shell_edge: return "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE";
+    case ContactType::tiebreak_nodes: return "*CONTACT_TIEBREAK_NODES_TO_SURFACE";
+    case ContactType::tiebreak_surface: return "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE";
+    case ContactType::one_way: return "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE";
+    case ContactType::automatic:
+      return c.automatic_general ? "*CONTACT_AUTOMATIC_GENERAL" : "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
+  }
+  return "*CONTACT_SURFACE_TO_SURFACE";
+}
+
+void write_contacts(const model::Model& m, std::string& o) {
+  using model::ContactType;
+  for (const auto& c : m.contacts) {
+    std::string kw = contact_base(c);
+    if (c.type == ContactType::one_way && c.sliding_only_option) kw += "_SLIDING_ONLY";
+    if (c.enforcement == model::Enforcement::lagrange) kw += "_LAGRANGE";
+    const bool with_id = c.cid != 0 || !c.title.empty();
+    o += kw + (with_id ? "_ID\n" : "\n");
+    if (with_id) o += id_heading(c.cid, c.title);
+    o += "$#    SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n";
+    o += CardOut().i(c.ssid).i(c.msid).i(c.sstyp).i(c.mstyp).i(c.sboxid).i(c.mboxid).i(c.spr).i(c.mpr).str();
+    o += "$#      FS        FD        DC        VC       VDC    PENCHK        BT        DT\n";
+    o += CardOut().r(c.fs).r(c.fd).r(c.dc).r(c.vc).r(c.vdc).i(c.penchk).r(c.bt).r(c.dt).str();
+    // Type 5 with a node set: SST carries the nodal radius.
+    const bool radius_in_sst = c.type == ContactType::nodes_to_surface && c.sstyp == 4 && c.radius != 0.0;
+    o += "$#     SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n";
+    o += CardOut().r(c.sfs).r(c.sfm).r(radius_in_sst ? c.radius : c.sst).r(c.mst).r(c.sfst).r(c.sfmt)
+             .r(c.fsf).r(c.vsf).str();
+    if (c.type == ContactType::tiebreak_nodes) {
+      o += "$#    NFLF      SFLF       NEN       MES\n";
+      o += CardOut().r(c.nflf).r(c.sflf).r(c.nen).r(c.mes).str();
+    } else if (c.type == ContactType::tiebreak_surface) {
+      o += "$#  OPTION      NFLS      SFLS\n";
+      o += CardOut().i(c.option).r(c.nfls != 0.0 ? c.nfls : c.nflf).r(c.sfls != 0.0 ? c.sfls : c.sflf).str();
+    }
+  }
+}
+
+template <class Ids>
+void write_id_list(const Ids& ids, std::string& o) {
+  for (std::size_t k = 0; k < ids.size(); k += 8) {
+    CardOut c;
+    for (std::size_t j = k; j < ids.size() && j < k + 8; ++j) c.i(ids[j]);
+    o += c.str();
+  }
+}
+
+}  // namespace
+
+std::string write_keyword_string(const model::Model& m) {
+  std::string o = "*KEYWORD\n";
+  if (!m.title.empty()) o += "*TITLE\n" + heading(m.title);
+
+  o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC\n";
+  o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).str();
+  const auto& ts = m.timestep;
+  o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM\n";
+  o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).str();
+  o += "*CONTROL_HOURGLASS\n$#     IHQ        QH\n";
+  o += CardOut().i(m.control_hourglass.ihq).r(m.control_hourglass.qh).str();
+  o += "*CONTROL_BULK_VISCOSITY\n$#      Q1        Q2\n";
+  o += CardOut().r(m.bulk_viscosity.q1).r(m.bulk_viscosity.q2).str();
+  const auto& cc = m.control_contact;
+  o += "*CONTROL_CONTACT\n$#  SLSFAC    RWPNAL    ISLCHK    SHLTHK    PENOPT    THKCHG     ORIEN    ENMASS\n";
+  o += CardOut().r(cc.slsfac).r(cc.rwpnal).i(cc.islchk).i(cc.shlthk).i(cc.penopt).i(cc.thkchg).i(cc.orien)
+           .i(cc.enmass).str();
+
+  const auto& db = m.database;
+  const std::pair<const char*, Real> dbs[] = {{"*DATABASE_RCFORC", db.rcforc}, {"*DATABASE_SPCFORC", db.spcforc},
+                                              {"*DATABASE_NODOUT", db.nodout}, {"*DATABASE_GLSTAT", db.glstat},
+                                              {"*DATABASE_BINARY_D3PLOT", db.d3plot}};
+  for (const auto& [kw, dt] : dbs)
+    if (dt != 0.0) o += std::string(kw) + "\n$#      DT\n" + CardOut().r(dt).str();
+  if (!db.history_nodes.empty()) {
+    o += "*DATABASE_HISTORY_NODE\n";
+    write_id_list(db.history_nodes, o);
+  }
+
+  for (const auto& p : m.parts) {
+    o += "*PART\n" + heading(p.title);
+    o += "$#     PID     SECID       MID     EOSID      HGID\n";
+    o += CardOut().i(p.pid).i(p.secid).i(p.mid).i(p.eosid).i(p.hgid).str();
+  }
+  for (const auto& s : m.solid_sections) {
+    o += "*SECTION_SOLID\n$#   SECID    ELFORM\n" + CardOut().i(s.secid).i(s.elform).str();
+  }
+  for (const auto& s : m.shell_sections) {
+    o += "*SECTION_SHELL\n$#   SECID    ELFORM      SHRF       NIP     PROPT\n";
+    o += CardOut().i(s.secid).i(s.elform).r(s.shrf).i(s.nip).r(s.propt).str();
+    o += "$#      T1        T2        T3        T4\n";
+    o += CardOut().r(s.t[0]).r(s.t[1]).r(s.t[2]).r(s.t[3]).str();
+  }
+  write_materials(m, o);
+  for (const auto& h : m.hourglasses) {
+    o += "*HOURGLASS\n$#    HGID       IHQ        QM       IBQ        Q1        Q2\n";
+    o += CardOut().i(h.hgid).i(h.ihq).r(h.qm).blank().r(h.q1).r(h.q2).str();
+  }
+
+  for (const auto& s : m.node_sets) {
+    o += s.title.empty() ? "*SET_NODE_LIST\n" : "*SET_NODE_LIST_TITLE\n" + heading(s.title);
+    o += "$#     SID\n" + CardOut().i(s.sid).str();
+    write_id_list(s.nodes, o);
+  }
+  for (const auto& s : m.segment_sets) {
+    o += s.title.empty() ? "*SET_SEGMENT\n" : "*SET_SEGMENT_TITLE\n" + heading(s.title);
+    o += "$#     SID\n" + CardOut().i(s.sid).str();
+    for (const auto& seg : s.segments) o += CardOut().i(seg[0]).i(seg[1]).i(seg[2]).i(seg[3]).str();
+  }
+  for (const auto& s : m.part_sets) {
+    o += s.title.empty() ? "*SET_PART_LIST\n" : "*SET_PART_LIST_TITLE\n" + heading(s.title);
+    o += "$#     SID\n" + CardOut().i(s.sid).str();
+    write_id_list(s.parts, o);
+  }
+
+  for (const auto& s : m.spcs) {
+    const bool with_id = s.id != 0 || !s.title.empty();
+    o += with_id ? "*BOUNDARY_SPC_SET_ID\n" + id_heading(s.id, s.title) : std::string("*BOUNDARY_SPC_SET\n");
+    o += "$#    NSID       CID      DOFX      DOFY      DOFZ     DOFRX     DOFRY     DOFRZ\n";
+    CardOut c;
+    c.i(s.nsid).i(s.cid);
+    for (int d : s.dof) c.i(d);
+    o += c.str();
+  }
+  for (const auto& p : m.prescribed_motions) {
+    const bool with_id = p.id != 0 || !p.title.empty();
+    o += with_id ? "*BOUNDARY_PRESCRIBED_MOTION_SET_ID\n" + id_heading(p.id, p.title)
+                 : std::string("*BOUNDARY_PRESCRIBED_MOTION_SET\n");
+    o += "$#    NSID       DOF       VAD      LCID        SF       VID     DEATH     BIRTH\n";
+    o += CardOut().i(p.nsid).i(p.dof).i(p.vad).i(p.lcid).r(p.sf).i(p.vid).r(p.death).r(p.birth).str();
+  }
+  for (const auto& l : m.body_loads) {
+    o += std::string("*LOAD_BODY_") + (l.axis == Axis::x ? "X" : l.axis == Axis::y ? "Y" : "Z") + "\n";
+    o += "$#    LCID        SF    LCIDDR        XC        YC        ZC       CID\n";
+    o += CardOut().i(l.lcid).r(l.sf).i(l.lciddr).r(l.xc).r(l.yc).r(l.zc).i(l.cid).str();
+  }
+  if (m.body_load_parts) o += "*LOAD_BODY_PARTS\n$#    PSID\n" + CardOut().i(m.body_load_parts->psid).str();
+  if (m.damping_global) {
+    const auto& d = *m.damping_global;
+    o += "*DAMPING_GLOBAL\n$#    LCID    VALDMP       STX       STY       STZ       SRX       SRY       SRZ\n";
+    CardOut c;
+    c.i(d.lcid).r(d.valdmp);
+    for (Real s : d.stf) c.r(s);
+    o += c.str();
+  }
+  for (const auto& d : m.damping_parts) {
+    o += "*DAMPING_PART_MASS\n$#     PID      LCID        SF      FLAG\n";
+    o += CardOut().i(d.pid).i(d.lcid).r(d.sf).i(d.flag).str();
+    if (d.flag == 1) o += "\n";  // the per-direction scale-factor card FLAG=1 asks for
+  }
+  for (const auto& cv : m.curves) {
+    o += cv.title.empty() ? "*DEFINE_CURVE\n" : "*DEFINE_CURVE_TITLE\n" + heading(cv.title);
+    o += "$#    LCID      SIDR       SFA       SFO      OFFA      OFFO    DATTYP\n";
+    o += CardOut().i(cv.lcid).i(cv.sidr).r(cv.sfa).r(cv.sfo).r(cv.offa).r(cv.offo).i(cv.dattyp).str();
+    o += "$#                 A                   O\n";
+    for (const auto& [a, v] : cv.points) o += CardOut(kCurvePoint).r(a).r(v).str();
+  }
+  write_contacts(m, o);
+
+  if (!m.nodes.empty()) {
+    o += "*NODE\n$#   NID               X               Y               Z      TC      RC\n";
+    for (const auto& n : m.nodes)
+      o += CardOut(kNodeCard).i(n.id).r(n.x[0]).r(n.x[1]).r(n.x[2]).i(n.tc).i(n.rc).str();
+  }
+  if (!m.solids.empty()) {
+    o += "*ELEMENT_SOLID\n$#   EID     PID      N1      N2      N3      N4      N5      N6      N7      N8\n";
+    for (const auto& e : m.solids) {
+      CardOut c(kElementCard);
+      c.i(e.id).i(e.pid);
+      for (Id n : e.n) c.i(n);
+      o += c.str();
+    }
+  }
+  if (!m.shells.empty()) {
+    o += "*ELEMENT_SHELL\n$#   EID     PID      N1      N2      N3      N4\n";
+    for (const auto& e : m.shells) o += CardOut(kElementCard).i(e.id).i(e.pid).i(e.n[0]).i(e.n[1]).i(e.n[2]).i(e.n[3]).str();
+  }
+  o += "*END\n";
+  return o;
+}
+
+void write_keyword_file(const model::Model& model, const std::string& path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw Error(path + ": cannot open for writing");
+  out << write_keyword_string(model);
+  if (!out) throw Error(path + ": write failed");
+}
+
+}  // namespace slideline

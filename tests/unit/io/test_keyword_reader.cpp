@@ -1,0 +1,230 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/keyword_reader.hpp"
+
+namespace slideline {
+namespace {
+
+std::string deck_path(const std::string& name) {
+  return std::string(SLIDELINE_SOURCE_DIR) + "/tests/data/decks/" + name;
+}
+
+TEST(KeywordReader, ReadsSolidSeedDeck) {
+  std::vector<Diagnostic> warnings;
+  const auto m = read_keyword_file(deck_path("solid_on_solid_type3.k"), &warnings);
+  EXPECT_TRUE(warnings.empty()) << to_string(warnings.front());
+  EXPECT_EQ(m.title, "sslide3p seed: solid block on solid block (type 3 penalty)");
+  ASSERT_EQ(m.nodes.size(), 16u);
+  EXPECT_EQ(m.nodes[9].id, 10);
+  EXPECT_DOUBLE_EQ(m.nodes[9].x[0], 1.51);
+  EXPECT_DOUBLE_EQ(m.nodes[9].x[2], -0.01);
+  ASSERT_EQ(m.solids.size(), 2u);
+  EXPECT_EQ(m.solids[1].pid, 2);
+  EXPECT_EQ(m.solids[1].n[7], 16);
+  ASSERT_EQ(m.parts.size(), 2u);
+  EXPECT_EQ(m.parts[1].title, "lower block");
+  EXPECT_EQ(m.parts[1].hgid, 1);
+  EXPECT_GT(m.parts[1].src.line, 0);
+  ASSERT_EQ(m.materials.size(), 1u);
+  const auto& mr = std::get<model::MatMooneyRivlin>(m.materials[0]);
+  EXPECT_DOUBLE_EQ(mr.a, 909.091);
+  EXPECT_EQ(mr.title, "rubber");
+  EXPECT_DOUBLE_EQ(m.timestep.tssfac, 0.9);
+  EXPECT_EQ(m.timestep.isdo, 0);  // blank keeps the default
+  EXPECT_EQ(m.control_hourglass.ihq, 10);
+  EXPECT_EQ(m.control_contact.shlthk, 1);
+  EXPECT_DOUBLE_EQ(m.termination.endtim, 0.5);
+  EXPECT_DOUBLE_EQ(m.database.d3plot, 0.05);
+  EXPECT_EQ(m.database.history_nodes, (std::vector<Id>{5, 13}));
+  ASSERT_EQ(m.hourglasses.size(), 1u);
+  EXPECT_EQ(m.hourglasses[0].ihq, 10);
+  EXPECT_DOUBLE_EQ(m.hourglasses[0].q2, 0.06);
+  ASSERT_EQ(m.node_sets.size(), 2u);
+  EXPECT_EQ(m.node_sets[0].title, "lower bottom");
+  EXPECT_EQ(m.node_sets[0].nodes, (std::vector<Id>{9, 10, 11, 12}));
+  ASSERT_EQ(m.segment_sets.size(), 2u);
+  EXPECT_EQ(m.segment_sets[1].segments[0], (std::array<Id, 4>{13, 14, 15, 16}));
+  ASSERT_EQ(m.spcs.size(), 2u);
+  EXPECT_EQ(m.spcs[0].id, 1);
+  EXPECT_EQ(m.spcs[0].title, "lower bottom");
+  EXPECT_EQ(m.spcs[0].dof, (std::array<int, 6>{0, 1, 0, 0, 0, 0}));
+  EXPECT_EQ(m.spcs[1].dof, (std::array<int, 6>{1, 0, 0, 0, 0, 0}));
+  ASSERT_EQ(m.body_loads.size(), 2u);
+  EXPECT_EQ(m.body_loads[0].axis, Axis::y);
+  EXPECT_DOUBLE_EQ(m.body_loads[1].sf, -3.1);
+  ASSERT_TRUE(m.body_load_parts.has_value());
+  EXPECT_EQ(m.body_load_parts->psid, 1);
+  ASSERT_EQ(m.curves.size(), 2u);
+  EXPECT_EQ(m.curves[0].title, "y load");
+  EXPECT_EQ(m.curves[1].points.size(), 4u);
+  EXPECT_DOUBLE_EQ(m.curves[1].points[2].first, 0.4);
+  ASSERT_TRUE(m.damping_global.has_value());
+  EXPECT_DOUBLE_EQ(m.damping_global->valdmp, 15.0);
+  ASSERT_EQ(m.contacts.size(), 1u);
+  const auto& c = m.contacts[0];
+  EXPECT_EQ(c.type, model::ContactType::surface_to_surface);
+  EXPECT_EQ(c.enforcement, model::Enforcement::penalty);
+  EXPECT_EQ(c.title, "solid_on_solid");
+  EXPECT_DOUBLE_EQ(c.fs, 0.3);
+  EXPECT_DOUBLE_EQ(c.dc, 2.0);
+  EXPECT_DOUBLE_EQ(c.sfm, 10.0);
+  EXPECT_DOUBLE_EQ(c.dt, 1e20);  // blank death time keeps the default
+  EXPECT_EQ(c.src.file, deck_path("solid_on_solid_type3.k"));
+  const auto problems = check_references(m);
+  EXPECT_TRUE(problems.empty()) << to_string(problems.front());
+}
+
+TEST(KeywordReader, ReadsEveryContactCard) {
+  std::vector<Diagnostic> warnings;
+  const auto m = read_keyword_file(deck_path("shells_all_contacts.k"), &warnings);
+  for (const auto& w : warnings) ADD_FAILURE() << to_string(w);
+  using model::ContactType;
+  using model::Enforcement;
+  ASSERT_EQ(m.contacts.size(), 13u);
+  const auto& c = m.contacts;
+  EXPECT_EQ(c[0].type, ContactType::sliding_only);
+  EXPECT_EQ(c[0].enforcement, Enforcement::kinematic);
+  EXPECT_EQ(c[1].type, ContactType::tied_surface);
+  EXPECT_EQ(c[1].cid, 2);
+  EXPECT_EQ(c[1].title, "tied");
+  EXPECT_EQ(c[2].type, ContactType::surface_to_surface);
+  EXPECT_EQ(c[2].enforcement, Enforcement::lagrange);
+  EXPECT_EQ(c[2].title, "lagrange sliding");
+  EXPECT_DOUBLE_EQ(c[2].dc, 1.3);
+  EXPECT_EQ(c[3].type, ContactType::nodes_to_surface);
+  EXPECT_DOUBLE_EQ(c[3].radius, 0.05);  // SST with a node set is the nodal radius
+  EXPECT_DOUBLE_EQ(c[3].mst, 0.1);
+  EXPECT_EQ(c[4].enforcement, Enforcement::lagrange);
+  EXPECT_EQ(c[5].type, ContactType::tied_nodes);
+  EXPECT_EQ(c[5].enforcement, Enforcement::kinematic);
+  EXPECT_EQ(c[6].type, ContactType::tied_shell_edge);
+  EXPECT_EQ(c[6].cid, 7);
+  EXPECT_EQ(c[7].type, ContactType::tiebreak_nodes);
+  EXPECT_EQ(c[7].enforcement, Enforcement::penalty);
+  EXPECT_DOUBLE_EQ(c[7].nflf, 1.0);
+  EXPECT_DOUBLE_EQ(c[7].sflf, 1e4);
+  EXPECT_DOUBLE_EQ(c[7].nen, 2.0);
+  EXPECT_EQ(c[8].type, ContactType::tiebreak_surface);
+  EXPECT_EQ(c[8].option, 2);
+  EXPECT_DOUBLE_EQ(c[8].nfls, 9.0);
+  EXPECT_DOUBLE_EQ(c[8].nflf, 9.0);  // NFLS/SFLS are mirrored into nflf/sflf for type 9
+  EXPECT_DOUBLE_EQ(c[8].sflf, 1e4);
+  EXPECT_DOUBLE_EQ(c[8].sfs, 100.0);
+  EXPECT_EQ(c[9].type, ContactType::one_way);
+  EXPECT_TRUE(c[9].sliding_only_option);
+  EXPECT_EQ(c[9].title, "one way sliding");
+  EXPECT_EQ(c[10].type, ContactType::one_way);
+  EXPECT_FALSE(c[10].sliding_only_option);
+  EXPECT_EQ(c[10].enforcement, Enforcement::lagrange);
+  EXPECT_EQ(c[11].type, ContactType::automatic);
+  EXPECT_FALSE(c[11].automatic_general);
+  EXPECT_EQ(c[12].type, ContactType::automatic);
+  EXPECT_TRUE(c[12].automatic_general);
+  EXPECT_DOUBLE_EQ(c[12].fs, 0.1);
+
+  ASSERT_EQ(m.parts.size(), 3u);
+  EXPECT_EQ(m.parts[2].title, "");  // a blank *PART heading
+  EXPECT_EQ(m.parts[2].mid, 3);
+  ASSERT_EQ(m.shell_sections.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.shell_sections[0].shrf, 0.8333);
+  EXPECT_EQ(m.shell_sections[0].nip, 5);
+  EXPECT_DOUBLE_EQ(m.shell_sections[0].t[3], 0.1);
+  ASSERT_EQ(m.materials.size(), 3u);
+  EXPECT_EQ(std::get<model::MatElastic>(m.materials[1]).title, "stiff");
+  EXPECT_DOUBLE_EQ(std::get<model::MatElastic>(m.materials[1]).e, 4000.0);
+  const auto& rigid = std::get<model::MatRigid>(m.materials[2]);
+  EXPECT_DOUBLE_EQ(rigid.cmo, 1.0);
+  EXPECT_EQ(rigid.con2, 7);
+  ASSERT_EQ(m.prescribed_motions.size(), 2u);
+  EXPECT_EQ(m.prescribed_motions[0].id, 11);
+  EXPECT_EQ(m.prescribed_motions[0].title, "pull");
+  EXPECT_EQ(m.prescribed_motions[1].vad, 0);
+  EXPECT_DOUBLE_EQ(m.prescribed_motions[1].sf, 0.5);
+  EXPECT_DOUBLE_EQ(m.prescribed_motions[1].death, 1e28);
+  EXPECT_EQ(m.node_sets[0].nodes.size(), 9u);
+  EXPECT_EQ(m.nodes.size(), 14u);
+  EXPECT_EQ(m.shells.size(), 5u);
+  EXPECT_EQ(m.damping_parts.size(), 1u);
+  const auto problems = check_references(m);
+  EXPECT_TRUE(problems.empty()) << to_string(problems.front());
+}
+
+TEST(KeywordReader, FreeFormatTwoCardSolidAndUnknownKeyword) {
+  std::vector<Diagnostic> warnings;
+  const auto m = read_keyword_file(deck_path("free_format_cube.k"), &warnings);
+  ASSERT_EQ(m.nodes.size(), 8u);
+  EXPECT_DOUBLE_EQ(m.nodes[6].x[1], 1.0);
+  ASSERT_EQ(m.solids.size(), 1u);
+  EXPECT_EQ(m.solids[0].n, (std::array<Id, 8>{1, 2, 3, 4, 5, 6, 7, 8}));
+  const auto& e = std::get<model::MatElastic>(m.materials.at(0));
+  EXPECT_DOUBLE_EQ(e.e, 2.1e5);  // Fortran D exponent
+  EXPECT_DOUBLE_EQ(e.ro, 7.8e-9);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].line, 21);
+  EXPECT_NE(warnings[0].message.find("*DATABASE_EXTENT_BINARY"), std::string::npos);
+  EXPECT_TRUE(check_references(m).empty());
+}
+
+TEST(KeywordReader, MalformedFieldNamesFileLineColumnsFieldAndCard) {
+  const std::string deck = "*KEYWORD\n*MAT_ELASTIC\n         1      0.01       xyz       0.1\n*END\n";
+  try {
+    read_keyword_string(deck, "bad.k", nullptr);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "bad.k:3: columns 21-30 (field E of *MAT_ELASTIC): expected a real number, got 'xyz'");
+  }
+  try {
+    read_keyword_string("*NODE\n1,0.0,abc,0\n", "free.k", nullptr);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "free.k:2: free-format field 3 (field Y of *NODE): expected a real number, got 'abc'");
+  }
+  EXPECT_THROW(read_keyword_string("*ELEMENT_SOLID\n       1     1.5\n", "x.k", nullptr), InputError);
+  EXPECT_THROW(read_keyword_string("*NODE\n1,nan,0,0\n", "x.k", nullptr), InputError);
+  EXPECT_THROW(read_keyword_file("/nonexistent/deck.k"), InputError);
+}
+
+TEST(KeywordReader, UnknownKeywordsAndOptionsWarnWithLines) {
+  std::vector<Diagnostic> warnings;
+  const auto m = read_keyword_string(
+      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE_SLIDING_ONLY\n1,2\n*END\n",
+      "w.k", &warnings);
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_EQ(to_string(warnings[0]).rfind("w.k:2: unknown keyword *FOO_BAR", 0), 0u) << to_string(warnings[0]);
+  EXPECT_EQ(warnings[1].line, 4);
+  EXPECT_EQ(warnings[2].line, 6);
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_FALSE(m.contacts[0].sliding_only_option);
+}
+
+TEST(KeywordReader, CheckReferencesNamesEveryMissingId) {
+  const std::string deck =
+      "*NODE\n1,0,0,0\n2,1,0,0\n"
+      "*ELEMENT_SHELL\n1,7,1,2,3,4\n"
+      "*PART\np\n1,5,6,0,9\n"
+      "*SET_NODE_LIST\n1\n1,2,42\n"
+      "*BOUNDARY_SPC_SET\n3,0,1\n"
+      "*LOAD_BODY_Y\n8,1.0\n"
+      "*CONTACT_SURFACE_TO_SURFACE\n4,5,0,3\n";
+  const auto m = read_keyword_string(deck, "refs.k", nullptr);
+  const auto problems = check_references(m);
+  std::string all;
+  for (const auto& p : problems) all += to_string(p) + "\n";
+  for (const char* expected :
+       {"*ELEMENT_SHELL 1 refers to undefined part 7", "*ELEMENT_SHELL 1 refers to undefined node 3",
+        "*ELEMENT_SHELL 1 refers to undefined node 4", "refs.k:8: *PART 1 refers to undefined section 5",
+        "*PART 1 refers to undefined material 6", "*PART 1 refers to undefined hourglass 9",
+        "refs.k:10: *SET_NODE_LIST 1 refers to undefined node 42",
+        "*BOUNDARY_SPC_SET refers to undefined node set 3", "*LOAD_BODY_Y refers to undefined curve 8",
+        "SSID refers to undefined segment set 4", "MSID refers to undefined part 5"})
+    EXPECT_NE(all.find(expected), std::string::npos) << "missing: " << expected << "\nin:\n" << all;
+  EXPECT_EQ(problems.size(), 11u) << all;
+}
+
+}  // namespace
+}  // namespace slideline
