@@ -1,0 +1,242 @@
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/csv_writer.hpp"
+#include "slideline/io/hdf5_writer.hpp"
+
+namespace slideline {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / "slideline_io_tests";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::vector<HistoryChannel> fake_channels() {
+  return {{"interfaces/solid_on_solid/slave_force", 3},
+          {"interfaces/solid_on_solid/master_force", 3},
+          {"supports/lower bottom/reaction", 3},
+          {"nodes/5/displacement", 3},
+          {"energy/kinetic", 1},
+          {"energy/internal", 1}};
+}
+
+/// Two hexahedra sharing a face plus one quadrilateral: 12 + 4 nodes.
+MeshDescription fake_mesh() {
+  MeshDescription m;
+  for (int k = 0; k < 16; ++k) {
+    m.node_ids.push_back(100 + k);
+    m.x0.insert(m.x0.end(), {Real(k % 3), Real(k / 3), 0.5 * k});
+  }
+  m.hex_connectivity = {0, 1, 2, 3, 4, 5, 6, 7, 4, 5, 6, 7, 8, 9, 10, 11};
+  m.quad_connectivity = {12, 13, 14, 15};
+  return m;
+}
+
+Real value_of(int record, int column) { return 0.25 * record - 1.5 * column + (column == 3 ? 1e-9 : 0.0); }
+
+std::vector<Real> record(int r, std::size_t width) {
+  std::vector<Real> v(width);
+  for (std::size_t c = 0; c < width; ++c) v[c] = value_of(r, int(c));
+  return v;
+}
+
+/// Reads a whole double dataset and its dimensions with the HDF5 C API.
+std::vector<double> read_doubles(hid_t file, const std::string& path, std::vector<hsize_t>* dims = nullptr) {
+  const hid_t d = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  EXPECT_GE(d, 0) << path;
+  if (d < 0) return {};
+  const hid_t s = H5Dget_space(d);
+  const int rank = H5Sget_simple_extent_ndims(s);
+  std::vector<hsize_t> dd(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(s, dd.data(), nullptr);
+  hsize_t n = 1;
+  for (auto x : dd) n *= x;
+  std::vector<double> out(n);
+  if (n) H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  H5Sclose(s);
+  H5Dclose(d);
+  if (dims) *dims = dd;
+  return out;
+}
+
+bool exists(hid_t file, const std::string& path) {
+  // Walk the path so that a missing intermediate group is not an HDF5 error.
+  std::string partial;
+  std::stringstream ss(path);
+  std::string piece;
+  while (std::getline(ss, piece, '/')) {
+    if (piece.empty()) continue;
+    partial += "/" + piece;
+    if (H5Lexists(file, partial.c_str(), H5P_DEFAULT) <= 0) return false;
+  }
+  return true;
+}
+
+constexpr int kRecords = 1300;  // more than two append blocks plus a partial one
+constexpr int kStates = 3;
+
+void write_run(OutputSink& sink, const MeshDescription& mesh) {
+  const auto channels = fake_channels();
+  sink.begin(channels, mesh);
+  const std::size_t width = 3 * 4 + 2;
+  for (int r = 0; r < kRecords; ++r) {
+    sink.write_history(0.001 * r, record(r, width));
+    if (r % 500 == 0) {
+      std::vector<Real> u(3 * mesh.node_ids.size());
+      for (std::size_t k = 0; k < u.size(); ++k) u[k] = 0.01 * r + 1e-3 * k;
+      sink.write_state(0.001 * r, u);
+    }
+  }
+}
+
+TEST(Hdf5Writer, HistoriesStatesAndMeshReadBack) {
+  const auto path = scratch("histories.h5");
+  const auto mesh = fake_mesh();
+  Hdf5Writer w(path.string());
+  write_run(w, mesh);
+  w.flush();
+
+  // Read while the writer is still open: flush() must have made everything durable.
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  std::vector<hsize_t> dims;
+  const auto t = read_doubles(f, "/time", &dims);
+  ASSERT_EQ(dims, (std::vector<hsize_t>{kRecords}));
+  EXPECT_DOUBLE_EQ(t[1234], 1.234);
+  const auto slave = read_doubles(f, "/interfaces/solid_on_solid/slave_force", &dims);
+  ASSERT_EQ(dims, (std::vector<hsize_t>{kRecords, 3}));
+  const auto node = read_doubles(f, "/nodes/5/displacement");
+  const auto reaction = read_doubles(f, "/supports/lower bottom/reaction");
+  const auto ke = read_doubles(f, "/energy/kinetic", &dims);
+  ASSERT_EQ(dims, (std::vector<hsize_t>{kRecords}));
+  const auto ie = read_doubles(f, "/energy/internal");
+  for (int r : {0, 1, 511, 512, 1023, 1024, kRecords - 1}) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(slave[std::size_t(3 * r + k)], value_of(r, k));
+      EXPECT_EQ(reaction[std::size_t(3 * r + k)], value_of(r, 6 + k));
+      EXPECT_EQ(node[std::size_t(3 * r + k)], value_of(r, 9 + k));
+    }
+    EXPECT_EQ(ke[std::size_t(r)], value_of(r, 12));
+    EXPECT_EQ(ie[std::size_t(r)], value_of(r, 13));
+  }
+  const auto st = read_doubles(f, "/states/time", &dims);
+  ASSERT_EQ(dims, (std::vector<hsize_t>{kStates}));
+  EXPECT_DOUBLE_EQ(st[2], 1.0);
+  const auto u = read_doubles(f, "/states/displacement", &dims);
+  ASSERT_EQ(dims, (std::vector<hsize_t>{kStates, 16, 3}));
+  EXPECT_DOUBLE_EQ(u[48 + 3 * 15 + 2], 0.01 * 500 + 1e-3 * 47);
+  const auto x0 = read_doubles(f, "/mesh/coordinates", &dims);
+  ASSERT_EQ(dims, (std::vector<hsize_t>{16, 3}));
+  EXPECT_EQ(x0, mesh.x0);
+  const auto hex = read_doubles(f, "/mesh/hexahedra", &dims);  // converted on read
+  ASSERT_EQ(dims, (std::vector<hsize_t>{2, 8}));
+  EXPECT_EQ(hex[15], 11.0);
+  read_doubles(f, "/mesh/quadrilaterals", &dims);
+  EXPECT_EQ(dims, (std::vector<hsize_t>{1, 4}));
+  const auto ids = read_doubles(f, "/mesh/node_ids");
+  EXPECT_EQ(ids[15], 115.0);
+  EXPECT_GT(H5Aexists(f, "units"), 0);
+  H5Fclose(f);
+}
+
+TEST(Hdf5Writer, UnflushedTailIsWrittenByTheDestructorAndBadRecordsThrow) {
+  const auto path = scratch("destructor.h5");
+  {
+    Hdf5Writer w(path.string());
+    write_run(w, fake_mesh());
+    EXPECT_THROW(w.write_history(1.0, std::vector<Real>(3)), Error);
+    EXPECT_THROW(w.write_state(1.0, std::vector<Real>(5)), Error);
+  }
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  std::vector<hsize_t> dims;
+  read_doubles(f, "/energy/internal", &dims);
+  EXPECT_EQ(dims, (std::vector<hsize_t>{kRecords}));
+  H5Fclose(f);
+  EXPECT_THROW(Hdf5Writer("/nonexistent-dir/x.h5"), Error);
+}
+
+TEST(Xdmf, EveryDatasetItRefersToExistsInTheHdf5File) {
+  const auto path = scratch("paraview.h5");
+  Hdf5Writer w(path.string());
+  write_run(w, fake_mesh());
+  w.flush();
+  EXPECT_EQ(w.xdmf_path(), scratch("paraview.xdmf").string());
+  std::ifstream in(w.xdmf_path());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string xml = ss.str();
+  EXPECT_NE(xml.find("CollectionType=\"Temporal\""), std::string::npos);
+  EXPECT_NE(xml.find("TopologyType=\"Hexahedron\" NumberOfElements=\"2\""), std::string::npos);
+  EXPECT_NE(xml.find("TopologyType=\"Quadrilateral\" NumberOfElements=\"1\""), std::string::npos);
+  EXPECT_NE(xml.find("<Time Value=\"1\"/>"), std::string::npos);
+  // One hyperslab start per state (twice per grid: geometry and attribute, two grids).
+  EXPECT_NE(xml.find(">2 0 0 1 1 1 1 16 3<"), std::string::npos);
+
+  const std::regex ref(">([^<>:]+\\.h5):([^<]+)<");
+  std::set<std::string> paths;
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), ref); it != std::sregex_iterator(); ++it) {
+    EXPECT_EQ((*it)[1].str(), "paraview.h5");
+    paths.insert((*it)[2].str());
+  }
+  EXPECT_EQ(paths, (std::set<std::string>{"/mesh/coordinates", "/mesh/hexahedra", "/mesh/quadrilaterals",
+                                          "/states/displacement"}));
+  for (const auto& p : paths) EXPECT_TRUE(exists(f, p)) << p;
+  H5Fclose(f);
+  // Balanced tags: every opening <Grid> and <DataItem> has its closing tag.
+  const auto count = [&](const std::string& s) {
+    std::size_t n = 0;
+    for (auto p = xml.find(s); p != std::string::npos; p = xml.find(s, p + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("<Grid "), count("</Grid>"));
+  EXPECT_EQ(count("<DataItem "), count("</DataItem>"));
+  EXPECT_EQ(count("<Grid Name=\"state "), std::size_t(kStates));
+}
+
+TEST(CsvWriter, HeaderAndValues) {
+  const auto path = scratch("histories.csv");
+  {
+    CsvWriter w(path.string());
+    write_run(w, fake_mesh());
+    w.flush();
+  }
+  std::ifstream in(path);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("time,interfaces/solid_on_solid/slave_force_x,interfaces/solid_on_solid/slave_force_y,", 0), 0u);
+  EXPECT_NE(header.find(",supports/lower bottom/reaction_z,nodes/5/displacement_x,"), std::string::npos);
+  EXPECT_EQ(header.substr(header.size() - 31), ",energy/kinetic,energy/internal");
+  std::string line;
+  int rows = 0;
+  std::string row7;
+  while (std::getline(in, line)) {
+    if (rows == 7) row7 = line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, kRecords);
+  std::stringstream ss(row7);
+  std::string cell;
+  std::vector<double> v;
+  while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+  ASSERT_EQ(v.size(), 15u);
+  EXPECT_DOUBLE_EQ(v[0], 0.007);
+  for (int c = 0; c < 14; ++c) EXPECT_EQ(v[std::size_t(c + 1)], value_of(7, c)) << c;
+}
+
+}  // namespace
+}  // namespace slideline
