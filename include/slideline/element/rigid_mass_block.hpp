@@ -1,0 +1,96 @@
+#pragma once
+/// The elements of a rigid part: they add their lumped mass to the nodes and no internal force.
+/// The RigidBody constraint (solver/rigid_body.hpp) then moves those nodes as one body.
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "slideline/core/error.hpp"
+#include "slideline/element/element_block.hpp"
+#include "slideline/element/hex8.hpp"
+#include "slideline/element/shell_bt.hpp"
+
+namespace slideline {
+
+class RigidMassBlock final : public ElementBlock {
+ public:
+  /// `hex_connectivity`: 8 internal node indices per hexahedron; `quad_connectivity`: 4 per shell
+  /// of thickness `shell_thickness`; `element_ids`: the hexahedra's ids, then the shells'.
+  RigidMassBlock(Id part_id, Real density, std::vector<Index> hex_connectivity,
+                 std::vector<Index> quad_connectivity, Real shell_thickness,
+                 std::vector<Id> element_ids)
+      : part_id_(part_id),
+        density_(density),
+        thickness_(shell_thickness),
+        n_hex_(static_cast<Index>(hex_connectivity.size() / 8)),
+        n_quad_(static_cast<Index>(quad_connectivity.size() / 4)),
+        ids_(std::move(element_ids)) {
+    if (hex_connectivity.size() % 8 != 0 || quad_connectivity.size() % 4 != 0 ||
+        ids_.size() != static_cast<std::size_t>(n_hex_ + n_quad_))
+      throw InputError("rigid part " + std::to_string(part_id_) +
+                       ": connectivity does not match the element count");
+    if (!(density_ > 0.0))
+      throw InputError("rigid part " + std::to_string(part_id_) + ": density must be positive");
+    if (n_quad_ > 0 && !(thickness_ > 0.0))
+      throw InputError("rigid part " + std::to_string(part_id_) + ": shell thickness must be positive");
+    conn_ = std::move(hex_connectivity);
+    conn_.insert(conn_.end(), quad_connectivity.begin(), quad_connectivity.end());
+  }
+
+  std::string kind() const override { return "rigid"; }
+  Id part_id() const override { return part_id_; }
+  Index element_count() const override { return n_hex_ + n_quad_; }
+  /// 8 or 4 for a part of one element kind; 0 for a mixed part (then the output mesh omits it).
+  int nodes_per_element() const override {
+    return n_quad_ == 0 ? 8 : (n_hex_ == 0 ? 4 : 0);
+  }
+  std::span<const Index> connectivity() const override { return conn_; }
+  Id element_id(Index e) const override { return ids_[e]; }
+
+  /// Adds rho V / 8 per hexahedron corner and rho A t / 4 per shell corner (mass only: the
+  /// rigid body's rotary inertia comes from the distribution of these point masses).
+  void initialize(NodalFields& nodes) override {
+    for (Index e = 0; e < n_hex_; ++e) {
+      hex8::NodeMat X;
+      for (int k = 0; k < 8; ++k) X.row(k) = nodes.x0.get(conn_[8 * e + k]).transpose();
+      const Real v = hex8::volume(X, hex8::volume_gradient(X));
+      if (!(v > 0.0))
+        throw InputError("rigid solid element " + std::to_string(ids_[e]) + " of part " +
+                         std::to_string(part_id_) + " has non-positive volume");
+      for (int k = 0; k < 8; ++k) nodes.mass[conn_[8 * e + k]] += density_ * v / 8.0;
+    }
+    const Index q0 = 8 * n_hex_;
+    for (Index e = 0; e < n_quad_; ++e) {
+      shell_bt::NodeMat X;
+      for (int k = 0; k < 4; ++k) X.row(k) = nodes.x0.get(conn_[q0 + 4 * e + k]).transpose();
+      const Real a = shell_bt::local_geometry(X).area;
+      if (!(a > 0.0))
+        throw InputError("rigid shell element " + std::to_string(ids_[n_hex_ + e]) + " of part " +
+                         std::to_string(part_id_) + " has non-positive area");
+      for (int k = 0; k < 4; ++k) nodes.mass[conn_[q0 + 4 * e + k]] += density_ * a * thickness_ / 4.0;
+    }
+  }
+
+  /// Writes zero corner forces (the slots exist so that the gather stays uniform) and puts no
+  /// bound on the time step.
+  Real compute_forces(const NodalFields&, Real, CornerBuffer& corners, BlockEnergy&) override {
+    const Index b = force_slot_base();
+    const Index n = static_cast<Index>(conn_.size());
+    for (Index k = 0; k < n; ++k) {
+      corners.force.x[b + k] = 0.0;
+      corners.force.y[b + k] = 0.0;
+      corners.force.z[b + k] = 0.0;
+    }
+    return std::numeric_limits<Real>::max();
+  }
+
+ private:
+  Id part_id_;
+  Real density_;
+  Real thickness_;
+  Index n_hex_, n_quad_;
+  std::vector<Index> conn_;
+  std::vector<Id> ids_;
+};
+
+}  // namespace slideline

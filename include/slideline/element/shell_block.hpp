@@ -1,0 +1,326 @@
+#pragma once
+/// A block of 4-node Belytschko-Tsay shells of one part, one elastic material and one section.
+///
+/// Stresses are hypoelastic: each step adds C : D dt to the stress stored per element and
+/// through-thickness point in the element's co-rotational frame, so the stored stress turns with
+/// the element (Belytschko, Lin & Tsay 1984). See docs/shells_and_rigid.md for the options.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slideline/core/error.hpp"
+#include "slideline/core/parallel.hpp"
+#include "slideline/element/element_block.hpp"
+#include "slideline/element/hex_block.hpp"  // BulkViscosity
+#include "slideline/element/shell_bt.hpp"
+
+namespace slideline {
+
+/// Linear elastic, plane-stress material of a shell part.
+struct ShellMaterial {
+  Real density = 0.0;  ///< mass / length^3
+  Real youngs = 0.0;   ///< force / length^2
+  Real poisson = 0.0;
+  /// Plate (plane-stress) wave speed sqrt(E / (rho (1 - nu^2))), length / time.
+  Real wave_speed() const { return std::sqrt(youngs / (density * (1.0 - poisson * poisson))); }
+  Real shear_modulus() const { return youngs / (2.0 * (1.0 + poisson)); }
+};
+
+/// Shell section: constant thickness, through-thickness rule, transverse shear factor.
+struct ShellSection {
+  Real thickness = 0.0;
+  int nip = 5;
+  shell_bt::ThicknessRule::Kind rule = shell_bt::ThicknessRule::Kind::gauss;
+  Real shear_factor = 5.0 / 6.0;  ///< SHRF: scales the transverse shear modulus
+};
+
+/// Stress components stored per through-thickness point, local frame.
+inline constexpr int kShellStressComponents = 5;  // xx, yy, xy, yz, xz
+
+class ShellBlock final : public ElementBlock {
+ public:
+  /// `connectivity`: 4 internal node indices per element (counter-clockwise seen from the side
+  /// the normal points to); `hourglass_coefficient`: viscous hourglass coefficient (fraction of
+  /// the critical damping of each hourglass mode, LS-DYNA QM, default 0.1).
+  ShellBlock(Id part_id, ShellMaterial material, ShellSection section, Real hourglass_coefficient,
+             BulkViscosity bulk, std::vector<Index> connectivity, std::vector<Id> element_ids)
+      : part_id_(part_id),
+        mat_(material),
+        sec_(section),
+        qhg_(hourglass_coefficient),
+        bulk_(bulk),
+        rule_(shell_bt::ThicknessRule::make(section.nip, section.rule)),
+        conn_(std::move(connectivity)),
+        ids_(std::move(element_ids)) {
+    if (!(mat_.density > 0.0) || !(mat_.youngs > 0.0) || !(mat_.poisson > -1.0 && mat_.poisson < 0.5))
+      throw InputError("shell part " + std::to_string(part_id_) +
+                       ": density and Young's modulus must be positive and Poisson's ratio in (-1, 0.5)");
+    if (!(sec_.thickness > 0.0))
+      throw InputError("shell part " + std::to_string(part_id_) + ": thickness must be positive");
+    if (!(sec_.shear_factor > 0.0))
+      throw InputError("shell part " + std::to_string(part_id_) + ": shear factor must be positive");
+    if (conn_.size() != 4 * ids_.size())
+      throw InputError("shell part " + std::to_string(part_id_) + ": connectivity needs 4 nodes per element");
+    const Index ne = element_count();
+    const Index nc = chunk_count(ne);
+    chunk_dt_.assign(nc, 0.0);
+    chunk_hg_.assign(nc, 0.0);
+    chunk_visc_.assign(nc, 0.0);
+    chunk_bad_.assign(nc, -1);
+    area0_.assign(ne, 0.0);
+    stress_.assign(static_cast<std::size_t>(ne) * rule_.n * kShellStressComponents, 0.0);
+  }
+
+  std::string kind() const override { return "shell_bt"; }
+  Id part_id() const override { return part_id_; }
+  Index element_count() const override { return static_cast<Index>(ids_.size()); }
+  int nodes_per_element() const override { return 4; }
+  std::span<const Index> connectivity() const override { return conn_; }
+  Id element_id(Index e) const override { return ids_[e]; }
+  bool has_moments() const override { return true; }
+  const ShellMaterial& material() const { return mat_; }
+  const ShellSection& section() const { return sec_; }
+  const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
+
+  /// Nodal mass rho A t / 4 and rotary inertia (rho A t / 4) max(t^2, A) / 12 per corner.
+  /// The A/12 term is LS-DYNA's scaling of shell rotary inertia: with t^2/12 alone the
+  /// transverse-shear rotation modes of thin shells would be far stiffer than the membrane modes
+  /// and would set the time step; with it the rotational step is not below the translational one.
+  void initialize(NodalFields& nodes) override {
+    const Index ne = element_count();
+    const Real t = sec_.thickness;
+    for (Index e = 0; e < ne; ++e) {
+      const shell_bt::LocalGeometry g = shell_bt::local_geometry(gather(nodes.x0, e));
+      if (!(g.area > 0.0))
+        throw InputError("shell element " + std::to_string(ids_[e]) + " of part " +
+                         std::to_string(part_id_) + " has non-positive area " +
+                         std::to_string(g.area) + " (check the node order)");
+      area0_[e] = g.area;
+      const Real m = mat_.density * g.area * t / 4.0;
+      const Real j = m * std::max(t * t, g.area) / 12.0;
+      for (int k = 0; k < 4; ++k) {
+        const Index n = conn_[4 * e + k];
+        nodes.mass[n] += m;
+        nodes.rot_inertia[n] += j;
+        nodes.has_rotation[n] = 1;
+      }
+    }
+  }
+
+  /// Forces and moments at x^n with velocities and angular velocities at t^{n-1/2}: the stress
+  /// increment uses the strain rate on the mid-step geometry x^n - dt/2 v (exactly zero for a
+  /// rigid rotation), the forces the geometry at x^n. Returns the smallest element step
+  /// A / max(side, diagonal) / (plate wave speed, with bulk viscosity), time.
+  Real compute_forces(const NodalFields& nodes, Real dt, CornerBuffer& corners,
+                      BlockEnergy& energy) override {
+    const Index ne = element_count();
+    const Real c = mat_.wave_speed();
+    const Real rho = mat_.density;
+    const Real t = sec_.thickness;
+    const Real half_t = 0.5 * t;
+    const Real c11 = mat_.youngs / (1.0 - mat_.poisson * mat_.poisson);
+    const Real c12 = mat_.poisson * c11;
+    const Real g_mod = mat_.shear_modulus();
+    const Real gs = sec_.shear_factor * g_mod;
+    const Index fbase = force_slot_base();
+    const Index mbase = moment_slot_base();
+    const int nip = rule_.n;
+    parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
+      Real dtmin = std::numeric_limits<Real>::max();
+      Real p_hg = 0.0, p_visc = 0.0;
+      Index bad = -1;
+      for (Index e = b; e < end; ++e) {
+        const shell_bt::NodeMat X = gather(nodes.x, e);
+        const shell_bt::NodeMat V = gather(nodes.v, e);
+        const shell_bt::NodeMat W = gather(nodes.omega, e);
+        const shell_bt::LocalGeometry g = shell_bt::local_geometry(X);
+        if (!(g.area > 0.0)) {
+          if (bad < 0) bad = e;
+          continue;
+        }
+        shell_bt::Resultants r;
+        Real* sig = stress_.data() + static_cast<std::size_t>(e) * nip * kShellStressComponents;
+        shell_bt::StrainRates sr;
+        // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: a rigid rotation's chord velocities
+        // are exactly rigid there, so strain and hourglass rates vanish for it.
+        const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
+        const shell_bt::LocalGeometry gm = dt > 0.0 ? shell_bt::local_geometry(Xm) : g;
+        if (!(gm.area > 0.0)) {
+          if (bad < 0) bad = e;
+          continue;
+        }
+        sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
+        for (int ip = 0; ip < nip; ++ip) {
+          Real* s = sig + ip * kShellStressComponents;
+          const Real z = rule_.xi[ip] * half_t;
+          const Real wz = rule_.w[ip] * half_t;  // dz weight
+          const Real dxx = dt * (sr.membrane[0] + z * sr.curvature[0]);
+          const Real dyy = dt * (sr.membrane[1] + z * sr.curvature[1]);
+          const Real gxy = dt * (sr.membrane[2] + z * sr.curvature[2]);
+          s[0] += c11 * dxx + c12 * dyy;
+          s[1] += c12 * dxx + c11 * dyy;
+          s[2] += g_mod * gxy;
+          s[3] += gs * dt * sr.shear[0];
+          s[4] += gs * dt * sr.shear[1];
+          r.n[0] += wz * s[0];
+          r.n[1] += wz * s[1];
+          r.n[2] += wz * s[2];
+          r.m[0] += wz * z * s[0];
+          r.m[1] += wz * z * s[1];
+          r.m[2] += wz * z * s[2];
+          r.q[0] += wz * s[3];
+          r.q[1] += wz * s[4];
+        }
+        // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
+        const Real len = shell_bt::characteristic_length(X, g.area);
+        const Real trd = sr.membrane[0] + sr.membrane[1];
+        Real qdt = 0.0;
+        if (trd < 0.0) {
+          const Real q = rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
+          r.n[0] -= q * t;
+          r.n[1] -= q * t;
+          p_visc += -q * trd * g.area * t;
+          qdt = bulk_.linear * c + bulk_.quadratic * len * (-trd);
+        }
+        shell_bt::NodeMat fl, ml;
+        shell_bt::resultant_forces(g, r, fl, ml);
+
+        shell_bt::NodeMat f = fl * g.e.transpose();
+        shell_bt::NodeMat m = ml * g.e.transpose();
+
+        // Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes, on the
+        // mid-step geometry.
+        if (qhg_ > 0.0) {
+          // Relative to the element's mean rigid rotation: on a warped element the rotation
+          // about an in-plane axis moves the nodes in plane in proportion to their warp, which
+          // is an hourglass pattern; it must not be resisted.
+          const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
+          const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
+          shell_bt::NodeMat vrel;
+          for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
+          const shell_bt::NodeMat vl = vrel * gm.e;
+          const shell_bt::NodeMat wl = W * gm.e;
+          const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
+          const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
+          const Real m_node = rho * area0_[e] * t / 4.0;
+          const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
+          // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass
+          // displacement); the viscous coefficient is qhg times the critical damping of the mode.
+          const Real k_m = mat_.youngs * t * gm.area * bb / 8.0;
+          const Real k_w = gs * t * t * t * bb / 12.0;
+          const Real k_r = mat_.youngs * t * t * t * gm.area * bb / 192.0;
+          const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
+          const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
+          const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
+          const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
+          const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
+          const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
+          const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
+          const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
+          f += gam * (hv * gm.e.transpose());
+          m += gam * (hw * gm.e.transpose());
+          p_hg += cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] +
+                  cr * (qw[0] * qw[0] + qw[1] * qw[1]);
+        }
+        if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
+        dtmin = std::min(dtmin, len / (qdt + std::sqrt(qdt * qdt + c * c)));
+        const Index s0 = fbase + 4 * e;
+        const Index m0 = mbase + 4 * e;
+        for (int k = 0; k < 4; ++k) {
+          corners.force.x[s0 + k] = f(k, 0);
+          corners.force.y[s0 + k] = f(k, 1);
+          corners.force.z[s0 + k] = f(k, 2);
+          corners.moment.x[m0 + k] = m(k, 0);
+          corners.moment.y[m0 + k] = m(k, 1);
+          corners.moment.z[m0 + k] = m(k, 2);
+        }
+      }
+      chunk_dt_[chunk] = dtmin;
+      chunk_hg_[chunk] = p_hg;
+      chunk_visc_[chunk] = p_visc;
+      chunk_bad_[chunk] = bad;
+    });
+    for (Index bad : chunk_bad_)
+      if (bad >= 0)
+        throw InstabilityError("shell element " + std::to_string(ids_[bad]) + " of part " +
+                                   std::to_string(part_id_) +
+                                   " degenerated (non-positive area or non-finite force)",
+                               0.0, 0);
+    energy.hourglass_power += ordered_sum(chunk_hg_, 0.0);
+    energy.viscous_power += ordered_sum(chunk_visc_, 0.0);
+    Real dtmin = std::numeric_limits<Real>::max();
+    for (Real d : chunk_dt_) dtmin = std::min(dtmin, d);
+    return dtmin;
+  }
+
+  /// Stress (force/length^2, local co-rotational frame: xx, yy, xy, yz, xz) of element e at
+  /// through-thickness point ip (0 = bottom, z = xi * t / 2).
+  Eigen::Matrix<Real, 5, 1> stress(Index e, int ip) const {
+    const Real* s = stress_.data() +
+                    (static_cast<std::size_t>(e) * rule_.n + ip) * kShellStressComponents;
+    return Eigen::Matrix<Real, 5, 1>(s[0], s[1], s[2], s[3], s[4]);
+  }
+
+  /// In-plane stress (xx, yy, xy, local frame) on the top (z = +t/2) or bottom surface of element
+  /// e, linearly extrapolated from the two outermost points (exact for an elastic shell, whose
+  /// in-plane stress is linear through the thickness). Needs nip >= 2.
+  Eigen::Matrix<Real, 3, 1> surface_stress(Index e, bool top) const {
+    const int n = rule_.n;
+    if (n < 2) return stress(e, 0).head<3>();
+    const int i1 = top ? n - 1 : 0, i2 = top ? n - 2 : 1;
+    const Real z1 = rule_.xi[i1], z2 = rule_.xi[i2], zs = top ? 1.0 : -1.0;
+    const Real a = (zs - z2) / (z1 - z2);
+    return a * stress(e, i1).head<3>() + (1.0 - a) * stress(e, i2).head<3>();
+  }
+
+ private:
+  shell_bt::NodeMat gather(const Vec3Field& f, Index e) const {
+    shell_bt::NodeMat m;
+    const Index* n = conn_.data() + 4 * static_cast<std::size_t>(e);
+    for (int k = 0; k < 4; ++k) {
+      m(k, 0) = f.x[n[k]];
+      m(k, 1) = f.y[n[k]];
+      m(k, 2) = f.z[n[k]];
+    }
+    return m;
+  }
+
+  Id part_id_;
+  ShellMaterial mat_;
+  ShellSection sec_;
+  Real qhg_;
+  BulkViscosity bulk_;
+  shell_bt::ThicknessRule rule_;
+  std::vector<Index> conn_;
+  std::vector<Id> ids_;
+  std::vector<Real> area0_;
+  std::vector<Real> stress_;  // element-major, then point, then component
+  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_;
+  std::vector<Index> chunk_bad_;
+};
+
+/// Builder entry point (called by build_simulation): a Belytschko-Tsay shell block with
+/// `nip` Gauss points through the thickness (1..5), transverse shear factor `shear_factor`,
+/// viscous hourglass coefficient `hourglass_coefficient` and bulk viscosity `q_quadratic`,
+/// `q_linear` on the membrane dilatation. `connectivity`: 4 internal node indices per element.
+/// Throws InputError on a bad value.
+inline std::unique_ptr<ElementBlock> make_shell_block(Id part_id, Real density, Real youngs,
+                                                      Real poisson, Real thickness, int nip,
+                                                      Real shear_factor, Real hourglass_coefficient,
+                                                      Real q_quadratic, Real q_linear,
+                                                      std::vector<Index> connectivity,
+                                                      std::vector<Id> element_ids) {
+  ShellSection sec;
+  sec.thickness = thickness;
+  sec.nip = nip;
+  sec.rule = shell_bt::ThicknessRule::Kind::gauss;
+  sec.shear_factor = shear_factor;
+  return std::make_unique<ShellBlock>(part_id, ShellMaterial{density, youngs, poisson}, sec,
+                                      hourglass_coefficient, BulkViscosity{q_quadratic, q_linear},
+                                      std::move(connectivity), std::move(element_ids));
+}
+
+}  // namespace slideline

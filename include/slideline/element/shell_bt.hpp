@@ -1,0 +1,181 @@
+#pragma once
+/// Kernel of the 4-node Belytschko-Tsay shell (LS-DYNA element formulation 2).
+///
+/// References: T. Belytschko, J.I. Lin, C.S. Tsay, "Explicit algorithms for the nonlinear dynamics
+/// of shells", Comput. Methods Appl. Mech. Engrg. 42 (1984) 225-251; J.O. Hallquist, LS-DYNA
+/// Theory Manual, section "Belytschko-Tsay shell".
+///
+/// Everything here works on one element in its co-rotational frame: the normal e3 is the cross
+/// product of the diagonals, e1 is side 1-2 projected onto the plane, e2 = e3 x e1. The element is
+/// a flat Mindlin plate in that frame with one in-plane integration point (the centroid).
+#include <array>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "slideline/core/error.hpp"
+#include "slideline/core/types.hpp"
+
+namespace slideline::shell_bt {
+
+using NodeMat = Eigen::Matrix<Real, 4, 3>;  ///< one row per node: x, y, z
+using Row4 = Eigen::Matrix<Real, 1, 4>;
+
+/// The element in its co-rotational frame.
+struct LocalGeometry {
+  Mat3 e;          ///< columns e1, e2, e3 (global components)
+  Row4 xl, yl;     ///< in-plane local coordinates of the nodes (origin at the centroid)
+  Row4 b1, b2;     ///< dN_I/dx^, dN_I/dy^ at the centroid (1/length)
+  Row4 gamma;      ///< Flanagan-Belytschko hourglass vector (orthogonal to linear fields)
+  Real area = 0.0; ///< projected area (length^2); <= 0 for a degenerate or inverted element
+};
+
+/// Builds the co-rotational frame, the centroid B matrix and the hourglass vector of the quad
+/// with node coordinates `x` (4 x 3, global).
+inline LocalGeometry local_geometry(const NodeMat& x) {
+  LocalGeometry g;
+  const Vec3 r31 = (x.row(2) - x.row(0)).transpose();
+  const Vec3 r42 = (x.row(3) - x.row(1)).transpose();
+  Vec3 e3 = r31.cross(r42);
+  const Real n3 = e3.norm();
+  if (!(n3 > 0.0)) return g;  // area stays 0: the caller reports the element
+  e3 /= n3;
+  Vec3 s1 = (x.row(1) - x.row(0)).transpose();
+  s1 -= s1.dot(e3) * e3;
+  const Real n1 = s1.norm();
+  if (!(n1 > 0.0)) return g;
+  const Vec3 e1 = s1 / n1;
+  const Vec3 e2 = e3.cross(e1);
+  g.e.col(0) = e1;
+  g.e.col(1) = e2;
+  g.e.col(2) = e3;
+  const Eigen::Matrix<Real, 1, 3> c = 0.25 * x.colwise().sum();
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Matrix<Real, 1, 3> d = x.row(k) - c;
+    g.xl[k] = d.dot(e1.transpose());
+    g.yl[k] = d.dot(e2.transpose());
+  }
+  const Row4& X = g.xl;
+  const Row4& Y = g.yl;
+  g.area = 0.5 * ((X[2] - X[0]) * (Y[3] - Y[1]) + (X[1] - X[3]) * (Y[2] - Y[0]));
+  if (!(g.area > 0.0)) return g;
+  const Real inv2a = 0.5 / g.area;
+  g.b1 << (Y[1] - Y[3]), (Y[2] - Y[0]), (Y[3] - Y[1]), (Y[0] - Y[2]);
+  g.b2 << (X[3] - X[1]), (X[0] - X[2]), (X[1] - X[3]), (X[2] - X[0]);
+  g.b1 *= inv2a;
+  g.b2 *= inv2a;
+  const Row4 h(1.0, -1.0, 1.0, -1.0);
+  g.gamma = h - h.dot(X) * g.b1 - h.dot(Y) * g.b2;
+  return g;
+}
+
+/// Characteristic length A / max(longest side, longest diagonal) of the quad with nodes `x` and
+/// area `area`. LS-DYNA's default (A / longest side) can exceed the stable length of a single
+/// free element by ~10% (it leans on the 0.9 step scale factor); the diagonal (LS-DYNA ISDO = 1)
+/// bounds the highest membrane frequency of the one-point element from below.
+inline Real characteristic_length(const NodeMat& x, Real area) {
+  Real m = std::max((x.row(2) - x.row(0)).squaredNorm(), (x.row(3) - x.row(1)).squaredNorm());
+  for (int k = 0; k < 4; ++k) m = std::max(m, (x.row((k + 1) % 4) - x.row(k)).squaredNorm());
+  return area / std::sqrt(m);
+}
+
+/// Velocity strains at the centroid, in the local frame (1/time).
+struct StrainRates {
+  Eigen::Matrix<Real, 3, 1> membrane;   ///< d_xx, d_yy, 2 d_xy of the mid-surface
+  Eigen::Matrix<Real, 3, 1> curvature;  ///< kappa_xx, kappa_yy, 2 kappa_xy (1/(length time))
+  Eigen::Matrix<Real, 2, 1> shear;      ///< 2 d_yz, 2 d_xz (transverse)
+};
+
+/// Strain rates from the local nodal velocities `vl` and angular velocities `wl` (4 x 3 each,
+/// local components). The strain rate at height z is membrane + z * curvature (Mindlin kinematics:
+/// v_x(z) = v_x + z w_y, v_y(z) = v_y - z w_x).
+inline StrainRates strain_rates(const LocalGeometry& g, const NodeMat& vl, const NodeMat& wl) {
+  StrainRates s;
+  const auto vx = vl.col(0), vy = vl.col(1), vz = vl.col(2);
+  const auto wx = wl.col(0), wy = wl.col(1);
+  s.membrane[0] = g.b1.dot(vx);
+  s.membrane[1] = g.b2.dot(vy);
+  s.membrane[2] = g.b2.dot(vx) + g.b1.dot(vy);
+  s.curvature[0] = g.b1.dot(wy);
+  s.curvature[1] = -g.b2.dot(wx);
+  s.curvature[2] = g.b2.dot(wy) - g.b1.dot(wx);
+  s.shear[0] = g.b2.dot(vz) - 0.25 * wx.sum();
+  s.shear[1] = g.b1.dot(vz) + 0.25 * wy.sum();
+  return s;
+}
+
+/// Resultants per unit length of the element (from the stresses integrated through the thickness).
+struct Resultants {
+  Eigen::Matrix<Real, 3, 1> n = Eigen::Matrix<Real, 3, 1>::Zero();  ///< N_xx, N_yy, N_xy (force/length)
+  Eigen::Matrix<Real, 3, 1> m = Eigen::Matrix<Real, 3, 1>::Zero();  ///< M_xx, M_yy, M_xy = int z sigma dz
+  Eigen::Matrix<Real, 2, 1> q = Eigen::Matrix<Real, 2, 1>::Zero();  ///< Q_yz, Q_xz (force/length)
+};
+
+/// Nodal forces `f` and moments `m` (4 x 3, local components, residual form: what the element
+/// applies to its nodes) of the resultants `r` on the element `g`. They are minus the derivative of
+/// the internal power with respect to the nodal velocities (the transpose of strain_rates()).
+inline void resultant_forces(const LocalGeometry& g, const Resultants& r, NodeMat& f, NodeMat& m) {
+  const Real a = g.area;
+  f.col(0) = -a * (r.n[0] * g.b1 + r.n[2] * g.b2).transpose();
+  f.col(1) = -a * (r.n[1] * g.b2 + r.n[2] * g.b1).transpose();
+  f.col(2) = -a * (r.q[1] * g.b1 + r.q[0] * g.b2).transpose();
+  m.col(0) = a * (r.m[1] * g.b2 + r.m[2] * g.b1).transpose();
+  m.col(0).array() += 0.25 * a * r.q[0];
+  m.col(1) = -a * (r.m[0] * g.b1 + r.m[2] * g.b2).transpose();
+  m.col(1).array() -= 0.25 * a * r.q[1];
+  m.col(2).setZero();  // no drilling stiffness
+}
+
+/// Through-thickness integration rule on [-1, 1] (weights sum to 2).
+struct ThicknessRule {
+  enum class Kind : std::uint8_t {
+    gauss,   ///< Gauss-Legendre (LS-DYNA default): interior points only
+    lobatto  ///< Gauss-Lobatto: includes the two surfaces (2 points = trapezoid rule)
+  };
+  static constexpr int kMaxPoints = 5;
+  int n = 0;
+  std::array<Real, kMaxPoints> xi{};
+  std::array<Real, kMaxPoints> w{};
+
+  /// The rule with `nip` points (Gauss 1..5, Lobatto 2..5). Throws InputError otherwise.
+  static ThicknessRule make(int nip, Kind kind) {
+    ThicknessRule r;
+    r.n = nip;
+    if (kind == Kind::gauss) {
+      switch (nip) {
+        case 1: r.xi = {0.0}; r.w = {2.0}; return r;
+        case 2: { const Real a = 1.0 / std::sqrt(3.0); r.xi = {-a, a}; r.w = {1.0, 1.0}; return r; }
+        case 3: { const Real a = std::sqrt(0.6); r.xi = {-a, 0.0, a}; r.w = {5.0 / 9, 8.0 / 9, 5.0 / 9}; return r; }
+        case 4: {
+          const Real a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(1.2));
+          const Real b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(1.2));
+          const Real wa = (18.0 + std::sqrt(30.0)) / 36, wb = (18.0 - std::sqrt(30.0)) / 36;
+          r.xi = {-b, -a, a, b}; r.w = {wb, wa, wa, wb}; return r;
+        }
+        case 5: {
+          const Real a = std::sqrt(5.0 - 2.0 * std::sqrt(10.0 / 7)) / 3;
+          const Real b = std::sqrt(5.0 + 2.0 * std::sqrt(10.0 / 7)) / 3;
+          const Real wa = (322.0 + 13.0 * std::sqrt(70.0)) / 900;
+          const Real wb = (322.0 - 13.0 * std::sqrt(70.0)) / 900;
+          r.xi = {-b, -a, 0.0, a, b}; r.w = {wb, wa, 128.0 / 225, wa, wb}; return r;
+        }
+        default: break;
+      }
+    } else {
+      switch (nip) {
+        case 2: r.xi = {-1.0, 1.0}; r.w = {1.0, 1.0}; return r;
+        case 3: r.xi = {-1.0, 0.0, 1.0}; r.w = {1.0 / 3, 4.0 / 3, 1.0 / 3}; return r;
+        case 4: { const Real a = std::sqrt(0.2); r.xi = {-1.0, -a, a, 1.0}; r.w = {1.0 / 6, 5.0 / 6, 5.0 / 6, 1.0 / 6}; return r; }
+        case 5: { const Real a = std::sqrt(3.0 / 7); r.xi = {-1.0, -a, 0.0, a, 1.0}; r.w = {0.1, 49.0 / 90, 32.0 / 45, 49.0 / 90, 0.1}; return r; }
+        default: break;
+      }
+    }
+    throw InputError("shell: unsupported number of through-thickness integration points " +
+                     std::to_string(nip) + (kind == Kind::gauss ? " (Gauss: 1..5)" : " (Lobatto: 2..5)"));
+  }
+};
+
+}  // namespace slideline::shell_bt
