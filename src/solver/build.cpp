@@ -274,13 +274,10 @@ struct Builder {
   }
 
   void build_loads() {
-    std::vector<Index> loaded;
+    std::vector<Id> loaded;  // empty = all parts
     if (m.body_load_parts) {
-      loaded = parts_nodes(part_set(m.body_load_parts->psid, m.body_load_parts->src, "PSID"),
-                           m.body_load_parts->src);
-    } else {
-      loaded.resize(sim->nodes.size());
-      for (std::size_t i = 0; i < loaded.size(); ++i) loaded[i] = static_cast<Index>(i);
+      loaded = part_set(m.body_load_parts->psid, m.body_load_parts->src, "PSID");
+      parts_nodes(loaded, m.body_load_parts->src);  // checks that every part exists
     }
     for (const auto& lb : m.body_loads) {
       if (lb.lciddr != 0 || lb.cid != 0)
@@ -291,7 +288,7 @@ struct Builder {
       // LS-DYNA body loads are base accelerations: the inertial force opposes them.
       b.scale = -lb.sf;
       b.curve = curve(lb.lcid, lb.src, "LCID");
-      b.nodes = loaded;
+      b.parts = loaded;
       sim->body_loads.push_back(std::move(b));
     }
   }

@@ -64,9 +64,14 @@ void Simulation::initialize() {
   // Masses and corner slots.
   std::vector<std::pair<Index, Index>> force_pairs, moment_pairs;
   Index fbase = 0, mbase = 0;
+  std::vector<std::vector<Real>> block_mass;  // mass each block lumps to each node
+  std::vector<Real> before;
   for (auto& b : blocks) {
     b->set_slot_base(fbase, mbase);
+    before = nodes.mass;
     b->initialize(nodes);
+    block_mass.emplace_back(nodes.mass);
+    for (Index i = 0; i < n; ++i) block_mass.back()[i] -= before[i];
     const auto conn = b->connectivity();
     for (std::size_t k = 0; k < conn.size(); ++k) {
       if (conn[k] < 0 || conn[k] >= n)
@@ -83,6 +88,22 @@ void Simulation::initialize() {
   corners_.force_slots.build(n, force_pairs);
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
   for (auto& c : constraints) c->initialize(nodes);
+
+  // Body loads act on the mass of the loaded parts only.
+  for (auto& bl : body_loads) {
+    std::vector<Real> m(n, 0.0);
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      if (bl.parts.empty() ||
+          std::find(bl.parts.begin(), bl.parts.end(), blocks[k]->part_id()) != bl.parts.end())
+        for (Index i = 0; i < n; ++i) m[i] += block_mass[k][i];
+    bl.nodes.clear();
+    bl.mass.clear();
+    for (Index i = 0; i < n; ++i)
+      if (m[i] > 0.0) {
+        bl.nodes.push_back(i);
+        bl.mass.push_back(m[i]);
+      }
+  }
 
   // Supports.
   for (auto& f : fixed_) f.assign(n, 0);
@@ -166,7 +187,7 @@ void Simulation::compute_forces() {
   for (const auto& bl : body_loads) {
     const Real acc = bl.scale * bl.curve(t_);
     auto& f = nodes.f_ext[static_cast<int>(bl.axis)];
-    for (Index i : bl.nodes) f[i] += nodes.mass[i] * acc;
+    for (std::size_t k = 0; k < bl.nodes.size(); ++k) f[bl.nodes[k]] += bl.mass[k] * acc;
   }
   const auto t1 = std::chrono::steady_clock::now();
   for (auto& c : contacts) {

@@ -18,6 +18,9 @@ namespace slideline {
 
 /// Elements or nodes per chunk; a compile-time constant so that reductions are reproducible.
 inline constexpr Index kChunkSize = 512;
+/// Loops shorter than this run on the calling thread: a parallel region costs microseconds, more
+/// than a small loop, and far more when the cores are shared.
+inline constexpr Index kParallelThreshold = 4096;
 
 inline int max_threads() {
 #if defined(_OPENMP)
@@ -38,7 +41,7 @@ inline void set_threads(int n) {
 /// Calls body(i) for i in [0, n). Iterations must be independent.
 template <class Body>
 void parallel_for(Index n, Body&& body) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelThreshold)
   for (Index i = 0; i < n; ++i) body(i);
 }
 
@@ -49,7 +52,7 @@ inline Index chunk_count(Index n) { return (n + kChunkSize - 1) / kChunkSize; }
 template <class Body>
 void parallel_for_chunks(Index n, Body&& body) {
   const Index nchunks = chunk_count(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelThreshold)
   for (Index c = 0; c < nchunks; ++c) {
     const Index b = c * kChunkSize;
     body(b, std::min<Index>(n, b + kChunkSize), c);

@@ -1,6 +1,6 @@
 #pragma once
 /// Scalar, index and small fixed-size vector types used throughout slideline.
-#include <Eigen/Core>
+#include <Eigen/Dense>
 #include <cstdint>
 
 namespace slideline {

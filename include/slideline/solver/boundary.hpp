@@ -8,14 +8,18 @@
 
 namespace slideline {
 
-/// An acceleration field on a set of nodes: force on node i = mass_i * scale * curve(t) along axis.
-/// (Physical sign: a positive scale pushes in +axis. The deck reader turns LS-DYNA's base
-/// accelerations into this form.)
+/// An acceleration field on parts: force on node i = m_i * scale * curve(t) along axis, where m_i
+/// is the mass the loaded parts' elements lump to node i (a node shared with an unloaded part
+/// carries only the loaded part's share). Physical sign: a positive scale pushes in +axis; the
+/// builder turns LS-DYNA's base accelerations into this form.
 struct BodyLoad {
   Axis axis = Axis::x;
   Real scale = 0.0;
   LoadCurve curve = LoadCurve::constant(1.0);
-  std::vector<Index> nodes;  ///< nodes of the loaded parts (unique)
+  std::vector<Id> parts;     ///< loaded part ids; empty = every element block
+  // Filled by Simulation::initialize:
+  std::vector<Index> nodes;  ///< nodes of the loaded parts
+  std::vector<Real> mass;    ///< loaded mass at each of those nodes
 };
 
 /// Prescribed displacement of a node set along one axis: u(t) = scale * curve(t), or zero when
