@@ -17,8 +17,16 @@ std::vector<std::string> CsvWriter::column_names(const std::vector<HistoryChanne
     if (c.components == 1) {
       names.push_back(c.path);
     } else {
-      for (int k = 0; k < c.components; ++k)
-        names.push_back(c.path + (c.components == 3 ? std::string(axes[k]) : "_" + std::to_string(k)));
+      for (int k = 0; k < c.components; ++k) {
+        std::string name = c.path;
+        if (c.components == 3) {
+          name += axes[k];
+        } else {
+          name += '_';
+          name += std::to_string(k);
+        }
+        names.push_back(std::move(name));
+      }
     }
   }
   return names;

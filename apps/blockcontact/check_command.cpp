@@ -1,0 +1,81 @@
+// blockcontact check <deck>: read and validate a deck, report counts and every problem.
+#include <fmt/core.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "slideline/io/keyword_reader.hpp"
+
+namespace blockcontact {
+
+namespace {
+
+const char* contact_type_name(slideline::model::ContactType t) {
+  using slideline::model::ContactType;
+  switch (t) {
+    case ContactType::sliding_only: return "type 1 sliding only";
+    case ContactType::tied_surface: return "type 2 tied surface";
+    case ContactType::surface_to_surface: return "type 3 surface to surface";
+    case ContactType::nodes_to_surface: return "type 5 nodes to surface";
+    case ContactType::tied_nodes: return "type 6 tied nodes";
+    case ContactType::tied_shell_edge: return "type 7 tied shell edge";
+    case ContactType::tiebreak_nodes: return "type 8 tiebreak nodes";
+    case ContactType::tiebreak_surface: return "type 9 tiebreak surface";
+    case ContactType::one_way: return "type 10 one way";
+    case ContactType::automatic: return "type 12 automatic";
+  }
+  return "?";
+}
+
+const char* enforcement_name(slideline::model::Enforcement e) {
+  switch (e) {
+    case slideline::model::Enforcement::kinematic: return "kinematic";
+    case slideline::model::Enforcement::penalty: return "penalty";
+    case slideline::model::Enforcement::lagrange: return "Lagrange";
+  }
+  return "?";
+}
+
+int run_check(const std::string& deck) {
+  std::vector<slideline::Diagnostic> warnings;
+  const auto m = slideline::read_keyword_file(deck, &warnings);
+  for (const auto& w : warnings) fmt::print(stderr, "warning: {}\n", slideline::to_string(w));
+  fmt::print("{}\n", deck);
+  if (!m.title.empty()) fmt::print("  title     {}\n", m.title);
+  fmt::print("  nodes     {}\n", m.nodes.size());
+  fmt::print("  elements  {} ({} solid, {} shell)\n", m.solids.size() + m.shells.size(), m.solids.size(),
+             m.shells.size());
+  fmt::print("  parts     {} (sections {}, materials {})\n", m.parts.size(),
+             m.solid_sections.size() + m.shell_sections.size(), m.materials.size());
+  fmt::print("  sets      {} ({} node, {} segment, {} part)\n",
+             m.node_sets.size() + m.segment_sets.size() + m.part_sets.size(), m.node_sets.size(),
+             m.segment_sets.size(), m.part_sets.size());
+  fmt::print("  supports  {} SPC, {} prescribed motion\n", m.spcs.size(), m.prescribed_motions.size());
+  fmt::print("  loads     {} body load(s), {} curve(s)\n", m.body_loads.size(), m.curves.size());
+  fmt::print("  contacts  {}\n", m.contacts.size());
+  for (const auto& c : m.contacts)
+    fmt::print("    {:<28} {:<20} {} ({})\n", c.title.empty() ? fmt::format("#{}", c.cid) : c.title,
+               contact_type_name(c.type), enforcement_name(c.enforcement), c.keyword);
+  fmt::print("  end time  {:g}\n", m.termination.endtim);
+  const auto problems = slideline::check_references(m);
+  for (const auto& p : problems) fmt::print(stderr, "error: {}\n", slideline::to_string(p));
+  if (!problems.empty()) {
+    fmt::print(stderr, "{}: {} problem(s)\n", deck, problems.size());
+    return kBadInput;
+  }
+  fmt::print("ok ({} warning(s))\n", warnings.size());
+  return kOk;
+}
+
+}  // namespace
+
+void register_check(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("check", "Read and validate a keyword deck without running it");
+  auto deck = std::make_shared<std::string>();
+  cmd->add_option("deck", *deck, "Keyword deck (.k)")->required()->check(CLI::ExistingFile);
+  cmd->callback([deck, &exit_code] { exit_code = run_check(*deck); });
+}
+
+}  // namespace blockcontact

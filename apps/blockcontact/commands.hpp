@@ -1,0 +1,15 @@
+#pragma once
+// The blockcontact subcommands. Each registers itself on the CLI11 app and returns the process
+// exit code through `exit_code` when it runs; a new subcommand (list, generate, verify) is one
+// more register_* function and one call in main.cpp.
+#include <CLI/CLI.hpp>
+
+namespace blockcontact {
+
+/// Exit codes: 0 success, 1 other failure, 2 bad input, 3 not implemented, 4 instability.
+enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kNotImplemented = 3, kInstability = 4 };
+
+void register_run(CLI::App& app, int& exit_code);
+void register_check(CLI::App& app, int& exit_code);
+
+}  // namespace blockcontact

@@ -1,0 +1,143 @@
+// blockcontact run <deck>: read, build and run a deck, writing DIR/<stem>.h5 (+ .xdmf, + .csv).
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "slideline/core/error.hpp"
+#include "slideline/core/parallel.hpp"
+#include "slideline/io/csv_writer.hpp"
+#include "slideline/io/hdf5_writer.hpp"
+#include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/build.hpp"
+
+namespace blockcontact {
+namespace {
+
+struct RunOptions {
+  std::string deck;
+  std::string out_dir = ".";
+  bool csv = false;
+  int threads = 0;
+  double end_time = 0.0;
+};
+
+using Clock = std::chrono::steady_clock;
+
+/// The live progress line: silent for the first second, then rewritten in place (\r) on a
+/// terminal, or printed as a new line every few seconds when stdout is a file or pipe.
+class Progress {
+ public:
+  explicit Progress(double end_time) : end_time_(end_time), tty_(isatty(fileno(stdout)) != 0) {}
+
+  void update(const slideline::Simulation& sim) {
+    const auto now = Clock::now();
+    const double elapsed = seconds(start_, now);
+    if (elapsed < 1.0 || seconds(last_, now) < (tty_ ? 0.2 : 5.0)) return;
+    last_ = now;
+    const double t = sim.time();
+    const double eta = t > 0.0 ? elapsed * (end_time_ - t) / t : 0.0;
+    const std::string line =
+        fmt::format("cycle {:>9}  t {:.5e} / {:.4g}  dt {:.3e}  energy error {:+.2e}  ETA {:.0f} s", sim.cycle(), t,
+                    end_time_, sim.dt(), sim.energy().relative_balance_error(), eta);
+    if (tty_) {
+      fmt::print("\r{}", line);
+      dirty_ = true;
+    } else {
+      fmt::print("{}\n", line);
+    }
+    std::fflush(stdout);
+  }
+
+  /// Ends a \r line so that the next output starts on a fresh line.
+  void finish() {
+    if (dirty_) fmt::print("\n");
+    dirty_ = false;
+  }
+
+  double elapsed() const { return seconds(start_, Clock::now()); }
+
+ private:
+  static double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  }
+  double end_time_;
+  bool tty_;
+  bool dirty_ = false;
+  Clock::time_point start_ = Clock::now();
+  Clock::time_point last_ = Clock::time_point{};
+};
+
+int run_deck(const RunOptions& o) {
+  std::vector<slideline::Diagnostic> warnings;
+  const auto model = slideline::read_keyword_file(o.deck, &warnings);
+  for (const auto& w : warnings) fmt::print(stderr, "warning: {}\n", slideline::to_string(w));
+  const auto problems = slideline::check_references(model);
+  if (!problems.empty()) {
+    for (const auto& p : problems) fmt::print(stderr, "error: {}\n", slideline::to_string(p));
+    fmt::print(stderr, "{}: {} problem(s); nothing was run\n", o.deck, problems.size());
+    return kBadInput;
+  }
+
+  slideline::BuildOptions build;
+  build.end_time = o.end_time;
+  auto sim = slideline::build_simulation(model, build);
+  if (o.threads > 0) slideline::set_threads(o.threads);
+
+  std::filesystem::create_directories(o.out_dir);
+  const auto stem = std::filesystem::path(o.deck).stem().string();
+  const auto h5_path = (std::filesystem::path(o.out_dir) / (stem + ".h5")).string();
+  slideline::Hdf5Writer h5(h5_path);
+  std::unique_ptr<slideline::CsvWriter> csv;
+  std::vector<slideline::OutputSink*> sinks{&h5};
+  if (o.csv) {
+    csv = std::make_unique<slideline::CsvWriter>((std::filesystem::path(o.out_dir) / (stem + ".csv")).string());
+    sinks.push_back(csv.get());
+  }
+
+  fmt::print("{}: {} nodes, {} elements, {} contact interface(s), end time {:g}, {} thread(s)\n", o.deck,
+             model.nodes.size(), sim->element_count(), sim->contacts.size(), sim->controls.end_time,
+             slideline::max_threads());
+  std::fflush(stdout);
+  Progress progress(sim->controls.end_time);
+  try {
+    sim->run(sinks, [&](const slideline::Simulation& s) { progress.update(s); }, 100);
+  } catch (const slideline::InstabilityError& e) {
+    progress.finish();
+    fmt::print(stderr, "instability at t = {:g} (cycle {}): {}\n", e.time(), e.cycle(), e.what());
+    fmt::print(stderr, "output up to t = {:g} was kept in {}\n", e.time(), h5_path);
+    return kInstability;
+  }
+  progress.finish();
+
+  const double wall = progress.elapsed();
+  const double element_cycles = double(sim->element_count()) * double(std::max(1L, sim->cycle()));
+  fmt::print("done: {} cycles to t = {:g} in {:.2f} s ({:.1f} ns per element-cycle, contact {:.0f}% of the time)\n",
+             sim->cycle(), sim->time(), wall, element_cycles > 0 ? 1e9 * wall / element_cycles : 0.0,
+             wall > 0 ? 100.0 * sim->contact_seconds() / wall : 0.0);
+  fmt::print("energy balance error {:+.3e} (relative)\n", sim->energy().relative_balance_error());
+  fmt::print("output: {} and {}{}\n", h5_path, h5.xdmf_path(),
+             o.csv ? fmt::format(" and {}", (std::filesystem::path(o.out_dir) / (stem + ".csv")).string()) : "");
+  return kOk;
+}
+
+}  // namespace
+
+void register_run(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("run", "Run a keyword deck and write its histories and states");
+  auto o = std::make_shared<RunOptions>();
+  cmd->add_option("deck", o->deck, "Keyword deck (.k)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing)")->capture_default_str();
+  cmd->add_flag("--csv", o->csv, "Also write the histories as <stem>.csv");
+  cmd->add_option("--threads", o->threads, "OpenMP threads (0 = OpenMP default)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--end-time", o->end_time, "Override *CONTROL_TERMINATION ENDTIM (> 0)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([o, &exit_code] { exit_code = run_deck(*o); });
+}
+
+}  // namespace blockcontact
