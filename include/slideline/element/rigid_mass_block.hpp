@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "slideline/core/error.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/hex8.hpp"

@@ -15,6 +15,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/types.hpp"
