@@ -167,7 +167,7 @@ struct Hdf5Writer::Impl {
     for (std::size_t s = 0; s < state_times.size(); ++s) {
       // Deformed geometry x = x0 + u(s); the displacement of state s is a hyperslab of the states.
       std::ostringstream disp;
-      disp << "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nodes << " 3\">\n"
+      disp << "          <DataItem ItemType=\"HyperSlab\" Type=\"HyperSlab\" Dimensions=\"" << nodes << " 3\">\n"
            << "            <DataItem Dimensions=\"3 3\" Format=\"XML\">" << s << " 0 0 1 1 1 1 " << nodes
            << " 3</DataItem>\n"
            << "            <DataItem Dimensions=\"" << state_times.size() << " " << nodes
