@@ -364,10 +364,11 @@ void Simulation::write_outputs(const std::vector<OutputSink*>& sinks, bool force
   }
 }
 
-Real Simulation::next_output_time(Real interval, Real last) const {
-  if (last < 0.0) return 0.0;
-  // Output times are exact multiples of the interval.
-  const Real k = std::floor(last / interval + 0.5) + 1.0;
+Real Simulation::next_output_time(Real interval, Real after) const {
+  // Output times are exact multiples of the interval: the first one strictly after `after`
+  // (a time that already sits on a multiple, to round-off, counts as that multiple).
+  if (after < 0.0) return 0.0;
+  const Real k = std::floor(after / interval + 1e-9) + 1.0;
   return k * interval;
 }
 
@@ -384,9 +385,9 @@ bool Simulation::step() {
   if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
   Real target = end;
   if (controls.history_interval > 0.0)
-    target = std::min(target, next_output_time(controls.history_interval, std::max(last_history_, t_ - tol_t)));
+    target = std::min(target, next_output_time(controls.history_interval, t_));
   if (controls.state_interval > 0.0)
-    target = std::min(target, next_output_time(controls.state_interval, std::max(last_state_, t_ - tol_t)));
+    target = std::min(target, next_output_time(controls.state_interval, t_));
   bool lands = false;
   if (!at_end && target > t_ + tol_t && t_ + dt_new >= target - tol_t) {
     dt_new = target - t_;
