@@ -9,6 +9,8 @@
 #include "slideline/element/hex_block.hpp"
 #include "slideline/material/elastic.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
+#include "slideline/element/shell_block.hpp"
+#include "slideline/solver/rigid_body.hpp"
 
 namespace slideline {
 
@@ -109,10 +111,18 @@ struct Builder {
     }
   }
 
+  /// Elements of one part, in deck order.
+  struct PartElements {
+    std::vector<Index> hex_conn, quad_conn;
+    std::vector<Id> hex_ids, quad_ids;
+  };
+
   void build_elements() {
     const IdTable<model::Part> parts(m.parts, [](const model::Part& p) { return p.pid; }, "part");
     const IdTable<model::SectionSolid> ssec(
         m.solid_sections, [](const model::SectionSolid& s) { return s.secid; }, "*SECTION_SOLID");
+    const IdTable<model::SectionShell> shsec(
+        m.shell_sections, [](const model::SectionShell& s) { return s.secid; }, "*SECTION_SHELL");
     const IdTable<model::Hourglass> hgs(m.hourglasses, [](const model::Hourglass& h) { return h.hgid; },
                                         "*HOURGLASS");
     std::unordered_map<Id, const model::Material*> mats;
@@ -120,31 +130,51 @@ struct Builder {
       if (!mats.emplace(model::material_id(mat), &mat).second)
         throw InputError("duplicate material id " + std::to_string(model::material_id(mat)));
 
-    // Solids grouped by part, in deck order of first appearance.
+    // Elements grouped by part, parts in order of first appearance.
     std::vector<Id> order;
-    std::map<Id, std::pair<std::vector<Index>, std::vector<Id>>> by_part;
+    std::map<Id, PartElements> by_part;
+    auto group = [&](Id pid) -> PartElements& {
+      auto [it, fresh] = by_part.try_emplace(pid);
+      if (fresh) order.push_back(pid);
+      return it->second;
+    };
     for (const auto& e : m.solids) {
-      model::Source src{"*ELEMENT_SOLID " + std::to_string(e.id), 0};
-      auto& [conn, ids] = by_part[e.pid];
-      if (ids.empty()) order.push_back(e.pid);
-      for (Id nid : e.n) conn.push_back(node(nid, src, "a node field"));
-      ids.push_back(e.id);
+      const model::Source src{"*ELEMENT_SOLID " + std::to_string(e.id), 0};
+      auto& g = group(e.pid);
+      for (Id nid : e.n) g.hex_conn.push_back(node(nid, src, "a node field"));
+      g.hex_ids.push_back(e.id);
     }
+    for (const auto& e : m.shells) {
+      const model::Source src{"*ELEMENT_SHELL " + std::to_string(e.id), 0};
+      if (e.n[2] == e.n[3])
+        throw NotImplementedError("*ELEMENT_SHELL " + std::to_string(e.id) +
+                                  ": triangular shells (N3 = N4) are not implemented");
+      auto& g = group(e.pid);
+      for (Id nid : e.n) g.quad_conn.push_back(node(nid, src, "a node field"));
+      g.quad_ids.push_back(e.id);
+    }
+
     for (Id pid : order) {
-      auto& [conn, ids] = by_part[pid];
-      const model::Part& part =
-          parts.at(pid, {"*ELEMENT_SOLID " + std::to_string(ids.front()), 0}, "PID");
-      const auto& sec = ssec.at(part.secid, part.src, "SECID of *PART");
-      if (sec.elform != 1 && sec.elform != 0)
-        throw NotImplementedError(describe(sec.src) + ": *SECTION_SOLID ELFORM " +
-                                  std::to_string(sec.elform) +
-                                  " is not implemented (only 1, the one-point hexahedron)");
+      PartElements& g = by_part[pid];
+      const Id first_id = g.hex_ids.empty() ? g.quad_ids.front() : g.hex_ids.front();
+      const model::Part& part = parts.at(
+          pid, {(g.hex_ids.empty() ? "*ELEMENT_SHELL " : "*ELEMENT_SOLID ") + std::to_string(first_id), 0},
+          "PID");
+      if (!g.hex_ids.empty() && !g.quad_ids.empty())
+        throw InputError(describe(part.src) + ": part " + std::to_string(pid) +
+                         " has both solid and shell elements; one part takes one section");
       const auto mit = mats.find(part.mid);
       if (mit == mats.end())
         throw InputError(describe(part.src) + ": MID of *PART " + std::to_string(pid) +
                          " refers to material " + std::to_string(part.mid) +
                          ", which the deck does not define");
-      HexHourglass hg;
+      std::vector<Index> pn(g.hex_conn);
+      pn.insert(pn.end(), g.quad_conn.begin(), g.quad_conn.end());
+      std::sort(pn.begin(), pn.end());
+      pn.erase(std::unique(pn.begin(), pn.end()), pn.end());
+      part_nodes[pid] = pn;
+
+      // Hourglass and bulk viscosity: the part's *HOURGLASS, else the controls.
       BulkViscosity bv{m.bulk_viscosity.q1, m.bulk_viscosity.q2};
       int ihq = m.control_hourglass.ihq;
       Real qm = m.control_hourglass.qh;
@@ -154,6 +184,21 @@ struct Builder {
         qm = h.qm;
         bv = {h.q1, h.q2};
       }
+
+      if (const auto* rigid = std::get_if<model::MatRigid>(mit->second)) {
+        build_rigid_part(part, *rigid, g, pn, shsec);
+        continue;
+      }
+      if (!g.quad_ids.empty()) {
+        build_shell_part(part, *mit->second, g, shsec, ihq, qm, bv);
+        continue;
+      }
+      const auto& sec = ssec.at(part.secid, part.src, "SECID of *PART");
+      if (sec.elform != 1 && sec.elform != 0)
+        throw NotImplementedError(describe(sec.src) + ": *SECTION_SOLID ELFORM " +
+                                  std::to_string(sec.elform) +
+                                  " is not implemented (only 1, the one-point hexahedron)");
+      HexHourglass hg;
       if (ihq == 0 || ihq == 1 || ihq == 2 || ihq == 3) {
         hg.kind = HexHourglass::Kind::viscous;
       } else if (ihq == 10) {
@@ -164,33 +209,110 @@ struct Builder {
                                   " is not implemented (use 1-3 viscous or 10 physical stiffness)");
       }
       hg.coefficient = qm;
-      std::vector<Index> pn(conn);
-      std::sort(pn.begin(), pn.end());
-      pn.erase(std::unique(pn.begin(), pn.end()), pn.end());
-      part_nodes[pid] = pn;
       std::visit(
           [&](const auto& mat) {
             using T = std::decay_t<decltype(mat)>;
             if constexpr (std::is_same_v<T, model::MatMooneyRivlin>) {
               check_positive(mat.ro, "RO", mat.src);
               sim->blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
-                  pid, MooneyRivlin(mat.ro, mat.a, mat.b, mat.pr), hg, bv, std::move(conn),
-                  std::move(ids)));
+                  pid, MooneyRivlin(mat.ro, mat.a, mat.b, mat.pr), hg, bv, std::move(g.hex_conn),
+                  std::move(g.hex_ids)));
             } else if constexpr (std::is_same_v<T, model::MatElastic>) {
               check_positive(mat.ro, "RO", mat.src);
               check_positive(mat.e, "E", mat.src);
               sim->blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
-                  pid, ElasticSolid(mat.ro, mat.e, mat.pr), hg, bv, std::move(conn), std::move(ids)));
-            } else {
-              throw NotImplementedError(describe(mat.src) + ": *MAT_RIGID (part " +
-                                        std::to_string(pid) + ") is not implemented yet");
+                  pid, ElasticSolid(mat.ro, mat.e, mat.pr), hg, bv, std::move(g.hex_conn),
+                  std::move(g.hex_ids)));
             }
           },
           *mit->second);
     }
-    if (!m.shells.empty())
-      throw NotImplementedError("*ELEMENT_SHELL (element " + std::to_string(m.shells.front().id) +
-                                "): shell elements are not implemented yet");
+  }
+
+  template <class Sections>
+  const model::SectionShell& shell_section(const model::Part& part, const Sections& shsec) const {
+    const auto& sec = shsec.at(part.secid, part.src, "SECID of *PART");
+    if (sec.elform != 2 && sec.elform != 0)
+      throw NotImplementedError(describe(sec.src) + ": *SECTION_SHELL ELFORM " +
+                                std::to_string(sec.elform) +
+                                " is not implemented (only 2, Belytschko-Tsay)");
+    if (!(sec.t[0] > 0.0))
+      throw InputError(describe(sec.src) + ": field T1 of *SECTION_SHELL must be positive (got " +
+                       std::to_string(sec.t[0]) + ")");
+    for (int k = 1; k < 4; ++k)
+      if (sec.t[k] != 0.0 && sec.t[k] != sec.t[0])
+        throw NotImplementedError(describe(sec.src) +
+                                  ": varying nodal shell thicknesses (T2-T4 != T1) are not implemented");
+    return sec;
+  }
+
+  template <class Sections>
+  void build_shell_part(const model::Part& part, const model::Material& material, PartElements& g,
+                        const Sections& shsec, int ihq, Real qm, const BulkViscosity& bv) {
+    const auto& sec = shell_section(part, shsec);
+    const auto* el = std::get_if<model::MatElastic>(&material);
+    if (el == nullptr)
+      throw NotImplementedError(describe(part.src) + ": part " + std::to_string(part.pid) +
+                                " combines shells with a material other than *MAT_ELASTIC or "
+                                "*MAT_RIGID, which is not implemented");
+    if (ihq < 0 || ihq > 3)
+      throw NotImplementedError(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) +
+                                " for shells of part " + std::to_string(part.pid) +
+                                " is not implemented (shells take the viscous types 1-3)");
+    check_positive(el->ro, "RO", el->src);
+    check_positive(el->e, "E", el->src);
+    const int nip = sec.nip == 0 ? 2 : sec.nip;
+    if (nip < 1 || nip > 5)
+      throw InputError(describe(sec.src) + ": field NIP of *SECTION_SHELL must be 1 to 5 (got " +
+                       std::to_string(sec.nip) + ")");
+    const Real shrf = sec.shrf == 0.0 ? 1.0 : sec.shrf;
+    sim->blocks.push_back(make_shell_block(part.pid, el->ro, el->e, el->pr, sec.t[0], nip, shrf, qm,
+                                           bv.quadratic, bv.linear, std::move(g.quad_conn),
+                                           std::move(g.quad_ids)));
+  }
+
+  /// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x,
+  /// 7 all.
+  static std::array<int, 3> constraint_code(int code, const model::Source& src, const char* field) {
+    switch (code) {
+      case 0: return {0, 0, 0};
+      case 1: return {1, 0, 0};
+      case 2: return {0, 1, 0};
+      case 3: return {0, 0, 1};
+      case 4: return {1, 1, 0};
+      case 5: return {0, 1, 1};
+      case 6: return {1, 0, 1};
+      case 7: return {1, 1, 1};
+      default:
+        throw InputError(describe(src) + ": field " + field + " of *MAT_RIGID must be 0 to 7 (got " +
+                         std::to_string(code) + ")");
+    }
+  }
+
+  template <class Sections>
+  void build_rigid_part(const model::Part& part, const model::MatRigid& mat, PartElements& g,
+                        const std::vector<Index>& nodes, const Sections& shsec) {
+    check_positive(mat.ro, "RO", mat.src);
+    std::array<int, 6> fixed{0, 0, 0, 0, 0, 0};
+    if (mat.cmo == 1.0) {
+      const auto t = constraint_code(mat.con1, mat.src, "CON1");
+      const auto r = constraint_code(mat.con2, mat.src, "CON2");
+      for (int k = 0; k < 3; ++k) {
+        fixed[k] = t[k];
+        fixed[3 + k] = r[k];
+      }
+    } else if (mat.cmo != 0.0) {
+      throw NotImplementedError(describe(mat.src) +
+                                ": *MAT_RIGID CMO = -1 (constraints in a local system) is not "
+                                "implemented");
+    }
+    Real thickness = 0.0;
+    if (!g.quad_ids.empty()) thickness = shell_section(part, shsec).t[0];
+    std::vector<Id> ids = g.hex_ids;
+    ids.insert(ids.end(), g.quad_ids.begin(), g.quad_ids.end());
+    sim->blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, std::move(g.hex_conn),
+                                                std::move(g.quad_conn), thickness, std::move(ids)));
+    sim->constraints.push_back(make_rigid_body(part.pid, nodes, fixed));
   }
 
   static void check_positive(Real v, const char* field, const model::Source& src) {

@@ -1,0 +1,114 @@
+// build_simulation: deck semantics -> runtime objects, for solids, shells and rigid parts.
+#include <gtest/gtest.h>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/output_sink.hpp"
+#include "slideline/solver/build.hpp"
+
+using namespace slideline;
+
+namespace {
+
+/// A 3 x 3 shell plate (1 x 1 in x-z at y = 0, part 1, t = 0.1, rho = 0.1) and, optionally, a
+/// unit hexahedron above it (part 2) with material `hex_mid`.
+model::Model plate_model(bool with_hex, Id hex_mid = 2) {
+  model::Model m;
+  Id nid = 1;
+  for (int k = 0; k <= 3; ++k)
+    for (int i = 0; i <= 3; ++i) m.nodes.push_back({nid++, Vec3(i / 3.0, 0.0, k / 3.0), 0, 0});
+  Id eid = 1;
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      const Id a = 1 + i + 4 * k;
+      m.shells.push_back({eid++, 1, {a, a + 1, a + 5, a + 4}});
+    }
+  m.parts.push_back({1, "plate", 1, 1, 0, 0, {}});
+  m.shell_sections.push_back({1, 2, 5.0 / 6.0, 5, 1.0, {0.1, 0.1, 0.1, 0.1}, {}});
+  m.materials.push_back(model::MatElastic{1, 0.1, 1000.0, 0.1, "", {}});
+  if (with_hex) {
+    const Id b = nid;
+    const Vec3 c[8] = {{0, 2, 0}, {1, 2, 0}, {1, 3, 0}, {0, 3, 0}, {0, 2, 1}, {1, 2, 1}, {1, 3, 1}, {0, 3, 1}};
+    for (const auto& x : c) m.nodes.push_back({nid++, x, 0, 0});
+    m.solids.push_back({100, 2, {b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6, b + 7}});
+    m.parts.push_back({2, "block", 2, hex_mid, 0, 0, {}});
+    m.solid_sections.push_back({2, 1, {}});
+  }
+  m.curves.push_back({1, "one", 0, 1.0, 1.0, 0.0, 0.0, 0, {{0.0, 1.0}, {10.0, 1.0}}, {}});
+  m.termination.endtim = 0.01;
+  return m;
+}
+
+}  // namespace
+
+TEST(Build, ShellPlateFallsFreelyUnderBaseAcceleration) {
+  model::Model m = plate_model(false);
+  m.body_loads.push_back({Axis::y, 1, 9.81, 0, 0, 0, 0, 0, {}});  // LS-DYNA: gravity along -y
+  m.database.history_nodes = {6};
+  auto sim = build_simulation(m);
+  ASSERT_EQ(sim->blocks.size(), 1u);
+  EXPECT_EQ(sim->blocks.front()->kind().find("shell") != std::string::npos, true) << sim->blocks.front()->kind();
+  History h;
+  sim->run({&h});
+  Real mass = 0.0;
+  for (Real mm : sim->nodes.mass) mass += mm;
+  EXPECT_NEAR(mass, 0.1 * 1.0 * 0.1, 1e-15);
+  const Real t = h.time().back();
+  EXPECT_NEAR(h.value("nodes/6/displacement", h.records() - 1, 1), -0.5 * 9.81 * t * t, 1e-9);
+}
+
+TEST(Build, RigidPartWithFixedTranslationsStaysPutUnderLoad) {
+  model::Model m = plate_model(true);
+  m.materials.push_back(model::MatRigid{2, 0.01, 1000.0, 0.3, 1.0, 7, 7, "", {}});
+  m.body_loads.push_back({Axis::x, 1, 100.0, 0, 0, 0, 0, 0, {}});
+  m.database.history_nodes = {17};
+  auto sim = build_simulation(m);
+  ASSERT_EQ(sim->constraints.size(), 1u);
+  History h;
+  sim->run({&h});
+  EXPECT_LT(std::abs(h.value("nodes/17/displacement", h.records() - 1, 0)), 1e-14);
+  // The elastic plate still moves under the same load.
+  sim = build_simulation(plate_model(false));
+  EXPECT_EQ(sim->constraints.size(), 0u);
+}
+
+TEST(Build, ErrorsNameTheCardAndField) {
+  {
+    model::Model m = plate_model(true, 99);  // the block's part refers to a missing material
+    try {
+      build_simulation(m);
+      FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("material 99"), std::string::npos) << e.what();
+    }
+  }
+  {
+    model::Model m = plate_model(true);
+    m.materials.push_back(model::MatRigid{2, 0.01, 1000.0, 0.3, 1.0, 9, 0, "", {"deck.k", 42}});
+    try {
+      build_simulation(m);
+      FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("deck.k:42"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("CON1"), std::string::npos) << e.what();
+    }
+  }
+  {
+    model::Model m = plate_model(false);
+    m.shells.front().n[3] = m.shells.front().n[2];
+    EXPECT_THROW(build_simulation(m), NotImplementedError);
+  }
+  {
+    model::Model m = plate_model(false);
+    model::Contact c;
+    c.keyword = "*CONTACT_SURFACE_TO_SURFACE";
+    c.src = {"deck.k", 7};
+    m.contacts.push_back(c);
+    try {
+      build_simulation(m);
+      FAIL() << "expected NotImplementedError";
+    } catch (const NotImplementedError& e) {
+      EXPECT_NE(std::string(e.what()).find("deck.k:7"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("*CONTACT_SURFACE_TO_SURFACE"), std::string::npos);
+    }
+  }
+}
