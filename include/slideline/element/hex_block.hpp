@@ -80,55 +80,91 @@ class HexBlock final : public ElementBlock {
     const Real rho0 = mat_.density();
     const Real e_mod = mat_.youngs_modulus();
     const Index base = force_slot_base();
+    const Index* conn = conn_.data();
     parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
+      using hex8::Col8;
       Real dtmin = std::numeric_limits<Real>::max();
       Real p_hg = 0.0, p_visc = 0.0;
       Index bad = -1;
       for (Index e = b; e < end; ++e) {
-        const hex8::NodeMat X = gather(nodes.x, e);
-        const hex8::NodeMat Vn = gather(nodes.v, e);
-        const hex8::NodeMat X0 = gather(nodes.x0, e);
-        const hex8::NodeMat dvdx = hex8::volume_gradient(X);
-        const Real vol = hex8::volume(X, dvdx);
+        const Index* n = conn + 8 * static_cast<std::size_t>(e);
+        Col8 x, y, z, vx, vy, vz, x0, y0, z0;
+        for (int k = 0; k < 8; ++k) {
+          const Index i = n[k];
+          x[k] = nodes.x.x[i];
+          y[k] = nodes.x.y[i];
+          z[k] = nodes.x.z[i];
+          vx[k] = nodes.v.x[i];
+          vy[k] = nodes.v.y[i];
+          vz[k] = nodes.v.z[i];
+          x0[k] = nodes.x0.x[i];
+          y0[k] = nodes.x0.y[i];
+          z0[k] = nodes.x0.z[i];
+        }
+        Col8 bx, by, bz;
+        hex8::volume_gradient(x, y, z, bx, by, bz);
+        const Real vol = (x * bx + y * by + z * bz).sum() / 3.0;
         if (!(vol > 0.0)) {
           if (bad < 0) bad = e;
           continue;
         }
-        const hex8::NodeMat B = dvdx / vol;
-        const Mat3 finv = X0.transpose() * B;  // dX/dx
+        const Real inv_vol = 1.0 / vol;
+        bx *= inv_vol;
+        by *= inv_vol;
+        bz *= inv_vol;
+        // dX/dx = sum_I X_I (x) B_I, exact for linear fields; F is its inverse.
+        Mat3 finv;
+        finv << (x0 * bx).sum(), (x0 * by).sum(), (x0 * bz).sum(),  //
+            (y0 * bx).sum(), (y0 * by).sum(), (y0 * bz).sum(),      //
+            (z0 * bx).sum(), (z0 * by).sum(), (z0 * bz).sum();
         const Mat3 F = finv.inverse();
         Mat3 sigma = mat_.cauchy_stress(F);
-        const Real trd = (Vn.array() * B.array()).sum();
-        const Real len = vol / hex8::max_face_area(X);
-        Real q = 0.0, qdt = 0.0;
+        const Real trd = (vx * bx + vy * by + vz * bz).sum();
+        const Real len = vol / hex8::max_face_area(x, y, z);
+        Real qdt = 0.0;
         if (trd < 0.0) {
-          const Real rho = rho0 * volume0_[e] / vol;
-          q = rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
+          const Real rho = rho0 * volume0_[e] * inv_vol;
+          const Real q = rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
           sigma.diagonal().array() -= q;
           p_visc += -q * trd * vol;
           qdt = bulk_.linear * c + bulk_.quadratic * len * (-trd);
         }
-        hex8::NodeMat f = -vol * (B * sigma);
-        // Hourglass.
-        const hex8::HgMat gam = hex8::hourglass_shape(X, B);
-        hex8::NodeMat fh;
-        if (hg_.kind == HexHourglass::Kind::viscous) {
-          const Real kv = hg_.coefficient * rho0 * volume0_[e] / vol * c * std::cbrt(vol * vol) / 4.0;
-          fh = -kv * (gam.transpose() * (gam * Vn));
-        } else {
-          const Real ks = hg_.coefficient * e_mod * vol * B.squaredNorm() / 72.0;
-          fh = -ks * (gam.transpose() * (gam * (X - X0)));
+        // Stress divergence: f_I = -V sigma B_I (residual form).
+        Col8 fx = -vol * (bx * sigma(0, 0) + by * sigma(0, 1) + bz * sigma(0, 2));
+        Col8 fy = -vol * (bx * sigma(1, 0) + by * sigma(1, 1) + bz * sigma(1, 2));
+        Col8 fz = -vol * (bx * sigma(2, 0) + by * sigma(2, 1) + bz * sigma(2, 2));
+        // Hourglass: gamma_a = Gamma_a - (Gamma_a . x) B, then f = -k sum_a gamma_a (gamma_a . w)
+        // with w the velocities (viscous) or the total displacements (physical stiffness).
+        const bool viscous = hg_.kind == HexHourglass::Kind::viscous;
+        const Col8 wx = viscous ? vx : Col8(x - x0);
+        const Col8 wy = viscous ? vy : Col8(y - y0);
+        const Col8 wz = viscous ? vz : Col8(z - z0);
+        Col8 hx = Col8::Zero(), hy = Col8::Zero(), hz = Col8::Zero();
+        for (int a = 0; a < 4; ++a) {
+          const Col8 g = hex8::hourglass_base().row(a).transpose().array();
+          const Col8 gam = g - ((g * x).sum() * bx + (g * y).sum() * by + (g * z).sum() * bz);
+          hx += gam * (gam * wx).sum();
+          hy += gam * (gam * wy).sum();
+          hz += gam * (gam * wz).sum();
         }
-        p_hg += -(fh.array() * Vn.array()).sum();
-        f += fh;
-        if (!f.allFinite() && bad < 0) bad = e;
-        const Real dte = len / (qdt + std::sqrt(qdt * qdt + c * c));
-        dtmin = std::min(dtmin, dte);
+        const Real k = viscous ? hg_.coefficient * rho0 * volume0_[e] * inv_vol * c *
+                                     std::cbrt(vol * vol) / 4.0
+                               : hg_.coefficient * e_mod * vol *
+                                     (bx.square() + by.square() + bz.square()).sum() / 72.0;
+        hx *= -k;
+        hy *= -k;
+        hz *= -k;
+        p_hg += -(hx * vx + hy * vy + hz * vz).sum();
+        fx += hx;
+        fy += hy;
+        fz += hz;
+        if (!std::isfinite(fx.sum() + fy.sum() + fz.sum()) && bad < 0) bad = e;
+        dtmin = std::min(dtmin, len / (qdt + std::sqrt(qdt * qdt + c * c)));
         const Index s0 = base + 8 * e;
-        for (int k = 0; k < 8; ++k) {
-          corners.force.x[s0 + k] = f(k, 0);
-          corners.force.y[s0 + k] = f(k, 1);
-          corners.force.z[s0 + k] = f(k, 2);
+        for (int kk = 0; kk < 8; ++kk) {
+          corners.force.x[s0 + kk] = fx[kk];
+          corners.force.y[s0 + kk] = fy[kk];
+          corners.force.z[s0 + kk] = fz[kk];
         }
       }
       chunk_dt_[chunk] = dtmin;

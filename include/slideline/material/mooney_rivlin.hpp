@@ -40,7 +40,8 @@ class MooneyRivlin {
     const Real w1 = a_;
     const Real w2 = b_;
     const Real w3 = -2.0 * c_ / (i3 * i3 * i3) + 2.0 * d_ * (i3 - 1.0);
-    Mat3 s = (2.0 / J) * ((w1 + i1 * w2) * bt - w2 * bt * bt);
+    Mat3 s = (2.0 / J) * (w1 + i1 * w2) * bt;
+    if (w2 != 0.0) s -= (2.0 / J) * w2 * bt * bt;  // B = 0 (the spec's rubber) skips a product
     s.diagonal().array() += 2.0 * J * w3;
     return s;
   }
