@@ -293,6 +293,10 @@ struct Builder {
   void build_rigid_part(const model::Part& part, const model::MatRigid& mat, PartElements& g,
                         const std::vector<Index>& nodes, const Sections& shsec) {
     check_positive(mat.ro, "RO", mat.src);
+    check_positive(mat.e, "E", mat.src);  // sets the part's time step, as in LS-DYNA
+    if (!(mat.pr > -1.0 && mat.pr < 0.5))
+      throw InputError(describe(mat.src) + ": field PR of *MAT_RIGID must be in (-1, 0.5) (got " +
+                       std::to_string(mat.pr) + ")");
     std::array<int, 6> fixed{0, 0, 0, 0, 0, 0};
     if (mat.cmo == 1.0) {
       const auto t = constraint_code(mat.con1, mat.src, "CON1");
@@ -310,7 +314,7 @@ struct Builder {
     if (!g.quad_ids.empty()) thickness = shell_section(part, shsec).t[0];
     std::vector<Id> ids = g.hex_ids;
     ids.insert(ids.end(), g.quad_ids.begin(), g.quad_ids.end());
-    sim->blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, std::move(g.hex_conn),
+    sim->blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, mat.e, mat.pr, std::move(g.hex_conn),
                                                 std::move(g.quad_conn), thickness, std::move(ids)));
     sim->constraints.push_back(make_rigid_body(part.pid, nodes, fixed));
   }

@@ -179,6 +179,21 @@ void RigidBody::after_positions(NodalFields& nodes, Real t) {
   reset_nodes(nodes);
 }
 
+void RigidBody::append_output_names(std::vector<std::string>& names) const {
+  if (std::none_of(fixed_.begin(), fixed_.end(), [](int f) { return f != 0; })) return;
+  const std::string base = "supports/rigid_" + std::to_string(part_id_);
+  names.push_back(base + "/reaction");
+  names.push_back(base + "/reaction_moment");
+}
+
+void RigidBody::write_output_values(std::span<Real> out) const {
+  if (out.size() < 6) return;  // a free body has no channels
+  for (int c = 0; c < 3; ++c) {
+    out[c] = reaction_f_[c];
+    out[3 + c] = reaction_m_[c];
+  }
+}
+
 void RigidBody::reset_nodes(NodalFields& nodes) const {
   const Mat3 r = q_.toRotationMatrix();
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
@@ -195,12 +210,14 @@ std::unique_ptr<NodalConstraint> make_rigid_body(Id part_id, std::vector<Index> 
   return std::make_unique<RigidBody>(part_id, std::move(nodes), fixed_dofs);
 }
 
-std::unique_ptr<ElementBlock> make_rigid_mass_block(Id part_id, Real density,
+std::unique_ptr<ElementBlock> make_rigid_mass_block(Id part_id, Real density, Real youngs,
+                                                    Real poisson,
                                                     std::vector<Index> hex_connectivity,
                                                     std::vector<Index> quad_connectivity,
                                                     Real shell_thickness,
                                                     std::vector<Id> element_ids) {
-  return std::make_unique<RigidMassBlock>(part_id, density, std::move(hex_connectivity),
+  return std::make_unique<RigidMassBlock>(part_id, density, youngs, poisson,
+                                          std::move(hex_connectivity),
                                           std::move(quad_connectivity), shell_thickness,
                                           std::move(element_ids));
 }

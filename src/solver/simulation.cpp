@@ -12,8 +12,8 @@ namespace slideline {
 
 namespace {
 // Energy partial sums per chunk: kinetic, then (a, b) halves of the trapezoid for internal,
-// external, damping and support work (see compute_reactions_and_velocities).
-constexpr int kEnergyTerms = 9;
+// external, damping, support and constraint work (see compute_reactions_and_velocities).
+constexpr int kEnergyTerms = 11;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -21,7 +21,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 Real EnergyReport::relative_balance_error() const {
-  const Real scale = std::max({std::abs(external) + std::abs(support) + kinetic0, kinetic,
+  const Real scale = std::max({std::abs(external) + std::abs(support) + std::abs(constraint) + kinetic0,
+                               kinetic,
                                std::abs(internal) + hourglass + bulk_viscosity + damping,
                                std::numeric_limits<Real>::min()});
   return balance_error() / scale;
@@ -88,6 +89,14 @@ void Simulation::initialize() {
   corners_.force_slots.build(n, force_pairs);
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
   for (auto& c : constraints) c->initialize(nodes);
+  constrained_.assign(n, 0);
+  constrained_nodes_.clear();
+  for (const auto& c : constraints)
+    for (Index i : c->constrained_nodes()) {
+      if (i < 0 || i >= n) throw InputError("a nodal constraint refers to a node index out of range");
+      if (!constrained_[i]) constrained_nodes_.push_back(i);
+      constrained_[i] = 1;
+    }
 
   // Body loads act on the mass of the loaded parts only.
   for (auto& bl : body_loads) {
@@ -128,12 +137,20 @@ void Simulation::initialize() {
     channels_.push_back({"interfaces/" + c->name() + "/master_force", 3});
   }
   for (const auto& g : supports) channels_.push_back({"supports/" + g.name + "/reaction", 3});
+  constraint_outputs_.clear();
+  std::vector<std::string> names;
+  for (const auto& c : constraints) {
+    names.clear();
+    c->append_output_names(names);
+    for (auto& s : names) channels_.push_back({std::move(s), 3});
+    constraint_outputs_.push_back(3 * names.size());
+  }
   for (Index i : history_nodes) {
     if (i < 0 || i >= n) throw InputError("history node index out of range");
     channels_.push_back({"nodes/" + std::to_string(nodes.ids[i]) + "/displacement", 3});
   }
   for (const char* e : {"kinetic", "internal", "hourglass", "bulk_viscosity", "damping", "external",
-                        "support", "balance_error"})
+                        "support", "constraint", "balance_error"})
     channels_.push_back({std::string("energy/") + e, 1});
   std::size_t width = 0;
   for (const auto& c : channels_) width += c.components;
@@ -146,6 +163,7 @@ void Simulation::initialize() {
   dt_ = 0.0;
   cycle_ = 0;
   energy_ = EnergyReport{};
+  stress_work_ = external_work_ = damping_work_ = support_work_ = constraint_work_ = 0.0;
   compute_forces();
   if (!(dt_crit_ > 0.0) || !std::isfinite(dt_crit_))
     throw InputError("simulation: no stable time step (is there at least one element?)");
@@ -235,8 +253,12 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
 
   const Index n = static_cast<Index>(nodes.size());
   const Real dt_old = dt_;
+  // The kinetic energy at t^n is that of the mean of the half-step velocities, except at t = 0:
+  // there the initial velocity is v(0) itself (the first step is a half step from it), and the
+  // mean would put an O(dt) offset into the balance that never goes away.
+  const bool first = cycle_ == 0;
   parallel_for_chunks(n, [&](Index b, Index end, Index chunk) {
-    Real e[kEnergyTerms] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    Real e[kEnergyTerms] = {};
     for (Index i = b; i < end; ++i) {
       const Real m = nodes.mass[i];
       if (m <= 0.0) continue;
@@ -258,7 +280,11 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
         const Real fe = nodes.f_ext[c][i];
         const Real fd = fixed_[c][i] ? 0.0 : -al * m * vbar;
         const Real fs = fixed_[c][i] ? m * (vnew - vold) / dt_avg - fi - fe : 0.0;
-        e[0] += 0.5 * m * vbar * vbar;
+        // A constrained node's acceleration is the constraint's, not (fi + fe) / m: the
+        // difference is the force the constraint applies (a support on the same component wins).
+        const Real fc = constrained_[i] && !fixed_[c][i] ? m * (vnew - vold) / dt_avg - fi - fe - fd : 0.0;
+        const Real vk = first ? vold : vbar;
+        e[0] += 0.5 * m * vk * vk;
         e[1] -= fi * dprev;
         e[2] -= fi * dnext;
         e[3] += fe * dprev;
@@ -267,6 +293,8 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
         e[6] -= fd * dnext;
         e[7] += fs * dprev;
         e[8] += fs * dnext;
+        e[9] += fc * dprev;
+        e[10] += fc * dnext;
       }
       if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0) {
         const Real inertia = nodes.rot_inertia[i];
@@ -280,19 +308,25 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
           const Real wbar = 0.5 * (wold + wnew);
           const Real dprev = 0.5 * dt_old * wold;
           const Real dnext = 0.5 * dt_new * wnew;
-          e[0] += 0.5 * inertia * wbar * wbar;
+          const Real wk = first ? wold : wbar;
+          e[0] += 0.5 * inertia * wk * wk;
           e[1] -= nodes.m_int[c][i] * dprev;
           e[2] -= nodes.m_int[c][i] * dnext;
           e[3] += nodes.m_ext[c][i] * dprev;
           e[4] += nodes.m_ext[c][i] * dnext;
           e[5] += al * inertia * wbar * dprev;
           e[6] += al * inertia * wbar * dnext;
+          if (constrained_[i] && !fixed_rot_[c][i]) {
+            const Real mc = inertia * (wnew - wold) / dt_avg - mom + al * inertia * wbar;
+            e[9] += mc * dprev;
+            e[10] += mc * dnext;
+          }
         }
       }
     }
     std::copy(e, e + kEnergyTerms, chunk_e_.begin() + static_cast<std::ptrdiff_t>(chunk) * kEnergyTerms);
   });
-  Real e[kEnergyTerms] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  Real e[kEnergyTerms] = {};
   const Index nchunks = chunk_count(n);
   for (Index c = 0; c < nchunks; ++c)
     for (int k = 0; k < kEnergyTerms; ++k) e[k] += chunk_e_[static_cast<std::size_t>(c) * kEnergyTerms + k];
@@ -304,11 +338,13 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
   energy_.external = external_work_ + e[3];
   energy_.damping = damping_work_ + e[5];
   energy_.support = support_work_ + e[7];
+  energy_.constraint = constraint_work_ + e[9];
   energy_.internal = stress_work_ - energy_.hourglass - energy_.bulk_viscosity;
   stress_work_ += e[2];
   external_work_ += e[3] + e[4];
   damping_work_ += e[5] + e[6];
   support_work_ += e[7] + e[8];
+  constraint_work_ += e[9] + e[10];
 }
 
 void Simulation::update_positions(Real dt_new) {
@@ -318,6 +354,16 @@ void Simulation::update_positions(Real dt_new) {
     nodes.x.y[i] += dt_new * nodes.v.y[i];
     nodes.x.z[i] += dt_new * nodes.v.z[i];
   });
+}
+
+Real Simulation::constrained_kinetic_energy() const {
+  // Half-step velocities of the constrained nodes (serial: a fixed summation order).
+  Real k = 0.0;
+  for (Index i : constrained_nodes_) {
+    k += 0.5 * nodes.mass[i] * nodes.v.get(i).squaredNorm();
+    if (nodes.has_rotation[i]) k += 0.5 * nodes.rot_inertia[i] * nodes.omega.get(i).squaredNorm();
+  }
+  return k;
 }
 
 void Simulation::collect_history(std::vector<Real>& values) const {
@@ -332,10 +378,14 @@ void Simulation::collect_history(std::vector<Real>& values) const {
     put3(c->master_force());
   }
   for (const auto& g : supports) put3(g.reaction);
+  for (std::size_t c = 0; c < constraints.size(); ++c) {
+    constraints[c]->write_output_values(std::span<Real>(values).subspan(k, constraint_outputs_[c]));
+    k += constraint_outputs_[c];
+  }
   for (Index i : history_nodes) put3(nodes.displacement(i));
   const EnergyReport& e = energy_;
   for (Real v : {e.kinetic, e.internal, e.hourglass, e.bulk_viscosity, e.damping, e.external,
-                 e.support, e.balance_error()})
+                 e.support, e.constraint, e.balance_error()})
     values[k++] = v;
 }
 
@@ -376,18 +426,24 @@ bool Simulation::step() {
   if (!initialized_) initialize();
   if (finished_) return false;
   const Real end = controls.end_time;
-  const Real tol_t = 1e-12 * std::max<Real>(1.0, end);
+  // Time tolerance relative to the run's own time scale (an absolute one would swallow whole
+  // steps of a nanosecond-scale run), far above the round-off of t.
+  const Real tol_t =
+      1e-12 * (end > 0.0 ? end : std::max({t_, controls.history_interval, controls.state_interval}));
   const bool at_end = (controls.end_time > 0.0 && t_ >= end - tol_t) ||
                       (controls.max_cycles > 0 && cycle_ >= controls.max_cycles);
 
   // The coming step: the scaled stable step, shortened to land exactly on the next output time.
   Real dt_new = controls.dt_scale * dt_crit_;
   if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
-  Real target = end;
+  Real target = end > 0.0 ? end : std::numeric_limits<Real>::infinity();
   if (controls.history_interval > 0.0)
     target = std::min(target, next_output_time(controls.history_interval, t_));
   if (controls.state_interval > 0.0)
     target = std::min(target, next_output_time(controls.state_interval, t_));
+  // The last output multiple can fall an ulp short of the end time (50 x 2e-6 < 1e-4): land on
+  // the end time itself, or the run would end there and record its last values at the wrong time.
+  if (end > 0.0 && target >= end - tol_t) target = end;
   bool lands = false;
   if (!at_end && target > t_ + tol_t && t_ + dt_new >= target - tol_t) {
     dt_new = target - t_;
@@ -415,7 +471,14 @@ bool Simulation::step() {
   t_ = lands ? target : t_ + dt_new;
   dt_ = dt_new;
   ++cycle_;
-  for (auto& c : constraints) c->after_positions(nodes, t_);
+  // The constraints reset the half-step velocities of their nodes; the kinetic energy that changes
+  // is work the constraint does (with constant steps this closes the balance up to a bounded
+  // O(dt^2) term, as for unconstrained nodes).
+  if (!constraints.empty()) {
+    const Real k_before = constrained_kinetic_energy();
+    for (auto& c : constraints) c->after_positions(nodes, t_);
+    constraint_work_ += constrained_kinetic_energy() - k_before;
+  }
   compute_forces();
   return true;
 }

@@ -5,6 +5,7 @@
 /// Channel paths follow the output contract (docs/output.md):
 ///   interfaces/<title>/slave_force, interfaces/<title>/master_force   (3 components)
 ///   supports/<title>/reaction                                          (3 components)
+///   supports/rigid_<part id>/reaction, .../reaction_moment             (3 components)
 ///   nodes/<id>/displacement                                            (3 components)
 ///   energy/<name>                                                      (1 component)
 #include <span>

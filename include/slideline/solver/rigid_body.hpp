@@ -18,6 +18,8 @@
 ///     to round-off in free flight).
 #include <array>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -37,6 +39,12 @@ class RigidBody final : public NodalConstraint {
   void initialize(NodalFields& nodes) override;
   void constrain_accelerations(NodalFields& nodes, Real t) override;
   void after_positions(NodalFields& nodes, Real t) override;
+  std::span<const Index> constrained_nodes() const override { return nodes_; }
+  /// With any fixed dof: supports/rigid_<part id>/reaction (force) and
+  /// supports/rigid_<part id>/reaction_moment (moment about the centre of mass); see
+  /// reaction_force(). A free body reports nothing.
+  void append_output_names(std::vector<std::string>& names) const override;
+  void write_output_values(std::span<Real> out) const override;
 
   Id part_id() const { return part_id_; }
   const std::vector<Index>& nodes() const { return nodes_; }
@@ -83,8 +91,10 @@ std::unique_ptr<NodalConstraint> make_rigid_body(Id part_id, std::vector<Index> 
                                                  std::array<int, 6> fixed_dofs);
 
 /// Builder entry point: the mass-only block of a rigid part's elements (hexahedra: 8 indices each;
-/// shells: 4 each, thickness `shell_thickness`; ids hexahedra first). See RigidMassBlock.
-std::unique_ptr<ElementBlock> make_rigid_mass_block(Id part_id, Real density,
+/// shells: 4 each, thickness `shell_thickness`; ids hexahedra first). `youngs` and `poisson` (the
+/// *MAT_RIGID E and PR) set its time step only. See RigidMassBlock.
+std::unique_ptr<ElementBlock> make_rigid_mass_block(Id part_id, Real density, Real youngs,
+                                                    Real poisson,
                                                     std::vector<Index> hex_connectivity,
                                                     std::vector<Index> quad_connectivity,
                                                     Real shell_thickness,

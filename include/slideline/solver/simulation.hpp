@@ -8,6 +8,7 @@
 ///   (element blocks, body loads, contact forces) and the next stable step.
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,9 +41,14 @@ struct EnergyReport {
   Real damping = 0.0;           ///< work dissipated by mass damping
   Real external = 0.0;          ///< work of body loads and contact forces
   Real support = 0.0;           ///< work of prescribed motions on the body
-  /// (kinetic + internal + hourglass + bulk viscosity + damping) - (kinetic0 + external + support)
+  /// Work of the forces that NodalConstraints (rigid bodies) apply to their nodes: the forces that
+  /// keep a body rigid and hold its fixed dofs, and the velocity reset after the position update.
+  Real constraint = 0.0;
+  /// (kinetic + internal + hourglass + bulk viscosity + damping)
+  ///   - (kinetic0 + external + support + constraint)
   Real balance_error() const {
-    return kinetic + internal + hourglass + bulk_viscosity + damping - kinetic0 - external - support;
+    return kinetic + internal + hourglass + bulk_viscosity + damping - kinetic0 - external -
+           support - constraint;
   }
   /// balance_error() relative to the largest energy in play.
   Real relative_balance_error() const;
@@ -58,6 +64,15 @@ class NodalConstraint {
   virtual void constrain_accelerations(NodalFields& nodes, Real t) = 0;
   /// Corrects positions and velocities after the position update.
   virtual void after_positions(NodalFields& nodes, Real t) = 0;
+  /// The nodes whose motion the constraint dictates (internal indices). The simulation books the
+  /// work it does on them (EnergyReport::constraint); a hook that only adds loads lists none.
+  virtual std::span<const Index> constrained_nodes() const { return {}; }
+  /// Appends the names of the 3-vector history channels the constraint reports. Called once, by
+  /// Simulation::initialize after initialize().
+  virtual void append_output_names(std::vector<std::string>& /*names*/) const {}
+  /// Writes the values of those channels at the current time, 3 per name in the same order, into
+  /// `out` (size 3 x the number of names; preallocated, so no allocation per record).
+  virtual void write_output_values(std::span<Real> /*out*/) const {}
 };
 
 class Simulation {
@@ -105,6 +120,7 @@ class Simulation {
   void update_damping_coefficients();
   void compute_reactions_and_velocities(Real dt_avg, Real dt_new);
   void update_positions(Real dt_new);
+  Real constrained_kinetic_energy() const;
   void collect_history(std::vector<Real>& values) const;
   Real next_output_time(Real interval, Real last) const;
   void write_outputs(const std::vector<OutputSink*>& sinks, bool force);
@@ -113,6 +129,9 @@ class Simulation {
   std::vector<Real> alpha_;            // per-node damping coefficient
   std::vector<std::uint8_t> fixed_[3];  // per axis: 1 if a support prescribes this component
   std::vector<std::uint8_t> fixed_rot_[3];  // per axis: 1 if a support fixes this rotation
+  std::vector<std::uint8_t> constrained_;   // 1 if a NodalConstraint dictates the node's motion
+  std::vector<Index> constrained_nodes_;   // the same nodes as a list, in order of first mention
+  std::vector<std::size_t> constraint_outputs_;  // history values each constraint writes
   std::vector<Real> chunk_e_;          // energy partial sums, kEnergyTerms per chunk
   std::vector<Real> history_values_;
   std::vector<Real> state_values_;
@@ -128,6 +147,7 @@ class Simulation {
   Real external_work_ = 0.0;
   Real damping_work_ = 0.0;
   Real support_work_ = 0.0;
+  Real constraint_work_ = 0.0;
   const std::vector<OutputSink*>* sinks_ = nullptr;
   bool initialized_ = false;
   bool finished_ = false;
