@@ -187,7 +187,15 @@ void Simulation::compute_forces() {
   Real dtc = std::numeric_limits<Real>::max();
   BlockEnergy be;
   try {
-    for (auto& b : blocks) dtc = std::min(dtc, b->compute_forces(nodes, dt_, corners_, be));
+    Real dt_other = std::numeric_limits<Real>::max();  // steps of blocks that do not bound it
+    for (auto& b : blocks) {
+      const Real d = b->compute_forces(nodes, dt_, corners_, be);
+      if (b->bounds_time_step())
+        dtc = std::min(dtc, d);
+      else
+        dt_other = std::min(dt_other, d);
+    }
+    if (dtc == std::numeric_limits<Real>::max()) dtc = dt_other;
   } catch (const InstabilityError& e) {
     throw InstabilityError(std::string(e.what()) + " at t = " + std::to_string(t_) +
                                ", cycle " + std::to_string(cycle_),

@@ -31,6 +31,9 @@ class ElementBlock {
   virtual Id element_id(Index e) const = 0;
   /// True when the block writes corner moments (its nodes carry rotations).
   virtual bool has_moments() const { return false; }
+  /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in
+  /// LS-DYNA, rigid elements do not set the step of a model with deformable elements).
+  virtual bool bounds_time_step() const { return true; }
 
   /// Computes reference element data and adds this block's lumped mass (and rotary inertia) to
   /// the nodes. Called once, before the first step.

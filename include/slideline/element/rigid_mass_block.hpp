@@ -101,6 +101,8 @@ class RigidMassBlock final : public ElementBlock {
 
   /// Writes zero corner forces (the slots exist so that the gather stays uniform) and returns the
   /// step found at initialisation (time).
+  bool bounds_time_step() const override { return false; }
+
   Real compute_forces(const NodalFields&, Real, CornerBuffer& corners, BlockEnergy&) override {
     const Index b = force_slot_base();
     const Index n = static_cast<Index>(conn_.size());

@@ -144,3 +144,15 @@ TEST(Build, ModelOfOnlyARigidPartRuns) {
   EXPECT_NEAR(h.value("nodes/7/displacement", h.records() - 1, 1), -0.5 * 9.81 * t * t, 1e-12);
   EXPECT_LT(std::abs(sim->energy().relative_balance_error()), 1e-9);
 }
+
+TEST(Build, RigidPartsDoNotBoundTheStepOfDeformableModels) {
+  // The same model with the block rigid and very stiff: the step is the shells' own.
+  model::Model soft = plate_model(false);
+  auto ref = build_simulation(soft);
+  ref->initialize();
+  model::Model m = plate_model(true);
+  m.materials.push_back(model::MatRigid{2, 0.01, 1.0e12, 0.3, 0.0, 0, 0, "", {}});
+  auto sim = build_simulation(m);
+  sim->initialize();
+  EXPECT_DOUBLE_EQ(sim->stable_dt(), ref->stable_dt());
+}
