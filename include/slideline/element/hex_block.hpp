@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "slideline/core/error.hpp"
+#include "slideline/core/lanes.hpp"
+#include "slideline/core/tensor3.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/hex8.hpp"
@@ -47,7 +49,16 @@ class HexBlock final : public ElementBlock {
     chunk_hg_.assign(chunk_count(ne), 0.0);
     chunk_visc_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
-    volume0_.assign(ne, 0.0);
+    volume0_.assign(padded(ne), 0.0);
+    // Lane-major connectivity: batch j, node k, lane l at 64 j + 8 k + l, the spare lanes of a
+    // last partial batch repeating its last element.
+    conn_lanes_.assign(8 * static_cast<std::size_t>(padded(ne)), 0);
+    for (Index e = 0; e < padded(ne); ++e) {
+      const Index src = std::min(e, ne - 1);
+      const Index j = e / kLanes, l = e % kLanes;
+      for (int k = 0; k < 8; ++k)
+        conn_lanes_[64 * static_cast<std::size_t>(j) + kLanes * k + l] = conn_[8 * src + k];
+    }
   }
 
   std::string kind() const override { return "hex8"; }
@@ -68,110 +79,23 @@ class HexBlock final : public ElementBlock {
                          std::to_string(part_id_) + " has non-positive volume " +
                          std::to_string(v0) + " (check the node order)");
       volume0_[e] = v0;
+      if (e == ne - 1)  // the spare lanes of a last partial batch repeat the last element
+        std::fill(volume0_.begin() + ne, volume0_.end(), v0);
       const Real m = mat_.density() * v0 / 8.0;
       for (int k = 0; k < 8; ++k) nodes.mass[conn_[8 * e + k]] += m;
     }
   }
 
+  /// Internal forces of all elements into their corner slots of `corners` (residual form), the
+  /// hourglass and bulk-viscosity powers into `energy`; returns the smallest element time step.
+  /// Throws InstabilityError naming the first element (of the first chunk) that inverted or
+  /// produced a non-finite force.
   Real compute_forces(const NodalFields& nodes, Real /*dt*/, CornerBuffer& corners,
                       BlockEnergy& energy) override {
-    const Index ne = element_count();
-    const Real c = mat_.wave_speed();
-    const Real rho0 = mat_.density();
-    const Real e_mod = mat_.youngs_modulus();
-    const Index base = force_slot_base();
-    const Index* conn = conn_.data();
-    parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
-      using hex8::Col8;
-      Real dtmin = std::numeric_limits<Real>::max();
-      Real p_hg = 0.0, p_visc = 0.0;
-      Index bad = -1;
-      for (Index e = b; e < end; ++e) {
-        const Index* n = conn + 8 * static_cast<std::size_t>(e);
-        Col8 x, y, z, vx, vy, vz, x0, y0, z0;
-        for (int k = 0; k < 8; ++k) {
-          const Index i = n[k];
-          x[k] = nodes.x.x[i];
-          y[k] = nodes.x.y[i];
-          z[k] = nodes.x.z[i];
-          vx[k] = nodes.v.x[i];
-          vy[k] = nodes.v.y[i];
-          vz[k] = nodes.v.z[i];
-          x0[k] = nodes.x0.x[i];
-          y0[k] = nodes.x0.y[i];
-          z0[k] = nodes.x0.z[i];
-        }
-        Col8 bx, by, bz;
-        hex8::volume_gradient(x, y, z, bx, by, bz);
-        const Real vol = (x * bx + y * by + z * bz).sum() / 3.0;
-        if (!(vol > 0.0)) {
-          if (bad < 0) bad = e;
-          continue;
-        }
-        const Real inv_vol = 1.0 / vol;
-        bx *= inv_vol;
-        by *= inv_vol;
-        bz *= inv_vol;
-        // dX/dx = sum_I X_I (x) B_I, exact for linear fields; F is its inverse.
-        Mat3 finv;
-        finv << (x0 * bx).sum(), (x0 * by).sum(), (x0 * bz).sum(),  //
-            (y0 * bx).sum(), (y0 * by).sum(), (y0 * bz).sum(),      //
-            (z0 * bx).sum(), (z0 * by).sum(), (z0 * bz).sum();
-        const Mat3 F = finv.inverse();
-        Mat3 sigma = mat_.cauchy_stress(F);
-        const Real trd = (vx * bx + vy * by + vz * bz).sum();
-        const Real len = vol / hex8::max_face_area(x, y, z);
-        Real qdt = 0.0;
-        if (trd < 0.0) {
-          const Real rho = rho0 * volume0_[e] * inv_vol;
-          const Real q = rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
-          sigma.diagonal().array() -= q;
-          p_visc += -q * trd * vol;
-          qdt = bulk_.linear * c + bulk_.quadratic * len * (-trd);
-        }
-        // Stress divergence: f_I = -V sigma B_I (residual form).
-        Col8 fx = -vol * (bx * sigma(0, 0) + by * sigma(0, 1) + bz * sigma(0, 2));
-        Col8 fy = -vol * (bx * sigma(1, 0) + by * sigma(1, 1) + bz * sigma(1, 2));
-        Col8 fz = -vol * (bx * sigma(2, 0) + by * sigma(2, 1) + bz * sigma(2, 2));
-        // Hourglass: gamma_a = Gamma_a - (Gamma_a . x) B, then f = -k sum_a gamma_a (gamma_a . w)
-        // with w the velocities (viscous) or the total displacements (physical stiffness).
-        const bool viscous = hg_.kind == HexHourglass::Kind::viscous;
-        const Col8 wx = viscous ? vx : Col8(x - x0);
-        const Col8 wy = viscous ? vy : Col8(y - y0);
-        const Col8 wz = viscous ? vz : Col8(z - z0);
-        Col8 hx = Col8::Zero(), hy = Col8::Zero(), hz = Col8::Zero();
-        for (int a = 0; a < 4; ++a) {
-          const Col8 g = hex8::hourglass_base().row(a).transpose().array();
-          const Col8 gam = g - ((g * x).sum() * bx + (g * y).sum() * by + (g * z).sum() * bz);
-          hx += gam * (gam * wx).sum();
-          hy += gam * (gam * wy).sum();
-          hz += gam * (gam * wz).sum();
-        }
-        const Real k = viscous ? hg_.coefficient * rho0 * volume0_[e] * inv_vol * c *
-                                     std::cbrt(vol * vol) / 4.0
-                               : hg_.coefficient * e_mod * vol *
-                                     (bx.square() + by.square() + bz.square()).sum() / 72.0;
-        hx *= -k;
-        hy *= -k;
-        hz *= -k;
-        p_hg += -(hx * vx + hy * vy + hz * vz).sum();
-        fx += hx;
-        fy += hy;
-        fz += hz;
-        if (!std::isfinite(fx.sum() + fy.sum() + fz.sum()) && bad < 0) bad = e;
-        dtmin = std::min(dtmin, len / (qdt + std::sqrt(qdt * qdt + c * c)));
-        const Index s0 = base + 8 * e;
-        for (int kk = 0; kk < 8; ++kk) {
-          corners.force.x[s0 + kk] = fx[kk];
-          corners.force.y[s0 + kk] = fy[kk];
-          corners.force.z[s0 + kk] = fz[kk];
-        }
-      }
-      chunk_dt_[chunk] = dtmin;
-      chunk_hg_[chunk] = p_hg;
-      chunk_visc_[chunk] = p_visc;
-      chunk_bad_[chunk] = bad;
-    });
+    if (hg_.kind == HexHourglass::Kind::viscous)
+      compute_chunks<true>(nodes, corners);
+    else
+      compute_chunks<false>(nodes, corners);
     for (Index bad : chunk_bad_)
       if (bad >= 0)
         throw InstabilityError("solid element " + std::to_string(ids_[bad]) + " of part " +
@@ -186,6 +110,158 @@ class HexBlock final : public ElementBlock {
   }
 
  private:
+  /// The element loop, vectorised across elements: each chunk (a multiple of kLanes elements, so
+  /// chunk boundaries and hence the results do not depend on the thread count) is processed in
+  /// batches of kLanes elements, one per lane; a last partial batch repeats its last element in
+  /// the spare lanes and discards them.
+  template <bool viscous>
+  void compute_chunks(const NodalFields& nodes, CornerBuffer& corners) {
+    static_assert(kChunkSize % kLanes == 0, "batches must not straddle chunks");
+    const Index ne = element_count();
+    const Real c = mat_.wave_speed();
+    const Real rho0 = mat_.density();
+    const Real e_mod = mat_.youngs_modulus();
+    Real* fx_out = corners.force.x.data() + force_slot_base();
+    Real* fy_out = corners.force.y.data() + force_slot_base();
+    Real* fz_out = corners.force.z.data() + force_slot_base();
+    parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
+      using hex8::NodeLanes;
+      Lanes dtmin = Lanes::Constant(std::numeric_limits<Real>::max());
+      Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero();
+      Index bad = -1;
+      for (Index e0 = b; e0 < end; e0 += kLanes) {
+        const int valid = static_cast<int>(std::min<Index>(kLanes, end - e0));
+        const Index* idx = conn_lanes_.data() + 8 * static_cast<std::size_t>(e0);
+        NodeLanes x, y, z, vx, vy, vz, x0, y0, z0;
+        for (int k = 0; k < 8; ++k) {
+          const Index* ik = idx + kLanes * k;
+          x[k] = gather_lanes(nodes.x.x.data(), ik);
+          y[k] = gather_lanes(nodes.x.y.data(), ik);
+          z[k] = gather_lanes(nodes.x.z.data(), ik);
+          vx[k] = gather_lanes(nodes.v.x.data(), ik);
+          vy[k] = gather_lanes(nodes.v.y.data(), ik);
+          vz[k] = gather_lanes(nodes.v.z.data(), ik);
+          x0[k] = gather_lanes(nodes.x0.x.data(), ik);
+          y0[k] = gather_lanes(nodes.x0.y.data(), ik);
+          z0[k] = gather_lanes(nodes.x0.z.data(), ik);
+        }
+        NodeLanes bx, by, bz;
+        hex8::volume_gradient(x, y, z, bx, by, bz);
+        Lanes vol = Lanes::Zero();
+        for (int k = 0; k < 8; ++k) vol += x[k] * bx[k] + y[k] * by[k] + z[k] * bz[k];
+        vol /= 3.0;
+        const Lanes inv_vol = 1.0 / vol;
+        for (int k = 0; k < 8; ++k) {
+          bx[k] *= inv_vol;
+          by[k] *= inv_vol;
+          bz[k] *= inv_vol;
+        }
+        // dX/dx = sum_I X_I (x) B_I, exact for linear fields; F is its inverse.
+        Tensor3<Lanes> finv;
+        for (auto& row : finv)
+          for (Lanes& v : row) v = Lanes::Zero();
+        for (int k = 0; k < 8; ++k) {
+          finv[0][0] += x0[k] * bx[k];
+          finv[0][1] += x0[k] * by[k];
+          finv[0][2] += x0[k] * bz[k];
+          finv[1][0] += y0[k] * bx[k];
+          finv[1][1] += y0[k] * by[k];
+          finv[1][2] += y0[k] * bz[k];
+          finv[2][0] += z0[k] * bx[k];
+          finv[2][1] += z0[k] * by[k];
+          finv[2][2] += z0[k] * bz[k];
+        }
+        Tensor3<Lanes> sigma = mat_.cauchy_stress(inverse(finv));
+        Lanes trd = Lanes::Zero();
+        for (int k = 0; k < 8; ++k) trd += vx[k] * bx[k] + vy[k] * by[k] + vz[k] * bz[k];
+        const Lanes len = vol / hex8::max_face_area(x, y, z);
+        const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
+        // Bulk viscosity in compression only (tr D < 0).
+        const LaneMask compressing = trd < 0.0;
+        const Lanes rho = rho0 * vol0 * inv_vol;
+        const Lanes q = compressing.select(
+            rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd), 0.0);
+        for (int i = 0; i < 3; ++i) sigma[i][i] -= q;
+        Lanes visc = -q * trd * vol;
+        const Lanes qdt = compressing.select(bulk_.linear * c + bulk_.quadratic * len * (-trd), 0.0);
+        // Stress divergence: f_I = -V sigma B_I (residual form).
+        NodeLanes fx, fy, fz;
+        for (int k = 0; k < 8; ++k) {
+          fx[k] = -vol * (bx[k] * sigma[0][0] + by[k] * sigma[0][1] + bz[k] * sigma[0][2]);
+          fy[k] = -vol * (bx[k] * sigma[1][0] + by[k] * sigma[1][1] + bz[k] * sigma[1][2]);
+          fz[k] = -vol * (bx[k] * sigma[2][0] + by[k] * sigma[2][1] + bz[k] * sigma[2][2]);
+        }
+        // Hourglass: f = -k sum_a gamma_a (gamma_a . w) with w the velocities (viscous) or the
+        // total displacements (physical stiffness).
+        NodeLanes hx, hy, hz;
+        Lanes k_hg;
+        if constexpr (viscous) {
+          hex8::hourglass_resistance(x, y, z, bx, by, bz, vx, vy, vz, hx, hy, hz);
+          const Lanes v23 = (vol * vol).unaryExpr([](Real v) { return std::cbrt(v); });
+          k_hg = hg_.coefficient * rho0 * vol0 * inv_vol * c * v23 / 4.0;
+        } else {
+          NodeLanes ux, uy, uz;
+          for (int k = 0; k < 8; ++k) {
+            ux[k] = x[k] - x0[k];
+            uy[k] = y[k] - y0[k];
+            uz[k] = z[k] - z0[k];
+          }
+          hex8::hourglass_resistance(x, y, z, bx, by, bz, ux, uy, uz, hx, hy, hz);
+          Lanes b2 = Lanes::Zero();
+          for (int k = 0; k < 8; ++k) b2 += bx[k] * bx[k] + by[k] * by[k] + bz[k] * bz[k];
+          k_hg = hg_.coefficient * e_mod * vol * b2 / 72.0;
+        }
+        Lanes hg = Lanes::Zero(), fsum = Lanes::Zero();
+        for (int k = 0; k < 8; ++k) {
+          hx[k] *= -k_hg;
+          hy[k] *= -k_hg;
+          hz[k] *= -k_hg;
+          hg -= hx[k] * vx[k] + hy[k] * vy[k] + hz[k] * vz[k];
+          fx[k] += hx[k];
+          fy[k] += hy[k];
+          fz[k] += hz[k];
+          fsum += fx[k] + fy[k] + fz[k];
+        }
+        Lanes dt = len / (qdt + lane_sqrt(qdt * qdt + c * c));
+        const LaneMask failed = !(vol > 0.0) || !fsum.isFinite();
+        if (valid < kLanes) {  // the spare lanes of a last partial batch
+          for (int l = valid; l < kLanes; ++l) {
+            hg[l] = visc[l] = 0.0;
+            dt[l] = std::numeric_limits<Real>::max();
+          }
+        }
+        if (bad < 0 && failed.head(valid).any())
+          for (int l = 0; l < valid; ++l)
+            if (failed[l]) {
+              bad = e0 + l;
+              break;
+            }
+        p_hg += hg;
+        p_visc += visc;
+        dtmin = dtmin.min(dt);
+        const std::size_t s0 = 8 * static_cast<std::size_t>(e0);
+        if (valid == kLanes) {
+          store_transposed(fx, fx_out + s0);
+          store_transposed(fy, fy_out + s0);
+          store_transposed(fz, fz_out + s0);
+        } else {
+          for (int l = 0; l < valid; ++l)
+            for (int k = 0; k < 8; ++k) {
+              fx_out[s0 + 8 * l + k] = fx[k][l];
+              fy_out[s0 + 8 * l + k] = fy[k][l];
+              fz_out[s0 + 8 * l + k] = fz[k][l];
+            }
+        }
+      }
+      chunk_dt_[chunk] = dtmin.minCoeff();
+      chunk_hg_[chunk] = p_hg.sum();
+      chunk_visc_[chunk] = p_visc.sum();
+      chunk_bad_[chunk] = bad;
+    });
+  }
+
+  static Index padded(Index n) { return (n + kLanes - 1) / kLanes * kLanes; }
+
   hex8::NodeMat gather(const Vec3Field& f, Index e) const {
     hex8::NodeMat m;
     const Index* n = conn_.data() + 8 * static_cast<std::size_t>(e);
@@ -203,7 +279,8 @@ class HexBlock final : public ElementBlock {
   BulkViscosity bulk_;
   std::vector<Index> conn_;
   std::vector<Id> ids_;
-  std::vector<Real> volume0_;
+  std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
+  std::vector<Real> volume0_;      ///< padded to whole batches
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_;
   std::vector<Index> chunk_bad_;
 };

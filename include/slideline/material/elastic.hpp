@@ -4,6 +4,7 @@
 /// Exact linear elasticity at small strain; objective under large rotations.
 #include <cmath>
 
+#include "slideline/core/tensor3.hpp"
 #include "slideline/core/types.hpp"
 
 namespace slideline {
@@ -22,11 +23,31 @@ class ElasticSolid {
   Real youngs_modulus() const { return e_; }
   Real wave_speed() const { return std::sqrt((lambda_ + 2.0 * mu_) / rho_); }
 
-  Mat3 cauchy_stress(const Mat3& F) const {
-    const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
-    Mat3 S = 2.0 * mu_ * E;
-    S.diagonal().array() += lambda_ * E.trace();
-    return F * S * F.transpose() / F.determinant();
+  /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
+  Mat3 cauchy_stress(const Mat3& F) const { return to_mat3(cauchy_stress(to_tensor3(F))); }
+
+  /// Cauchy stress for deformation gradients F with components of type T: Real for one element,
+  /// Lanes for a batch of elements (one per lane).
+  template <class T>
+  Tensor3<T> cauchy_stress(const Tensor3<T>& F) const {
+    Tensor3<T> E = transpose_times(F);  // E = (F^T F - I) / 2
+    for (int i = 0; i < 3; ++i) E[i][i] -= 1.0;
+    for (auto& row : E)
+      for (T& v : row) v *= 0.5;
+    Tensor3<T> S;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) S[i][j] = 2.0 * mu_ * E[i][j];
+    const T lambda_tr_e = lambda_ * (E[0][0] + E[1][1] + E[2][2]);
+    for (int i = 0; i < 3; ++i) S[i][i] += lambda_tr_e;
+    const Tensor3<T> fs = product(F, S);
+    const T inv_j = 1.0 / determinant(F);
+    Tensor3<T> s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j <= i; ++j) {
+        s[i][j] = (fs[i][0] * F[j][0] + fs[i][1] * F[j][1] + fs[i][2] * F[j][2]) * inv_j;
+        s[j][i] = s[i][j];
+      }
+    return s;
   }
 
  private:

@@ -11,6 +11,7 @@
 /// Reference: LS-DYNA Theory Manual, material 27; Hallquist, DYNA3D User Manual (Lin 2005).
 #include <cmath>
 
+#include "slideline/core/tensor3.hpp"
 #include "slideline/core/types.hpp"
 
 namespace slideline {
@@ -32,17 +33,32 @@ class MooneyRivlin {
   Real wave_speed() const { return std::sqrt((lame_lambda() + 2.0 * shear_modulus()) / rho_); }
 
   /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
-  Mat3 cauchy_stress(const Mat3& F) const {
-    const Mat3 bt = F * F.transpose();
-    const Real J = F.determinant();
-    const Real i1 = bt.trace();
-    const Real i3 = J * J;
+  Mat3 cauchy_stress(const Mat3& F) const { return to_mat3(cauchy_stress(to_tensor3(F))); }
+
+  /// Cauchy stress for deformation gradients F with components of type T: Real for one element,
+  /// Lanes for a batch of elements (one per lane).
+  template <class T>
+  Tensor3<T> cauchy_stress(const Tensor3<T>& F) const {
+    const Tensor3<T> bt = times_transpose(F);
+    const T J = determinant(F);
+    const T i1 = bt[0][0] + bt[1][1] + bt[2][2];
+    const T i3 = J * J;
     const Real w1 = a_;
     const Real w2 = b_;
-    const Real w3 = -2.0 * c_ / (i3 * i3 * i3) + 2.0 * d_ * (i3 - 1.0);
-    Mat3 s = (2.0 / J) * (w1 + i1 * w2) * bt;
-    if (w2 != 0.0) s -= (2.0 / J) * w2 * bt * bt;  // B = 0 (the spec's rubber) skips a product
-    s.diagonal().array() += 2.0 * J * w3;
+    const T w3 = -2.0 * c_ / (i3 * i3 * i3) + 2.0 * d_ * (i3 - 1.0);
+    const T two_over_j = 2.0 / J;
+    const T s1 = two_over_j * (w1 + i1 * w2);
+    Tensor3<T> s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) s[i][j] = s1 * bt[i][j];
+    if (w2 != 0.0) {  // B = 0 (the spec's rubber) skips a product
+      const Tensor3<T> bt2 = product(bt, bt);
+      const T s2 = two_over_j * w2;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s[i][j] -= s2 * bt2[i][j];
+    }
+    const T p = 2.0 * J * w3;
+    for (int i = 0; i < 3; ++i) s[i][i] += p;
     return s;
   }
 
