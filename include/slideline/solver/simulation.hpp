@@ -152,6 +152,7 @@ class Simulation {
   bool initialized_ = false;
   bool finished_ = false;
   bool has_damping_curves_ = false;
+  bool has_rotations_ = false;  // any node carries rotations (then m_ext is cleared each step)
   Real element_seconds_ = 0.0;
   Real contact_seconds_ = 0.0;
 };
