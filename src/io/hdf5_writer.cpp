@@ -133,6 +133,12 @@ struct Hdf5Writer::Impl {
   std::vector<Real> buffer;  // buffered records, width values each
   Series state_time;
   Series state_disp;
+  std::vector<Real> x0;      // reference coordinates, 3 per node
+  std::vector<Real> coords;  // one state's deformed coordinates x0 + u (the XDMF geometry)
+  std::vector<Real> disp;    // one state's displacements
+
+  /// The group holding state s's own (nodes x 3) datasets.
+  static std::string state_group(std::size_t s) { return "/states/state_" + std::to_string(s); }
   std::vector<Real> state_times;  // for the XDMF file
   std::size_t nodes = 0;
   std::size_t hexes = 0;
@@ -165,36 +171,43 @@ struct Hdf5Writer::Impl {
     x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n"
       << "    <Grid Name=\"states\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (std::size_t s = 0; s < state_times.size(); ++s) {
-      // Deformed geometry x = x0 + u(s); the displacement of state s is a hyperslab of the states.
-      std::ostringstream disp;
-      disp << "          <DataItem ItemType=\"HyperSlab\" Type=\"HyperSlab\" Dimensions=\"" << nodes << " 3\">\n"
-           << "            <DataItem Dimensions=\"3 3\" Format=\"XML\">" << s << " 0 0 1 1 1 1 " << nodes
-           << " 3</DataItem>\n"
-           << "            <DataItem Dimensions=\"" << state_times.size() << " " << nodes
-           << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/states/displacement</DataItem>\n"
-           << "          </DataItem>\n";
+      // Per-state (nodes x 3) datasets, referenced directly: ParaView 5.11's Xdmf3 readers crash on
+      // HyperSlab and Function items, so the geometry is the stored deformed coordinates.
+      const auto slab = [&](const char* name) {
+        std::ostringstream d;
+        d << "          <DataItem Dimensions=\"" << nodes
+          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":" << state_group(s)
+          << "/" << name << "</DataItem>\n";
+        return d.str();
+      };
       const auto grid = [&](const char* name, const char* topology, std::size_t cells, int per_cell,
-                            const char* dataset) {
-        x << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
+                            const char* dataset, const std::string& time) {
+        x << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n" << time
           << "        <Topology TopologyType=\"" << topology << "\" NumberOfElements=\"" << cells << "\">\n"
           << "          <DataItem Dimensions=\"" << cells << " " << per_cell
           << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ":" << dataset << "</DataItem>\n"
           << "        </Topology>\n"
           << "        <Geometry GeometryType=\"XYZ\">\n"
-          << "         <DataItem ItemType=\"Function\" Function=\"$0 + $1\" Dimensions=\"" << nodes << " 3\">\n"
-          << "          <DataItem Dimensions=\"" << nodes << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-          << h5 << ":/mesh/coordinates</DataItem>\n"
-          << disp.str() << "         </DataItem>\n"
-          << "        </Geometry>\n"
+          << slab("coordinates") << "        </Geometry>\n"
           << "        <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
-          << disp.str() << "        </Attribute>\n"
+          << slab("displacement") << "        </Attribute>\n"
           << "      </Grid>\n";
       };
-      x << "     <Grid Name=\"state " << s << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-        << "      <Time Value=\"" << state_times[s] << "\"/>\n";
-      if (hexes > 0) grid("hexahedra", "Hexahedron", hexes, 8, "/mesh/hexahedra");
-      if (quads > 0) grid("quadrilaterals", "Quadrilateral", quads, 4, "/mesh/quadrilaterals");
-      x << "     </Grid>\n";
+      if (hexes > 0 && quads > 0) {
+        // Both element kinds: a spatial collection of two grids per state.
+        x << "     <Grid Name=\"state " << s << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+          << "      <Time Value=\"" << state_times[s] << "\"/>\n";
+        grid("hexahedra", "Hexahedron", hexes, 8, "/mesh/hexahedra", "");
+        grid("quadrilaterals", "Quadrilateral", quads, 4, "/mesh/quadrilaterals", "");
+        x << "     </Grid>\n";
+      } else {
+        // One element kind: the grid itself is the state (the layout every XDMF reader takes).
+        std::ostringstream tv;
+        tv.precision(17);
+        tv << "        <Time Value=\"" << state_times[s] << "\"/>\n";
+        if (hexes > 0) grid("hexahedra", "Hexahedron", hexes, 8, "/mesh/hexahedra", tv.str());
+        if (quads > 0) grid("quadrilaterals", "Quadrilateral", quads, 4, "/mesh/quadrilaterals", tv.str());
+      }
     }
     x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
     // Write then rename, so that a reader never sees a half-written file.
@@ -271,7 +284,12 @@ void Hdf5Writer::begin(const std::vector<HistoryChannel>& channels, const MeshDe
   write_fixed(f, "/mesh/hexahedra", H5T_NATIVE_INT32, H5T_STD_I32LE, mesh.hex_connectivity, 8);
   write_fixed(f, "/mesh/quadrilaterals", H5T_NATIVE_INT32, H5T_STD_I32LE, mesh.quad_connectivity, 4);
   d.state_time.create(f, "/states/time", {}, 64);
-  if (d.nodes > 0) d.state_disp.create(f, "/states/displacement", {hsize_t(d.nodes), 3}, 1);
+  if (d.nodes > 0) {
+    d.state_disp.create(f, "/states/displacement", {hsize_t(d.nodes), 3}, 1);
+  }
+  d.x0 = mesh.x0;
+  d.coords.assign(mesh.x0.size(), 0.0);
+  d.disp.assign(mesh.x0.size(), 0.0);
 }
 
 void Hdf5Writer::write_history(Real t, std::span<const Real> values) {
@@ -290,7 +308,16 @@ void Hdf5Writer::write_state(Real t, std::span<const Real> displacements) {
     throw Error(d.path + ": state has " + std::to_string(displacements.size()) + " values, expected " +
                 std::to_string(3 * d.nodes));
   d.state_time.append(&t, 1);
-  if (d.nodes > 0) d.state_disp.append(displacements.data(), 1);
+  if (d.nodes > 0) {
+    d.state_disp.append(displacements.data(), 1);
+    for (std::size_t i = 0; i < d.coords.size(); ++i) {
+      d.disp[i] = displacements[i];
+      d.coords[i] = d.x0[i] + displacements[i];
+    }
+    const std::string g = Impl::state_group(d.state_times.size());
+    write_fixed(d.file, g + "/coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, d.coords, 3);
+    write_fixed(d.file, g + "/displacement", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, d.disp, 3);
+  }
   d.state_times.push_back(t);
 }
 

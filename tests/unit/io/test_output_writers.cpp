@@ -154,8 +154,6 @@ TEST(Xdmf, EveryDatasetItRefersToExistsInTheHdf5File) {
   EXPECT_NE(xml.find("TopologyType=\"Hexahedron\" NumberOfElements=\"2\""), std::string::npos);
   EXPECT_NE(xml.find("TopologyType=\"Quadrilateral\" NumberOfElements=\"1\""), std::string::npos);
   EXPECT_NE(xml.find("<Time Value=\"1\"/>"), std::string::npos);
-  // One hyperslab start per state (twice per grid: geometry and attribute, two grids).
-  EXPECT_NE(xml.find(">2 0 0 1 1 1 1 16 3<"), std::string::npos);
 
   const std::regex ref(">([^<>:]+\\.h5):([^<]+)<");
   std::set<std::string> paths;
@@ -163,10 +161,25 @@ TEST(Xdmf, EveryDatasetItRefersToExistsInTheHdf5File) {
     EXPECT_EQ((*it)[1].str(), "paraview.h5");
     paths.insert((*it)[2].str());
   }
-  EXPECT_EQ(paths, (std::set<std::string>{"/mesh/coordinates", "/mesh/hexahedra", "/mesh/quadrilaterals",
-                                          "/states/displacement"}));
+  // Geometry from the stored deformed coordinates (no XDMF Function: ParaView's Xdmf3 readers abort
+  // on it), the attribute from the displacements.
+  EXPECT_TRUE(paths.count("/mesh/hexahedra") && paths.count("/mesh/quadrilaterals"));
+  EXPECT_TRUE(paths.count("/states/state_2/coordinates") && paths.count("/states/state_2/displacement"));
+  // ParaView 5.11's Xdmf3 readers crash on Function and HyperSlab items: neither is used.
+  EXPECT_EQ(xml.find("Function"), std::string::npos);
+  EXPECT_EQ(xml.find("HyperSlab"), std::string::npos);
   for (const auto& p : paths) EXPECT_TRUE(hdf5_exists(path.string(), p)) << p;
   EXPECT_FALSE(hdf5_exists(path.string(), "/states/nothing"));
+  // The geometry of a state is the reference coordinates plus that state's displacements.
+  {
+    std::vector<std::size_t> dims;
+    const auto x0 = read_doubles(path.string(), "/mesh/coordinates", &dims);
+    const auto u = read_doubles(path.string(), "/states/state_2/displacement", &dims);
+    const auto x = read_doubles(path.string(), "/states/state_2/coordinates", &dims);
+    ASSERT_EQ(x.size(), x0.size());
+    ASSERT_EQ(u.size(), x0.size());
+    for (std::size_t i = 0; i < x.size(); ++i) EXPECT_EQ(x[i], x0[i] + u[i]) << i;
+  }
   // Balanced tags: every opening <Grid> and <DataItem> has its closing tag.
   const auto count = [&](const std::string& s) {
     std::size_t n = 0;
