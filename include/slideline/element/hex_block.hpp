@@ -263,14 +263,7 @@ class HexBlock final : public ElementBlock {
   static Index padded(Index n) { return (n + kLanes - 1) / kLanes * kLanes; }
 
   hex8::NodeMat gather(const Vec3Field& f, Index e) const {
-    hex8::NodeMat m;
-    const Index* n = conn_.data() + 8 * static_cast<std::size_t>(e);
-    for (int k = 0; k < 8; ++k) {
-      m(k, 0) = f.x[n[k]];
-      m(k, 1) = f.y[n[k]];
-      m(k, 2) = f.z[n[k]];
-    }
-    return m;
+    return gather_rows<8>(f, conn_.data() + 8 * static_cast<std::size_t>(e));
   }
 
   Id part_id_;

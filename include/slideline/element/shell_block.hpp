@@ -278,14 +278,7 @@ class ShellBlock final : public ElementBlock {
 
  private:
   shell_bt::NodeMat gather(const Vec3Field& f, Index e) const {
-    shell_bt::NodeMat m;
-    const Index* n = conn_.data() + 4 * static_cast<std::size_t>(e);
-    for (int k = 0; k < 4; ++k) {
-      m(k, 0) = f.x[n[k]];
-      m(k, 1) = f.y[n[k]];
-      m(k, 2) = f.z[n[k]];
-    }
-    return m;
+    return gather_rows<4>(f, conn_.data() + 4 * static_cast<std::size_t>(e));
   }
 
   Id part_id_;

@@ -39,6 +39,18 @@ struct Vec3Field {
   const std::vector<Real>& operator[](int c) const { return c == 0 ? x : (c == 1 ? y : z); }
 };
 
+/// The rows of an element's N nodes, gathered from a field: row k = field at nodes[k].
+template <int N>
+Eigen::Matrix<Real, N, 3> gather_rows(const Vec3Field& f, const Index* nodes) {
+  Eigen::Matrix<Real, N, 3> m;
+  for (int k = 0; k < N; ++k) {
+    m(k, 0) = f.x[nodes[k]];
+    m(k, 1) = f.y[nodes[k]];
+    m(k, 2) = f.z[nodes[k]];
+  }
+  return m;
+}
+
 /// Every nodal quantity of the model. Index i is the dense internal node index; `ids[i]` is the
 /// deck's node id. Translational fields are used by every node; rotational fields only by nodes
 /// that carry rotations (shell nodes, `has_rotation[i] != 0`).
