@@ -4,10 +4,7 @@
 # (The 19-problem verification suite and its report replace this when the contact issues land.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-jobs=${JOBS:-2}
-bash scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$jobs"
+bash scripts/build.sh
 mkdir -p out
 if [ -x build/apps/blockcontact/blockcontact ]; then
   build/apps/blockcontact/blockcontact run examples/decks/merged_blocks.k -o out --csv

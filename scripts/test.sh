@@ -4,9 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=${JOBS:-2}
-bash scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$jobs"
+bash scripts/build.sh
 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 900
 if [ "${SLIDELINE_SKIP_SANITIZERS:-0}" != "1" ]; then
   cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLIDELINE_SANITIZE=ON \

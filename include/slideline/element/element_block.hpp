@@ -1,8 +1,14 @@
 #pragma once
 /// The interface every element block (hexahedra, shells, rigid parts' elements) implements.
 /// A block holds elements of one part: one formulation, one material, one section.
+#include <algorithm>
+#include <limits>
 #include <span>
 #include <string>
+#include <vector>
+
+#include "slideline/core/error.hpp"
+#include "slideline/core/parallel.hpp"
 
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
@@ -16,6 +22,26 @@ struct BlockEnergy {
   Real hourglass_power = 0.0;  ///< rate of work done against hourglass forces
   Real viscous_power = 0.0;    ///< rate of work done against bulk viscosity
 };
+
+/// Reduces the per-chunk results of an element loop in chunk order (so the result does not depend
+/// on the thread count): throws InstabilityError naming the first bad element (`bad[c] >= 0` is an
+/// element index; `ids` maps it to the deck id), adds the hourglass and bulk-viscosity powers to
+/// `energy`, and returns the smallest element step.
+inline Real reduce_element_chunks(const std::vector<Real>& dt, const std::vector<Real>& hourglass,
+                                  const std::vector<Real>& viscous, const std::vector<Index>& bad,
+                                  BlockEnergy& energy, const char* kind, const std::vector<Id>& ids,
+                                  Id part, const char* failure) {
+  for (Index b : bad)
+    if (b >= 0)
+      throw InstabilityError(std::string(kind) + " element " + std::to_string(ids[b]) + " of part " +
+                                 std::to_string(part) + " " + failure,
+                             0.0, 0);
+  energy.hourglass_power += ordered_sum(hourglass, 0.0);
+  energy.viscous_power += ordered_sum(viscous, 0.0);
+  Real dtmin = std::numeric_limits<Real>::max();
+  for (Real d : dt) dtmin = std::min(dtmin, d);
+  return dtmin;
+}
 
 class ElementBlock {
  public:

@@ -96,17 +96,8 @@ class HexBlock final : public ElementBlock {
       compute_chunks<true>(nodes, corners);
     else
       compute_chunks<false>(nodes, corners);
-    for (Index bad : chunk_bad_)
-      if (bad >= 0)
-        throw InstabilityError("solid element " + std::to_string(ids_[bad]) + " of part " +
-                                   std::to_string(part_id_) +
-                                   " inverted (non-positive volume or non-finite force)",
-                               0.0, 0);
-    energy.hourglass_power += ordered_sum(chunk_hg_, 0.0);
-    energy.viscous_power += ordered_sum(chunk_visc_, 0.0);
-    Real dtmin = std::numeric_limits<Real>::max();
-    for (Real d : chunk_dt_) dtmin = std::min(dtmin, d);
-    return dtmin;
+    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_bad_, energy, "solid", ids_,
+                                 part_id_, "inverted (non-positive volume or non-finite force)");
   }
 
  private:

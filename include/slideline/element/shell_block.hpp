@@ -243,17 +243,8 @@ class ShellBlock final : public ElementBlock {
       chunk_visc_[chunk] = p_visc;
       chunk_bad_[chunk] = bad;
     });
-    for (Index bad : chunk_bad_)
-      if (bad >= 0)
-        throw InstabilityError("shell element " + std::to_string(ids_[bad]) + " of part " +
-                                   std::to_string(part_id_) +
-                                   " degenerated (non-positive area or non-finite force)",
-                               0.0, 0);
-    energy.hourglass_power += ordered_sum(chunk_hg_, 0.0);
-    energy.viscous_power += ordered_sum(chunk_visc_, 0.0);
-    Real dtmin = std::numeric_limits<Real>::max();
-    for (Real d : chunk_dt_) dtmin = std::min(dtmin, d);
-    return dtmin;
+    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_bad_, energy, "shell", ids_,
+                                 part_id_, "degenerated (non-positive area or non-finite force)");
   }
 
   /// Stress (force/length^2, local co-rotational frame: xx, yy, xy, yz, xz) of element e at
