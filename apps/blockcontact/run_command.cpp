@@ -43,10 +43,9 @@ class Progress {
     last_ = now;
     const double t = sim.time();
     const double eta = t > 0.0 ? elapsed * (end_time_ - t) / t : 0.0;
-    // The step the solver is taking: sim.dt() is the last step, which is often a short one that
-    // landed on an output time.
-    double dt = sim.controls.dt_scale * sim.stable_dt();
-    if (sim.controls.dt_max > 0.0) dt = std::min(dt, sim.controls.dt_max);
+    // The step the solver takes next (sim.dt() is the last step, which is often a short one that
+    // landed on an output time).
+    const double dt = sim.plan_step().dt_next;
     const std::string line =
         fmt::format("cycle {:>9}  t {:.5e} / {:.4g}  dt {:.3e}  energy error {:+.2e}  ETA {:.0f} s", sim.cycle(), t,
                     end_time_, dt, sim.energy().relative_balance_error(), eta);

@@ -21,6 +21,7 @@ struct BlockEnergy {
   Real internal = 0.0;   ///< stored strain energy, where the material has one (else 0)
   Real hourglass_power = 0.0;  ///< rate of work done against hourglass forces
   Real viscous_power = 0.0;    ///< rate of work done against bulk viscosity
+  Real damping_power = 0.0;    ///< rate of work done against stiffness-proportional damping
 };
 
 /// Reduces the per-chunk results of an element loop in chunk order (so the result does not depend
