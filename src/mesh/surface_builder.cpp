@@ -83,17 +83,21 @@ std::string node_ids(const NodalFields& nodes, const SegmentNodes& c) {
   return s;
 }
 
-/// Appends the outward faces of hexahedron e of `block` (block index b) to `out`.
+/// Appends the outward faces of hexahedron e of `block` (block index b) to `out`. An element of
+/// zero volume has no outward side: an error when `strict`, else skipped (a segment set only
+/// looks at the elements its segments name, so an unrelated bad element must not stop it).
 void append_hex_faces(const ElementBlock& block, Index b, const BlockTopology& topo, Index e,
-                      const NodalFields& nodes, const std::string& context,
+                      const NodalFields& nodes, const std::string& context, bool strict,
                       std::vector<Candidate>& out) {
   const Index* c = block.connectivity().data() + topo.node_offset(e);
   const hex8::NodeMat X = gather_rows<8>(nodes.x0, c);
   const Real v = hex8::volume(X, hex8::volume_gradient(X));
-  if (!(std::abs(v) > 0.0))
+  if (!(std::abs(v) > 0.0)) {
+    if (!strict) return;
     throw InputError(context + ": solid element " + std::to_string(block.element_id(e)) +
                      " of part " + std::to_string(block.part_id()) +
                      " has zero volume, so its faces have no outward side");
+  }
   for (const auto& f : hex8::outward_faces) {
     SegmentNodes raw{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
     if (v < 0.0) raw = reversed(raw);  // a mirrored element: the table points in
@@ -115,7 +119,7 @@ void append_shell(const ElementBlock& block, Index b, const BlockTopology& topo,
 /// block, element, face.
 template <class Use>
 std::vector<Candidate> collect(const ElementBlocks& blocks, const NodalFields& nodes,
-                               const std::string& context, Use use) {
+                               const std::string& context, bool strict, Use use) {
   std::vector<Candidate> out;
   for (Index b = 0; b < static_cast<Index>(blocks.size()); ++b) {
     const ElementBlock& block = *blocks[b];
@@ -123,7 +127,7 @@ std::vector<Candidate> collect(const ElementBlocks& blocks, const NodalFields& n
     const BlockTopology topo = block_topology(block);
     for (Index e = 0; e < block.element_count(); ++e) {
       if (topo.is_hex(e))
-        append_hex_faces(block, b, topo, e, nodes, context, out);
+        append_hex_faces(block, b, topo, e, nodes, context, strict, out);
       else
         append_shell(block, b, topo, e, out);
     }
@@ -164,8 +168,9 @@ Surface build_surface_from_parts(const ElementBlocks& blocks, const NodalFields&
       throw InputError(context + ": part " + std::to_string(p) +
                        " has no elements, so it has no surface");
 
-  const std::vector<Candidate> cand = collect(
-      blocks, nodes, context, [&](const ElementBlock& b) { return wanted.count(b.part_id()) != 0; });
+  const std::vector<Candidate> cand =
+      collect(blocks, nodes, context, true,
+              [&](const ElementBlock& b) { return wanted.count(b.part_id()) != 0; });
 
   // A hexahedron face is interior when another hexahedron face of these parts has its nodes.
   // Shells are never interior: a shell on a solid's face is a surface of its own.
@@ -194,8 +199,8 @@ Surface build_surface_from_parts(const ElementBlocks& blocks, const NodalFields&
 Surface build_surface_from_segments(const ElementBlocks& blocks, const NodalFields& nodes,
                                     std::span<const SegmentNodes> segments,
                                     const std::string& context) {
-  const std::vector<Candidate> cand =
-      collect(blocks, nodes, context, [](const ElementBlock&) { return true; });
+  // Every block that has faces: a segment may name any element of the model.
+  const std::vector<Candidate> cand = collect(blocks, nodes, context, false, has_faces);
   const std::vector<Index> order = sorted_by_key(cand);
 
   Surface surf;

@@ -27,6 +27,12 @@ struct BlockTopology {
   }
 };
 
+/// True when `block` holds hexahedra and/or shells (a kind block_topology knows).
+inline bool has_faces(const ElementBlock& block) {
+  return dynamic_cast<const RigidMassBlock*>(&block) != nullptr ||
+         dynamic_cast<const ShellBlock*>(&block) != nullptr || block.nodes_per_element() == 8;
+}
+
 /// The topology of `block`. Throws NotImplementedError for a block kind that is neither
 /// hexahedra, shells nor a rigid part (it cannot carry a contact surface yet).
 inline BlockTopology block_topology(const ElementBlock& block) {

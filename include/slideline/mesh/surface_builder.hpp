@@ -47,8 +47,9 @@ Surface build_surface_from_parts(const ElementBlocks& blocks, const NodalFields&
 /// - shell: the shell's own connectivity (its normal), whatever the given order; a solid face
 ///   with the same nodes is preferred to a shell.
 /// Segments keep the set's order. Throws InputError "<context>: segment k (nodes ...) ..." for a
-/// segment that matches no element, repeats an earlier segment, has fewer than 3 distinct nodes
-/// or a node index out of range.
+/// segment that matches no element (hexahedra of zero volume, which have no outward side, and
+/// blocks without faces are not candidates), repeats an earlier segment, has fewer than 3
+/// distinct nodes or a node index out of range.
 Surface build_surface_from_segments(const ElementBlocks& blocks, const NodalFields& nodes,
                                     std::span<const SegmentNodes> segments,
                                     const std::string& context);
