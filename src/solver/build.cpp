@@ -331,8 +331,9 @@ struct Builder {
     MeshSets& sets = sim->sets;
     sets.part_nodes = part_nodes;
     for (const auto& s : m.node_sets) {
+      const std::string card = "*SET_NODE_LIST " + std::to_string(s.sid);
       std::vector<Index> out;
-      for (Id nid : s.nodes) out.push_back(node(nid, s.src, "*SET_NODE_LIST"));
+      for (Id nid : s.nodes) out.push_back(node(nid, s.src, card.c_str()));
       std::sort(out.begin(), out.end());
       out.erase(std::unique(out.begin(), out.end()), out.end());
       if (!sets.node_sets.emplace(s.sid, std::move(out)).second)

@@ -77,6 +77,12 @@ TEST(MeshSets, SegmentSetWithAnUnknownNodeNamesTheCard) {
 TEST(MeshSets, BadSetsAreInputErrors) {
   {
     model::Model m = test_support::hex_grid_model(1, 1, 1);
+    m.node_sets.push_back({3, "", {1, 77}, {"deck.k", 8}});  // unused, still checked
+    EXPECT_EQ(build_error(m),
+              "deck.k:8: *SET_NODE_LIST 3 refers to node 77, which the deck does not define");
+  }
+  {
+    model::Model m = test_support::hex_grid_model(1, 1, 1);
     m.node_sets.push_back({1, "", {1, 2}, {"deck.k", 10}});
     m.node_sets.push_back({1, "", {3}, {"deck.k", 12}});
     EXPECT_EQ(build_error(m), "deck.k:12: duplicate *SET_NODE id 1");
