@@ -61,6 +61,9 @@ class ElementBlock {
   /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in
   /// LS-DYNA, rigid elements do not set the step of a model with deformable elements).
   virtual bool bounds_time_step() const { return true; }
+  /// Small-strain bulk modulus of the block's material (force/length^2), for contact penalty
+  /// stiffness; 0 for a block without one.
+  virtual Real bulk_modulus() const { return 0.0; }
 
   /// Computes reference element data and adds this block's lumped mass (and rotary inertia) to
   /// the nodes. Called once, before the first step.

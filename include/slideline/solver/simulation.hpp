@@ -19,6 +19,7 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/io/output_sink.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
+#include "slideline/mesh/mesh_sets.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/solver/boundary.hpp"
 #include "slideline/solver/energy_ledger.hpp"
@@ -53,6 +54,7 @@ class Simulation {
   std::vector<SupportGroup> supports;
   std::vector<MassDamping> damping;
   std::vector<Index> history_nodes;  ///< internal indices of nodes whose displacement is recorded
+  MeshSets sets;  ///< the deck's node, part and segment sets, resolved (for contact)
   SimulationControls controls;
 
   /// Computes masses, builds the corner gather lists, evaluates the forces at t = 0 and the first
