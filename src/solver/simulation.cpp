@@ -137,7 +137,7 @@ void Simulation::initialize() {
   t_ = 0.0;
   dt_ = 0.0;
   cycle_ = 0;
-  contacts.initialize(ContactContext{nodes, blocks, nullptr, rigid_});
+  contacts.initialize(ContactContext{nodes, blocks, &sets, rigid_});
   dictated_nodes_.clear();
   for (const auto& c : contacts) {
     for (Index i : c->dictated_nodes()) {
