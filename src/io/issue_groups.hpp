@@ -14,10 +14,15 @@ namespace slideline {
 class IssueGroups {
  public:
   /// One occurrence: `key` names the problem ("*ELEMENT_SOLID refers to an undefined node"),
-  /// `single` is the message when it is alone, `item` labels the occurrence ("element 7 -> node 3").
-  void add(const std::string& key, std::string single, std::string item, const model::Source& src) {
+  /// `single` is the message when it is alone, `item` labels the occurrence ("7" or "7 -> node 3")
+  /// and `unit` names what is counted ("elements").
+  void add(const std::string& key, std::string single, std::string item, const model::Source& src,
+           const char* unit = "elements") {
     auto [it, fresh] = groups_.try_emplace(key);
-    if (fresh) order_.push_back(key);
+    if (fresh) {
+      order_.push_back(key);
+      units_[key] = unit;
+    }
     it->second.push_back({std::move(single), std::move(item), src});
   }
 
@@ -31,7 +36,7 @@ class IssueGroups {
         for (const auto& o : g) out.push_back({o.src.file, o.src.line, o.single});
         continue;
       }
-      std::string msg = key + ": " + std::to_string(g.size()) + " times (first: ";
+      std::string msg = key + ": " + std::to_string(g.size()) + " " + units_.at(key) + " (first: ";
       for (std::size_t i = 0; i < shown && i < g.size(); ++i) msg += (i ? ", " : "") + g[i].item;
       msg += g.size() > shown ? ", ...)" : ")";
       out.push_back({g.front().src.file, g.front().src.line, std::move(msg)});
@@ -45,6 +50,7 @@ class IssueGroups {
   };
   std::vector<std::string> order_;
   std::map<std::string, std::vector<Occurrence>> groups_;
+  std::map<std::string, std::string> units_;
 };
 
 }  // namespace slideline

@@ -41,6 +41,14 @@ model::Source src_member(const T& t) {
 
 std::vector<Diagnostic> check_references(const model::Model& m) {
   Checker ck;
+  // Without nodes or elements every other reference problem is a consequence: say only that.
+  if (m.nodes.empty() || (m.solids.empty() && m.shells.empty())) {
+    const std::string file = m.files.empty() ? std::string() : m.files.front();
+    if (m.nodes.empty()) ck.out.push_back({file, 0, "the deck defines no nodes (*NODE): nothing to run"});
+    if (m.solids.empty() && m.shells.empty())
+      ck.out.push_back({file, 0, "the deck defines no elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run"});
+    return ck.out;
+  }
   const model::Source none;
   const auto no_src = [&](const auto&) { return none; };
 
@@ -76,8 +84,7 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
     const std::string who = std::string(keyword) + " " + std::to_string(e.id);
     if (!parts.count(e.pid)) {
       const std::string what = "refers to undefined part " + std::to_string(e.pid);
-      element_issues.add(std::string(keyword) + " " + what, who + " " + what,
-                         "element " + std::to_string(e.id), src);
+      element_issues.add(std::string(keyword) + " " + what, who + " " + what, std::to_string(e.id), src);
     }
     // A 4-node tetrahedron written with N5..N8 blank: validate_model names the element kind.
     bool tet = false;
@@ -87,8 +94,8 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
       if (!nodes.count(n) && !(tet && n == 0)) {
         std::string what = "refers to undefined node " + std::to_string(n);
         if (n == 0) what += " (a blank node field)";
-        element_issues.add(std::string(keyword) + " refers to an undefined node", who + " " + what,
-                           "element " + std::to_string(e.id) + " -> node " + std::to_string(n), src);
+        element_issues.add(std::string(keyword) + " refers to undefined nodes", who + " " + what,
+                           std::to_string(e.id) + " -> " + std::to_string(n), src, "references (element -> node)");
       }
   };
   for (const auto& e : m.solids) check_element(e, "*ELEMENT_SOLID");

@@ -127,12 +127,12 @@ void check_elements(const model::Model& m, Problems& p) {
     if (const char* kind = degenerate_kind(e.n)) {
       unimplemented.add(std::string("*ELEMENT_SOLID: ") + kind + " are not supported (only 8-node hexahedra)",
                         "*ELEMENT_SOLID " + id + " is one of the " + kind + ", which are not supported",
-                        "element " + id, src);
+                        id, src);
       continue;
     }
     if (std::set<Id>(e.n.begin(), e.n.end()).size() != 8) {
       bad.add("*ELEMENT_SOLID: degenerate hexahedra (repeated nodes in a form slideline does not know)",
-              "*ELEMENT_SOLID " + id + " repeats a node", "element " + id, src);
+              "*ELEMENT_SOLID " + id + " repeats a node", id, src);
       continue;
     }
     hex8::NodeMat X;
@@ -152,7 +152,7 @@ void check_elements(const model::Model& m, Problems& p) {
               "from the face N5-N8)",
               "*ELEMENT_SOLID " + id + " has non-positive volume " + num(v) +
                   " (inverted: list N1-N4 counter-clockwise seen from the face N5-N8)",
-              "element " + id, src);
+              id, src);
   }
   for (const auto& e : m.shells) {
     const auto src = model::element_source(m, e);
@@ -161,10 +161,10 @@ void check_elements(const model::Model& m, Problems& p) {
     if (e.n[2] == e.n[3] && distinct.size() == 3)
       unimplemented.add("*ELEMENT_SHELL: triangular shells (N3 = N4) are not implemented",
                         "*ELEMENT_SHELL " + id + " is a triangle (N3 = N4), which is not implemented",
-                        "element " + id, src);
+                        id, src);
     else if (distinct.size() != 4)
       bad.add("*ELEMENT_SHELL: degenerate quadrilaterals (repeated nodes)",
-              "*ELEMENT_SHELL " + id + " repeats a node", "element " + id, src);
+              "*ELEMENT_SHELL " + id + " repeats a node", id, src);
   }
   bad.append_to(p.input, 1);
   unimplemented.append_to(p.unimplemented, 1);
