@@ -376,6 +376,23 @@ class DeckReader {
       ctx.warn(number, "a line holding only '*' ignored");
       return false;
     }
+    // Keywords are printable ASCII: anything else means binary data or a corrupted file.
+    const auto printable = [](char c) { return c > ' ' && c < 127; };
+    if (!std::all_of(kw.begin(), kw.end(), printable)) {
+      std::string shown;
+      for (char c : kw.substr(0, 24)) {
+        if (printable(c)) {
+          shown += c;
+        } else {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(c));
+          shown += buf;
+        }
+      }
+      throw InputError(ctx.where(number) + "'" + shown + (kw.size() > 24 ? "...'" : "'") +
+                       " is not a keyword (non-text bytes): the file is not a keyword deck, or it is "
+                       "corrupted");
+    }
     if (kw == "*KEYWORD") {
       // "*KEYWORD [memory] LONG=Y I10=Y": the format of the rest of this file.
       if (rest.find("LONG=Y") != std::string::npos) file_format = Format::wide;

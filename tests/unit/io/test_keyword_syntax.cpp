@@ -156,6 +156,13 @@ TEST(KeywordSyntax, FilesWithoutKeywordsAreRefused) {
     bytes.push_back(static_cast<char>(x & 0xff));
   }
   EXPECT_THROW(read_keyword_string(bytes, "random.bin"), Error);
+  try {
+    read_keyword_string("*KEYWORD\n*NO\x01" "DE\n", "bin.k");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "bin.k:2: '*NO\\x01DE' is not a keyword (non-text bytes): the file is not a keyword "
+                           "deck, or it is corrupted");
+  }
 }
 
 long max_rss_kb() {
