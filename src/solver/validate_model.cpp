@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "../io/issue_groups.hpp"
+#include "../io/keyword_unsupported.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/element/hex8.hpp"
 
@@ -170,6 +171,21 @@ void check_elements(const model::Model& m, Problems& p) {
   unimplemented.append_to(p.unimplemented, 1);
 }
 
+/// Parts that use a card the reader dropped (--ignore-unsupported): name the card, not a
+/// dangling id, when a caller builds without check_references.
+void check_dropped_references(const model::Model& m, Problems& p) {
+  if (m.unsupported.empty()) return;
+  for (const auto& part : m.parts) {
+    const std::pair<std::string_view, Id> uses[] = {
+        {"material", part.mid}, {"section", part.secid}, {"hourglass", part.hgid}, {"equation of state", part.eosid}};
+    for (const auto& [kind, id] : uses)
+      if (id != 0)
+        if (const auto* u = keyword::find_unsupported(m, kind, id))
+          p.todo(part.src, "part " + std::to_string(part.pid) + " uses " + keyword::card_and_place(*u, part.src.file) +
+                               ", not supported");
+  }
+}
+
 }  // namespace
 
 void validate_model(const model::Model& m, const BuildOptions& options) {
@@ -178,6 +194,7 @@ void validate_model(const model::Model& m, const BuildOptions& options) {
   if (m.nodes.empty()) p.bad(deck, "the model has no nodes (*NODE): nothing to run");
   if (m.solids.empty() && m.shells.empty())
     p.bad(deck, "the model has no elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run");
+  check_dropped_references(m, p);
   check_materials(m, p);
   check_controls(m, options, p);
   check_elements(m, p);

@@ -7,6 +7,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/build.hpp"
 
 namespace slideline {
 namespace {
@@ -80,6 +81,14 @@ TEST(KeywordUnsupported, DroppedCardsAreNamedByTheReferenceCheck) {
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].line, 23);  // the *PART card that names MID 3
   EXPECT_EQ(problems[0].message, "part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (line 26), not supported");
+  // build_simulation (validate_model) says the same when a caller skips check_references.
+  try {
+    build_simulation(m);
+    FAIL() << "no exception";
+  } catch (const NotImplementedError& e) {
+    EXPECT_EQ(std::string(e.what()), reader_deck("unsupported_cards.k") +
+                                         ":23: part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (line 26), not supported");
+  }
   // The velocity card is referenced by nothing: dropped, listed, and the rest of the deck is clean.
   const auto v = read_keyword_file(reader_deck("dropped_velocity.k"), nullptr, o);
   EXPECT_TRUE(check_references(v).empty());
