@@ -458,9 +458,11 @@ class DeckReader {
   }
 
  public:
-  std::vector<std::string> stack_;  // canonical paths of the files being read, for cycles
+  /// Marks the top-level file as being read, so that an include of it is a cycle.
+  void enter(std::string canonical_path) { stack_.push_back(std::move(canonical_path)); }
 
  private:
+  std::vector<std::string> stack_;  // canonical paths of the files being read, for cycles
   model::Model& model_;
   DeckState& deck_;
   UnsupportedLog& log_;
@@ -475,7 +477,7 @@ model::Model read_deck(std::streambuf& buf, const std::string& name, std::vector
   DeckReader reader(model, deck, log, warnings);
   std::error_code ec;
   const auto canonical = std::filesystem::weakly_canonical(name, ec);
-  reader.stack_.push_back(ec ? name : canonical.string());
+  reader.enter(ec ? name : canonical.string());
   const int keywords = reader.read(buf, name, Format::standard, 0);
   if (keywords == 0)
     throw InputError(name +
