@@ -30,7 +30,10 @@ struct Problems {
   [[noreturn]] void raise() const {
     std::string what;
     for (const auto* list : {&input, &unimplemented})
-      for (const auto& d : *list) what += (what.empty() ? "" : "\n") + to_string(d);
+      for (const auto& d : *list) {
+        if (!what.empty()) what += '\n';
+        what += to_string(d);
+      }
     if (input.empty()) throw NotImplementedError(what);
     throw InputError(what);
   }
