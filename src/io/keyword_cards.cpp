@@ -468,7 +468,8 @@ const std::vector<Entry>& table() {
        })},
       {"*CONTROL_TERMINATION", nullptr, plain([](const Context& c, Block& b, Model& m) {
          m.termination.src = c.source(b.line);
-         single_card(c, b, [&](const Card& k, const Line&) {
+         single_card(c, b, [&](const Card& k, const Line& l) {
+           m.termination.src = c.source(l.number);
            k.get(0, "ENDTIM", m.termination.endtim);
            k.get(1, "ENDCYC", m.termination.endcyc);
          });

@@ -55,7 +55,7 @@ TEST(ValidateModel, ControlsNameTheirCards) {
             deck("reader/tssfac.k") +
                 ":7: field TSSFAC of *CONTROL_TIMESTEP must be in (0, 1] (0 = the default 0.9; got 1.5)");
   EXPECT_EQ(validation("reader/zero_end_time.k"),
-            deck("reader/zero_end_time.k") + ":4: field ENDTIM of *CONTROL_TERMINATION must be positive (got 0)");
+            deck("reader/zero_end_time.k") + ":5: field ENDTIM of *CONTROL_TERMINATION must be positive (got 0)");
   model::Model m = read_keyword_file(deck("unit_cube.k"));
   BuildOptions o;
   o.end_time = 1.0;
