@@ -2,6 +2,7 @@
 // Internal to the keyword reader: deck lines grouped into keyword blocks, and field access on one
 // card (fixed columns or free format, standard or long format, &parameter substitution) with
 // located error messages. Not installed.
+#include <deque>
 #include <map>
 #include <span>
 #include <string>
@@ -101,7 +102,7 @@ class Card {
   std::span<const int> widths_;
   bool free_ = false;
   std::vector<std::string_view> free_fields_;
-  mutable std::vector<std::string> substituted_;  // texts of &name fields, by field (lazily)
+  mutable std::deque<std::string> substituted_;  // texts of &name fields (a deque: views stay valid)
 };
 
 /// Parses a real number (Fortran 'D' exponents and exponents without a letter, "1.5-3", accepted);

@@ -149,8 +149,7 @@ std::string_view Card::raw(int i) const {
     throw InputError(ctx_.where(line_.number) + place(i) + " of " + std::string(keyword_) +
                      ": parameter &" + name +
                      " is not defined (a *PARAMETER must come before the cards that use it)");
-  if (substituted_.size() < static_cast<std::size_t>(i + 1)) substituted_.resize(static_cast<std::size_t>(i + 1));
-  auto& text = substituted_[static_cast<std::size_t>(i)];
+  auto& text = substituted_.emplace_back();
   if (!negate) {
     text = p->text;
   } else if (p->type == 'C') {
