@@ -69,7 +69,18 @@ class Expression {
       }
     }
   }
+  /// Bounds the recursion: a pathological line ("((((..." or "----...") must not overflow the stack.
+  struct Depth {
+    explicit Depth(Expression& e) : e_(e) {
+      if (++e_.depth_ > kMaxDepth) e_.fail("nested too deeply");
+    }
+    ~Depth() { --e_.depth_; }
+    Expression& e_;
+  };
+  static constexpr int kMaxDepth = 200;
+
   Real power() {
+    const Depth guard(*this);
     const Real base = unary();
     skip();
     if (p_ + 1 < s_.size() && s_[p_] == '*' && s_[p_ + 1] == '*') {
@@ -80,6 +91,7 @@ class Expression {
     return base;
   }
   Real unary() {
+    const Depth guard(*this);
     if (eat('-')) return -unary();
     if (eat('+')) return unary();
     return primary();
@@ -178,6 +190,7 @@ class Expression {
 
   std::string_view s_;
   std::size_t p_ = 0;
+  int depth_ = 0;
   const DeckState& deck_;
   const std::string& where_;
 };

@@ -101,6 +101,44 @@ TEST(KeywordSyntax, ParameterErrorsAreLocated) {
   EXPECT_DOUBLE_EQ(e.e, 2500.0);
 }
 
+TEST(KeywordSyntax, GarbageParametersExpressionsAndIncludesOnlyThrowSlidelineErrors) {
+  // The seed-deck fuzz test never writes these cards: random expressions, names and include paths.
+  const std::string alphabet = "()+-*/^&,.eEdD0123456789 abxyzpi_sqrtmaxR\t\x01\xff";
+  std::uint64_t x = 0x9E3779B97F4A7C15ull;
+  const auto next = [&] {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return x;
+  };
+  int rejected = 0;
+  for (int k = 0; k < 3000; ++k) {
+    std::string junk;
+    const std::size_t n = next() % 40;
+    for (std::size_t i = 0; i < n; ++i) junk += alphabet[next() % alphabet.size()];
+    const std::string decks[] = {
+        "*PARAMETER\nR a            2\n*PARAMETER_EXPRESSION\nR x       " + junk + "\n",
+        "*PARAMETER\n" + junk + "\n*NODE\n1,&a,0,0\n",
+        "*INCLUDE\n" + junk + "\n",
+        "*KEYWORD " + junk + "\n*NODE" + junk.substr(0, 2) + "\n1,0,0,0\n",
+    };
+    for (const auto& d : decks) {
+      try {
+        read_keyword_string(d, "g.k");
+      } catch (const Error&) {
+        ++rejected;
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << "non-slideline exception " << e.what() << " on:\n" << d;
+        return;
+      }
+    }
+  }
+  EXPECT_GT(rejected, 3000);
+  // A pathological expression is refused, not a stack overflow.
+  EXPECT_THROW(read_keyword_string("*PARAMETER_EXPRESSION\nR x       " + std::string(100000, '(') + "1\n", "d.k"),
+               InputError);
+  EXPECT_THROW(read_keyword_string("*PARAMETER_EXPRESSION\nR x       " + std::string(100000, '-') + "1\n", "d.k"),
+               InputError);
+}
+
 TEST(KeywordSyntax, FortranRealsWithoutExponentLetter) {
   const auto m = read_keyword_string("*NODE\n1,2.00000-3,1.5+2,-4.-1\n2,1.5e+2,1.5D-2,+3.0\n", "f.k");
   ASSERT_EQ(m.nodes.size(), 2u);
