@@ -11,6 +11,7 @@
 #include "slideline/material/mooney_rivlin.hpp"
 #include "slideline/element/shell_block.hpp"
 #include "slideline/solver/rigid_body.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace slideline {
 
@@ -508,6 +509,7 @@ struct Builder {
 }  // namespace
 
 std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options) {
+  validate_model(model, options);  // located, collapsed input errors before anything is built
   Builder b(model, options);
   b.build_nodes();
   b.build_curves();
