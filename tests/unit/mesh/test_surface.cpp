@@ -168,12 +168,22 @@ TEST(SurfaceFromParts, MirroredHexahedronStillPointsOutward) {
 
 TEST(SurfaceFromParts, WedgeGivesTwoTriangles) {
   // A triangular prism written as a hexahedron: 5 = 6 and 7 = 8 on a ridge at x = 0.5, z = 1.
+  // The deck builder refuses degenerate solids (the one-point hexahedron cannot run them), so the
+  // block is made directly: the surface builder must still handle a block that holds one.
   model::Model m = test_support::hex_grid_model(1, 1, 1);
-  m.nodes.resize(4);
-  m.nodes.push_back({5, Vec3(0.5, 0, 1), 0, 0});
-  m.nodes.push_back({7, Vec3(0.5, 1, 1), 0, 0});
-  m.solids[0].n = {1, 2, 4, 3, 5, 5, 7, 7};
-  auto sim = build_simulation(m);
+  auto sim = std::make_unique<Simulation>();
+  sim->nodes.resize(6);
+  const Vec3 xs[6] = {m.nodes[0].x, m.nodes[1].x, m.nodes[2].x, m.nodes[3].x, Vec3(0.5, 0, 1), Vec3(0.5, 1, 1)};
+  for (Index i = 0; i < 6; ++i) {
+    sim->nodes.ids[i] = i + 1;
+    sim->nodes.x0.set(i, xs[i]);
+    sim->nodes.x.set(i, xs[i]);
+  }
+  // Node ids 1 2 4 3 5 5 7 7 of the grid model's numbering, as internal indices.
+  std::vector<Index> conn{0, 1, 3, 2, 4, 4, 5, 5};
+  HexHourglass hg;
+  sim->blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(kPart1[0], ElasticSolid(1.0, 1000.0, 0.3), hg,
+                                                                 BulkViscosity{1.5, 0.06}, conn, std::vector<Id>{1}));
   const Surface surf = build_surface_from_parts(sim->blocks, sim->nodes, kPart1, "test");
   ASSERT_EQ(surf.segment_count(), 5);  // the collapsed top face is dropped
   int triangles = 0;
