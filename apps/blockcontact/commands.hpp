@@ -11,5 +11,7 @@ enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kNotImplemented = 3,
 
 void register_run(CLI::App& app, int& exit_code);
 void register_check(CLI::App& app, int& exit_code);
+void register_generate(CLI::App& app, int& exit_code);
+void register_verify(CLI::App& app, int& exit_code);
 
 }  // namespace blockcontact
