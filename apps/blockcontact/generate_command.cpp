@@ -37,7 +37,10 @@ int run_generate(const GenerateOptions& o) {
     const auto path = (std::filesystem::path(o.out_dir) / (name + ".k")).string();
     slideline::write_keyword_file(problem.model, path);
     std::string pairings;
-    for (const auto& p : problem.pairings) pairings += (pairings.empty() ? "" : ", ") + p.name;
+    for (const auto& p : problem.pairings) {
+      if (!pairings.empty()) pairings += ", ";
+      pairings += p.name;
+    }
     fmt::print("{}: {} nodes, {} elements, pairings {}\n", path, problem.model.nodes.size(),
                problem.model.solids.size() + problem.model.shells.size(), pairings);
   }

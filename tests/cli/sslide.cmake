@@ -9,5 +9,11 @@ add_test(NAME cli.verify.help COMMAND blockcontact verify --help)
 set_tests_properties(cli.verify.help PROPERTIES PASS_REGULAR_EXPRESSION "--spec")
 add_test(NAME cli.verify.unknown COMMAND blockcontact verify sslide4 -o ${CMAKE_CURRENT_BINARY_DIR}/verify)
 set_tests_properties(cli.verify.unknown PROPERTIES WILL_FAIL TRUE)
+# The whole pipeline without contact (runs, HDF5/CSV, criteria, report; no plots): the
+# interface criteria fail, so only the output is checked.
+add_test(NAME cli.verify.pipeline COMMAND blockcontact verify sslide9pt --drop-contacts --no-plots
+  -o ${CMAKE_CURRENT_BINARY_DIR}/verify_pipeline)
+set_tests_properties(cli.verify.pipeline PROPERTIES
+  PASS_REGULAR_EXPRESSION "sslide9pt +[0-9.]+ s +FAIL +ran [0-9]+ cycles.*separated: min rel y t>0.15.*report: ")
 set_tests_properties(cli.generate.all cli.generate.list cli.generate.unknown cli.verify.help cli.verify.unknown
-  PROPERTIES LABELS "unit;cli")
+  cli.verify.pipeline PROPERTIES LABELS "unit;cli")
