@@ -15,5 +15,9 @@ add_test(NAME cli.verify.pipeline COMMAND blockcontact verify sslide9pt --drop-c
   -o ${CMAKE_CURRENT_BINARY_DIR}/verify_pipeline)
 set_tests_properties(cli.verify.pipeline PROPERTIES
   PASS_REGULAR_EXPRESSION "sslide9pt +[0-9.]+ s +FAIL +ran [0-9]+ cycles.*separated: min rel y t>0.15.*report: ")
+# The same with the plots (python3-matplotlib, python3-h5py from scripts/setup.sh).
+add_test(NAME cli.verify.plots COMMAND blockcontact verify sslide7k --drop-contacts
+  -o ${CMAKE_CURRENT_BINARY_DIR}/verify_plots --plot-script ${PROJECT_SOURCE_DIR}/scripts/plot_sslide.py)
+set_tests_properties(cli.verify.plots PROPERTIES PASS_REGULAR_EXPRESSION "plot_sslide: 1 problem\\(s\\) plotted")
 set_tests_properties(cli.generate.all cli.generate.list cli.generate.unknown cli.verify.help cli.verify.unknown
-  cli.verify.pipeline PROPERTIES LABELS "unit;cli")
+  cli.verify.pipeline cli.verify.plots PROPERTIES LABELS "unit;cli")
