@@ -101,7 +101,14 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
     return ids.next_set++;
   };
   const Id bottom = add_node_set(p.bottom_support, layer_nodes(lower, 0));
-  const Id right = add_node_set(p.right_support, x_face_nodes(lower, lower.xs.size() - 1));
+  // A rigid skin owns the top-face nodes; LS-DYNA ignores SPCs on rigid-body nodes, so the right
+  // support leaves them out (the bricks below hold the skin).
+  std::vector<Id> right_nodes = x_face_nodes(lower, lower.xs.size() - 1);
+  if (r.rigid_skin) {
+    const auto top = layer_nodes(lower, lower.ys.size() - 1);
+    std::erase_if(right_nodes, [&](Id n) { return std::find(top.begin(), top.end(), n) != top.end(); });
+  }
+  const Id right = add_node_set(p.right_support, right_nodes);
   m.spcs.push_back({bottom, p.bottom_support, bottom, 0, {0, 1, 0, 0, 0, 0}, {}});
   m.spcs.push_back({right, p.right_support, right, 0, {1, 0, 0, 0, 0, 0}, {}});
   sets.upper_nodes = add_node_set(r.name + "_upper_contact_nodes", contact_nodes);

@@ -217,6 +217,13 @@ TEST(Sslide, ContactParametersFollowTheSpec) {
     if (part.pid == skin.skin_part)
       for (const auto& mat : rigid.model.materials)
         if (model::material_id(mat) == part.mid) EXPECT_TRUE(std::holds_alternative<model::MatRigid>(mat));
+  // No support on a rigid-body node (LS-DYNA ignores them): the right support skips the skin.
+  const auto skin_nodes = part_nodes(rigid.model, skin.skin_part);
+  for (const auto& set : rigid.model.node_sets)
+    if (set.title == skin.right_support) {
+      EXPECT_FALSE(set.nodes.empty());
+      for (Id n : set.nodes) EXPECT_FALSE(skin_nodes.count(n)) << "node " << n;
+    }
 }
 
 TEST(Sslide, RelativeDisplacementRemovesCommonMotion) {
