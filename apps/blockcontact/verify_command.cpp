@@ -43,13 +43,19 @@ struct VerifyOptions {
   int threads = 0;
 };
 
-/// The first of `start`'s ancestors (and the executable's) holding `relative`; empty if none.
-std::string find_upwards(const std::string& relative) {
-  std::vector<fs::path> starts{fs::current_path()};
+/// Where to look for repository files: the working directory and the executable's directory.
+std::vector<fs::path> search_roots() {
+  std::vector<fs::path> roots{fs::current_path()};
   std::error_code ec;
   const auto exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) starts.push_back(exe.parent_path());
-  for (auto dir : starts) {
+  if (!ec) roots.push_back(exe.parent_path());
+  return roots;
+}
+
+/// `relative` under the first root or root ancestor that has it; empty if none.
+std::string find_upwards(const std::string& relative) {
+  std::error_code ec;
+  for (auto dir : search_roots()) {
     for (;;) {
       if (fs::exists(dir / relative, ec)) return (dir / relative).string();
       if (!dir.has_parent_path() || dir.parent_path() == dir) break;
@@ -62,9 +68,8 @@ std::string find_upwards(const std::string& relative) {
 std::string locate_spec(const VerifyOptions& o) {
   if (!o.spec_dir.empty()) return o.spec_dir;
   if (const char* env = std::getenv("SLIDELINE_SPEC_DIR"); env && *env) return env;
-  for (const auto& start : {fs::current_path().string(), find_upwards("scripts")})
-    if (!start.empty())
-      if (auto d = sc::find_spec_dir(start); !d.empty()) return d;
+  for (const auto& root : search_roots())
+    if (auto d = sc::find_spec_dir(root.string()); !d.empty()) return d;
   return {};
 }
 
