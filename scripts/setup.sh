@@ -5,6 +5,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libfcl-dev libccd-dev libhdf5-dev
   libgtest-dev libgmock-dev libcli11-dev libfmt-dev libbenchmark-dev
+  python3-matplotlib python3-h5py
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -16,6 +16,8 @@ enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kNotImplemented = 3,
 
 void register_run(CLI::App& app, int& exit_code);
 void register_check(CLI::App& app, int& exit_code);
+void register_generate(CLI::App& app, int& exit_code);
+void register_verify(CLI::App& app, int& exit_code);
 
 /// Reads a deck, printing the reader's warnings to stderr (also when it then throws).
 /// `ignore_unsupported` drops unsupported physics cards instead of failing (deck_input.cpp).

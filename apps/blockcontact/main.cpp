@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
   int exit_code = blockcontact::kOk;
   blockcontact::register_run(app, exit_code);
   blockcontact::register_check(app, exit_code);
+  blockcontact::register_generate(app, exit_code);
+  blockcontact::register_verify(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

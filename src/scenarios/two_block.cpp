@@ -1,102 +1,15 @@
 #include "slideline/scenarios/two_block.hpp"
 
+#include "block_mesh.hpp"
+
 #include <algorithm>
-#include <cmath>
-#include <map>
-#include <tuple>
 
 namespace slideline::scenarios {
 
-namespace {
-
-std::vector<Real> lines(Real start, Real length, int n) {
-  std::vector<Real> v(n + 1);
-  for (int k = 0; k <= n; ++k) v[k] = start + length * k / n;
-  return v;
-}
-
-std::vector<Real> merge_lines(std::vector<Real> a, const std::vector<Real>& b, Real lo, Real hi) {
-  for (Real v : b)
-    if (v > lo && v < hi) a.push_back(v);
-  std::sort(a.begin(), a.end());
-  a.erase(std::unique(a.begin(), a.end(), [](Real p, Real q) { return std::abs(p - q) < 1e-12; }),
-          a.end());
-  return a;
-}
-
-/// Structured hexahedral grid on the given coordinate lines. Nodes are looked up in (and added
-/// to) `shared` by exact coordinates, so two grids on the same lines share their common nodes.
-struct Grid {
-  std::vector<Real> xs, ys, zs;
-  std::vector<Id> node;  // (i, j, k) -> node id
-
-  Id at(std::size_t i, std::size_t j, std::size_t k) const {
-    return node[i + xs.size() * (j + ys.size() * k)];
-  }
-};
-
-using CoordKey = std::tuple<long long, long long, long long>;
-CoordKey key(const Vec3& x) {
-  auto q = [](Real v) { return static_cast<long long>(std::llround(v * 1e9)); };
-  return {q(x[0]), q(x[1]), q(x[2])};
-}
-
-struct MeshWriter {
-  model::Model& m;
-  Id next_node, next_elem;
-  std::map<CoordKey, Id> shared;
-
-  Grid add_grid(std::vector<Real> xs, std::vector<Real> ys, std::vector<Real> zs, Id pid,
-                bool share) {
-    Grid g{std::move(xs), std::move(ys), std::move(zs), {}};
-    g.node.resize(g.xs.size() * g.ys.size() * g.zs.size());
-    for (std::size_t k = 0; k < g.zs.size(); ++k)
-      for (std::size_t j = 0; j < g.ys.size(); ++j)
-        for (std::size_t i = 0; i < g.xs.size(); ++i) {
-          const Vec3 x(g.xs[i], g.ys[j], g.zs[k]);
-          Id id = 0;
-          if (share) {
-            const auto f = shared.find(key(x));
-            if (f != shared.end()) id = f->second;
-          }
-          if (id == 0) {
-            id = next_node++;
-            m.nodes.push_back({id, x, 0, 0});
-            shared.emplace(key(x), id);
-          }
-          g.node[i + g.xs.size() * (j + g.ys.size() * k)] = id;
-        }
-    for (std::size_t k = 0; k + 1 < g.zs.size(); ++k)
-      for (std::size_t j = 0; j + 1 < g.ys.size(); ++j)
-        for (std::size_t i = 0; i + 1 < g.xs.size(); ++i) {
-          model::SolidElement e;
-          e.id = next_elem++;
-          e.pid = pid;
-          e.n = {g.at(i, j, k),         g.at(i + 1, j, k),         g.at(i + 1, j + 1, k),
-                 g.at(i, j + 1, k),     g.at(i, j, k + 1),         g.at(i + 1, j, k + 1),
-                 g.at(i + 1, j + 1, k + 1), g.at(i, j + 1, k + 1)};
-          m.solids.push_back(e);
-        }
-    return g;
-  }
-};
-
-Id nearest_on_face(const model::Model& m, const Grid& g, std::size_t j, Real x, Real z) {
-  Id best = 0;
-  Real d = 1e300;
-  for (std::size_t k = 0; k < g.zs.size(); ++k)
-    for (std::size_t i = 0; i < g.xs.size(); ++i) {
-      const Real dd = std::hypot(g.xs[i] - x, g.zs[k] - z);
-      if (dd < d) {
-        d = dd;
-        best = g.at(i, j, k);
-      }
-    }
-  (void)m;
-  return best;
-}
-
-}  // namespace
+using detail::Grid;
+using detail::lines;
+using detail::merge_lines;
+using detail::MeshWriter;
 
 TwoBlockIds add_solid_pair(model::Model& m, const TwoBlockOptions& o) {
   const bool first = m.materials.empty();
@@ -149,7 +62,7 @@ TwoBlockIds add_solid_pair(model::Model& m, const TwoBlockOptions& o) {
   m.parts.push_back({ids.upper_part, "upper_block", m.solid_sections.front().secid,
                      model::material_id(m.materials.front()), 0, m.hourglasses.front().hgid, {}});
 
-  MeshWriter w{m, next_node, next_elem, {}};
+  MeshWriter w(m, next_node, next_elem);
   const Grid lower = w.add_grid(lx, ly, lz, ids.lower_part, false);
   const Grid upper = w.add_grid(ux, uy, uz, ids.upper_part, o.merged);
 
@@ -182,8 +95,8 @@ TwoBlockIds add_solid_pair(model::Model& m, const TwoBlockOptions& o) {
   for (auto& ps : m.part_sets)
     if (ps.sid == m.body_load_parts->psid) ps.parts.push_back(ids.upper_part);
 
-  ids.monitor_upper = nearest_on_face(m, upper, 0, xu + 0.5, 0.51);
-  ids.monitor_lower = nearest_on_face(m, lower, lower.ys.size() - 1, xu + 0.5, 0.51);
+  ids.monitor_upper = detail::nearest_in_layer(upper, 0, xu + 0.5, 0.51);
+  ids.monitor_lower = detail::nearest_in_layer(lower, lower.ys.size() - 1, xu + 0.5, 0.51);
   m.database.history_nodes.push_back(ids.monitor_upper);
   if (ids.monitor_lower != ids.monitor_upper) m.database.history_nodes.push_back(ids.monitor_lower);
   return ids;

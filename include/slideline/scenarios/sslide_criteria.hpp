@@ -1,0 +1,71 @@
+#pragma once
+/// The verification criteria of the 19 sslide problems (issue 11, docs/verification.md): the
+/// closed-form expected forces, the histories a criterion reads, and the evaluation of every
+/// criterion per pairing into table rows.
+///
+/// Conventions (spec README, "Sign conventions"): F = force on the upper (slave) body,
+/// R = force the lower body exerts on its supports (sum of the bottom and right support groups),
+/// relative displacement = u_slave - u_master surface point (negative y = interpenetration).
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "slideline/io/output_sink.hpp"
+#include "slideline/scenarios/dyna3d_reported.hpp"
+#include "slideline/scenarios/sslide.hpp"
+
+namespace slideline::scenarios {
+
+/// The closed-form quasi-static answer of one pairing at time t (report section 5).
+struct SslideExpected {
+  Vec3 force = Vec3::Zero();     ///< F on the upper body
+  Vec3 reaction = Vec3::Zero();  ///< R = -F
+};
+SslideExpected sslide_expected(const SslideProblem& problem, const SslidePairing& pairing, Real t);
+
+/// Channel paths of a pairing (docs/output.md). Type 12 reads the force transmitted between the
+/// two bodies (`interfaces/<title>/transmitted_force`) in place of the slave force.
+std::string sslide_force_channel(const SslideProblem& problem, const SslidePairing& pairing);
+std::string sslide_master_channel(const SslidePairing& pairing);
+std::string sslide_support_channel(const std::string& support_title);
+std::string sslide_node_channel(Id node);
+/// Every channel the criteria of a problem read.
+std::vector<std::string> sslide_channels(const SslideProblem& problem);
+
+/// The 3-component time series the criteria read, by channel path.
+struct SslideHistories {
+  std::vector<Real> time;
+  std::map<std::string, std::vector<Vec3>> channels;
+
+  bool has(const std::string& path) const { return channels.count(path) != 0; }
+};
+
+/// From an in-memory recording; channels the run did not record are left out.
+SslideHistories sslide_histories(const History& history, const SslideProblem& problem);
+/// From a run's HDF5 file (docs/output.md); channels absent from the file are left out.
+/// Throws Error when the file or its /time cannot be read.
+SslideHistories sslide_histories_from_hdf5(const std::string& path, const SslideProblem& problem);
+
+/// One row of the verification table.
+struct SslideCriterion {
+  std::string problem;
+  std::string pairing;
+  std::string criterion;        ///< e.g. "mean F_y [0.2,0.3]"
+  Real measured = 0.0;          ///< NaN when it could not be measured (see note)
+  std::string bound;            ///< the acceptance bound as text, e.g. "10 +- 1%"
+  std::optional<Real> dyna3d;   ///< DYNA3D's figure for the same quantity, when reported
+  bool pass = false;
+  std::string note;             ///< why a row failed to measure, or where a bound comes from
+};
+
+/// Evaluates every criterion of every pairing. A channel that is missing fails the rows that need
+/// it (measured = NaN, note names the channel); nothing is skipped silently.
+std::vector<SslideCriterion> evaluate_sslide_criteria(const SslideProblem& problem,
+                                                      const SslideHistories& histories,
+                                                      const Dyna3dReported& reported);
+
+/// The relative displacement series of a pairing's monitor; empty when a node channel is missing.
+std::vector<Vec3> sslide_relative_displacement(const SslidePairing& pairing, const SslideHistories& histories);
+
+}  // namespace slideline::scenarios

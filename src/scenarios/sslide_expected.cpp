@@ -1,0 +1,115 @@
+// Closed-form answers of the sslide problems (report section 5), the channel names the criteria
+// read, and loading those channels from a run (in memory or HDF5).
+#include <algorithm>
+#include <cmath>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/hdf5_reader.hpp"
+#include "slideline/scenarios/sslide_criteria.hpp"
+
+namespace slideline::scenarios {
+
+namespace {
+Real ramp(Real s) { return std::clamp(s, 0.0, 1.0); }
+Real sign_of(Real v) { return v < 0.0 ? -1.0 : 1.0; }
+}  // namespace
+
+SslideExpected sslide_expected(const SslideProblem& pr, const SslidePairing& p, Real t) {
+  using Ideal = SslideIdealization;
+  const Real load_y = p.py * ramp(t / 0.1);          // compression > 0: F_y on the upper body
+  const Real load_x = p.px * ramp((t - 0.3) / 0.1);  // applied along +x
+  const Real fs = pr.mu_s * std::abs(p.py), fk = pr.mu_k * std::abs(p.py);
+  SslideExpected e;
+  e.force.y() = load_y;
+  switch (pr.idealization) {
+    case Ideal::frictionless: break;
+    case Ideal::tied: e.force.x() = -load_x; break;
+    case Ideal::frictional:
+      // Stuck while the load is below f_s; once it exceeds f_s the block slides against f_k.
+      if (std::abs(p.px) > fs && std::abs(load_x) >= fs && t > 0.3)
+        e.force.x() = -sign_of(p.px) * fk;
+      else
+        e.force.x() = -load_x;
+      break;
+    case Ideal::tension_failure: {
+      const Real ff = pr.failure_force * pr.cells;
+      if (std::abs(load_y) >= ff && t >= pr.failure_time) e.force.y() = 0.0;
+      break;
+    }
+    case Ideal::shear_failure: {
+      const Real ff = pr.failure_force * pr.cells;
+      e.force.x() = (std::abs(load_x) >= ff && t >= pr.failure_time) ? -sign_of(p.px) * fk : -load_x;
+      break;
+    }
+  }
+  e.reaction = -e.force;
+  return e;
+}
+
+std::string sslide_force_channel(const SslideProblem& problem, const SslidePairing& p) {
+  const char* leaf = problem.type == model::ContactType::automatic ? "transmitted_force" : "slave_force";
+  return "interfaces/" + p.contact_title + "/" + leaf;
+}
+std::string sslide_master_channel(const SslidePairing& p) { return "interfaces/" + p.contact_title + "/master_force"; }
+std::string sslide_support_channel(const std::string& title) { return "supports/" + title + "/reaction"; }
+std::string sslide_node_channel(Id node) { return "nodes/" + std::to_string(node) + "/displacement"; }
+
+std::vector<std::string> sslide_channels(const SslideProblem& problem) {
+  std::vector<std::string> v;
+  for (const auto& p : problem.pairings) {
+    v.push_back(sslide_force_channel(problem, p));
+    if (problem.type != model::ContactType::automatic) v.push_back(sslide_master_channel(p));
+    v.push_back(sslide_support_channel(p.bottom_support));
+    v.push_back(sslide_support_channel(p.right_support));
+    v.push_back(sslide_node_channel(p.monitor.slave_node));
+    for (Id n : p.monitor.master_nodes) v.push_back(sslide_node_channel(n));
+  }
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+SslideHistories sslide_histories(const History& history, const SslideProblem& problem) {
+  SslideHistories h;
+  h.time = history.time();
+  for (const auto& path : sslide_channels(problem)) {
+    if (history.find(path) < 0) continue;
+    const auto x = history.series(path, 0), y = history.series(path, 1), z = history.series(path, 2);
+    auto& s = h.channels[path];
+    s.resize(x.size());
+    for (std::size_t r = 0; r < x.size(); ++r) s[r] = Vec3(x[r], y[r], z[r]);
+  }
+  return h;
+}
+
+SslideHistories sslide_histories_from_hdf5(const std::string& file, const SslideProblem& problem) {
+  SslideHistories h;
+  h.time = read_hdf5_dataset(file, "/time").values;
+  for (const auto& path : sslide_channels(problem)) {
+    if (!hdf5_exists(file, "/" + path)) continue;
+    const auto d = read_hdf5_dataset(file, "/" + path);
+    if (d.dims.size() != 2 || d.dims[1] != 3 || d.dims[0] != h.time.size())
+      throw Error(file + ": /" + path + " is not an (n x 3) dataset matching /time");
+    auto& s = h.channels[path];
+    s.resize(d.dims[0]);
+    for (std::size_t r = 0; r < d.dims[0]; ++r) s[r] = Vec3(d.values[3 * r], d.values[3 * r + 1], d.values[3 * r + 2]);
+  }
+  return h;
+}
+
+std::vector<Vec3> sslide_relative_displacement(const SslidePairing& p, const SslideHistories& h) {
+  const auto s = h.channels.find(sslide_node_channel(p.monitor.slave_node));
+  if (s == h.channels.end()) return {};
+  std::array<const std::vector<Vec3>*, 4> m{};
+  for (int k = 0; k < 4; ++k) {
+    const auto f = h.channels.find(sslide_node_channel(p.monitor.master_nodes[k]));
+    if (f == h.channels.end()) return {};
+    m[k] = &f->second;
+  }
+  std::vector<Vec3> rel(s->second.size());
+  for (std::size_t r = 0; r < rel.size(); ++r)
+    rel[r] = relative_displacement(p.monitor, s->second[r], {(*m[0])[r], (*m[1])[r], (*m[2])[r], (*m[3])[r]});
+  return rel;
+}
+
+}  // namespace slideline::scenarios
