@@ -5,6 +5,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/element/hex_block.hpp"
 #include "slideline/material/elastic.hpp"
@@ -496,12 +497,16 @@ struct Builder {
   }
 
   void build_contacts() {
-    if (!m.contacts.empty()) {
-      const auto& c = m.contacts.front();
-      throw NotImplementedError(describe(c.src) + ": " +
-                                (c.keyword.empty() ? std::string("*CONTACT") : c.keyword) +
-                                " (DYNA3D type " + std::to_string(static_cast<int>(c.type)) +
-                                ") is not implemented yet");
+    const ContactBuildContext ctx{m, sim->blocks, sim->nodes, sim->sets};
+    std::vector<std::string> titles;
+    for (std::size_t k = 0; k < m.contacts.size(); ++k) {
+      const auto& card = m.contacts[k];
+      const std::string title = contact_title(card, k + 1);
+      if (std::find(titles.begin(), titles.end(), title) != titles.end())
+        throw InputError(describe(card.src) + ": contact title '" + title +
+                         "' is used by an earlier contact; output channels need distinct titles");
+      titles.push_back(title);
+      sim->contacts.add(make_contact_interface(card, k + 1, ctx));
     }
   }
 };
