@@ -147,7 +147,8 @@ inline Projection project_point_to_quad(const Vec3& p, const SegmentCorners& c,
     const Real deta = -(a * g1 - b * g0) / det;
     xi = std::clamp(xi + dxi, Real(-2), Real(2));
     eta = std::clamp(eta + deta, Real(-2), Real(2));
-    if (std::max(std::abs(dxi), std::abs(deta)) < 1e-13) {
+    // Quadratic convergence: after a step below 1e-10 the error is at round-off level.
+    if (std::max(std::abs(dxi), std::abs(deta)) < 1e-10) {
       converged = true;
       break;
     }

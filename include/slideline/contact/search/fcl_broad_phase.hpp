@@ -2,7 +2,7 @@
 /// Broad phase on FCL's dynamic AABB tree (fcl::detail::HierarchyTree<AABB>). FCL stays in
 /// src/contact/search/fcl_broad_phase.cpp behind a pointer to an incomplete type.
 ///
-/// build() builds the tree top-down from the inflated segment boxes; update() writes the new boxes
+/// build() builds the tree from the inflated segment boxes (Morton order); update() writes the new boxes
 /// into the leaves and refits the internal boxes bottom-up (same topology, no allocation), so the
 /// tree stays correct however far the segments move, only less tight: rebuild (call build()
 /// again) when the mesh has moved far, e.g. every N searches. Queries walk the tree with an
