@@ -17,6 +17,7 @@
 #include <array>
 #include <span>
 
+#include "slideline/contact/search/broad_phase.hpp"
 #include "slideline/contact/search/closest_point.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/mesh/surface.hpp"
@@ -101,6 +102,30 @@ inline SegmentProjection nearest_segment(const Vec3& p, std::span<const Index> s
     }
   }
   return best;
+}
+
+/// The same over one node's broad-phase candidates (a run of equal `node` in BroadPhase::query's
+/// output; only `segment` is read). Segment -1 when the run is empty. No allocation.
+inline SegmentProjection nearest_segment(const Vec3& p, std::span<const Candidate> candidates,
+                                         const Surface& surface, const Vec3Field& x,
+                                         const ProjectionOptions& opt = {}) {
+  SegmentProjection best;
+  for (const Candidate& c : candidates) {
+    const Projection pr = project_point_to_segment(p, surface, c.segment, x, opt);
+    if (best.segment < 0 || is_better_projection(pr, c.segment, best.projection, best.segment, opt)) {
+      best.segment = c.segment;
+      best.projection = pr;
+    }
+  }
+  return best;
+}
+
+/// The end of the run of candidates of node candidates[begin].node, starting at begin (the
+/// output of BroadPhase::query is grouped by node): candidates[begin .. end) share the node.
+inline std::size_t candidate_run_end(std::span<const Candidate> candidates, std::size_t begin) {
+  std::size_t end = begin;
+  while (end < candidates.size() && candidates[end].node == candidates[begin].node) ++end;
+  return end;
 }
 
 }  // namespace slideline

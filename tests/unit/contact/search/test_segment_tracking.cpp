@@ -93,3 +93,57 @@ TEST(SegmentTracking, WarpedPlateAgreesWithFullSearch) {
   }
   EXPECT_GE(moves, 8);
 }
+
+namespace {
+// The plate of make_plate with every quad split into two triangles along its 0-2 diagonal
+// (stored as quads with corner 3 = corner 2, counter-clockwise, normal +z).
+Surface triangulated_plate(Vec3Field& x, Index nx, Index ny) {
+  const Surface quads = test::make_plate(x, nx, ny, 1.0, Vec3::Zero());
+  Surface s;
+  for (Index q = 0; q < quads.segment_count(); ++q) {
+    const Index* c = &quads.conn[4 * static_cast<std::size_t>(q)];
+    for (Index n : {c[0], c[1], c[2], c[2]}) s.conn.push_back(n);
+    for (Index n : {c[0], c[2], c[3], c[3]}) s.conn.push_back(n);
+  }
+  test::finish_surface(s);
+  return s;
+}
+}  // namespace
+
+TEST(SegmentTracking, TriangulatedPlateAgreesWithFullSearch) {
+  Vec3Field x;
+  const Surface s = triangulated_plate(x, 4, 3);
+  ASSERT_TRUE(s.is_triangle(0));
+  // Triangle 0 (cell 0, lower right half): edges 0 (0-1), 1 (1-2, the x = 1 side, shared with
+  // the upper-left triangle 3 of cell 1) and 3 (2-0, the diagonal, shared with triangle 1); the
+  // collapsed edge 2 has no neighbour.
+  EXPECT_EQ(neighbor_across_edge(s, 0, 1), 3);
+  EXPECT_EQ(neighbor_across_edge(s, 0, 2), -1);
+  EXPECT_EQ(neighbor_across_edge(s, 0, 3), 1);
+  const std::vector<Index> all = all_segments(s);
+  Index seg = nearest_segment(Vec3(3.6, 1.5, 0.1), all, s, x).segment;
+  int moves = 0;
+  for (int t = 0; t <= 70; ++t) {
+    const Real a = 0.09 * t;
+    const Vec3 p(2.0 + 1.6 * std::cos(a), 1.5 + 1.2 * std::sin(a), 0.1);
+    const SegmentProjection tr = track_segment(p, seg, s, x);
+    const SegmentProjection full = nearest_segment(p, all, s, x);
+    ASSERT_EQ(tr.segment, full.segment) << "step " << t;
+    EXPECT_NEAR(tr.projection.gap, 0.1, 1e-14);
+    EXPECT_EQ(tr.projection.shape[3], 0.0);
+    moves += tr.segment != seg;
+    seg = tr.segment;
+  }
+  EXPECT_GE(moves, 10);
+}
+
+TEST(SegmentTracking, NearestOverOneNodesBroadPhaseRun) {
+  Vec3Field x;
+  const Surface s = test::make_plate(x, 3, 3, 1.0, Vec3::Zero());
+  const std::vector<Candidate> cand{{7, 0}, {7, 1}, {7, 4}, {9, 4}, {9, 5}};
+  EXPECT_EQ(candidate_run_end(cand, 0), 3u);
+  EXPECT_EQ(candidate_run_end(cand, 3), 5u);
+  const std::span<const Candidate> run(cand.data(), 3);
+  EXPECT_EQ(nearest_segment(Vec3(1.5, 1.5, 0.2), run, s, x).segment, 4);
+  EXPECT_EQ(nearest_segment(Vec3(1.0, 0.5, 0.2), run, s, x).segment, 0);  // tie on the 0-1 edge
+}
