@@ -14,7 +14,7 @@
 #include "../tests/unit/contact/plate_surface.hpp"
 #include "slideline/contact/search/brute_force_broad_phase.hpp"
 #include "slideline/contact/search/fcl_broad_phase.hpp"
-#include "slideline/contact/search/segment_tracking.hpp"
+#include "slideline/contact/search/narrow_phase.hpp"
 
 using namespace slideline;
 
@@ -154,5 +154,28 @@ void BM_TrackingStep(benchmark::State& state) {
   set_rate(state, "t_per_node", static_cast<double>(s.slaves.size()));
 }
 BENCHMARK(BM_TrackingStep)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// A full search step: update + query + nearest candidate per node (the work done when the search
+// cadence says a search is due).
+void BM_FclSearchAndNearest(benchmark::State& state) {
+  Scene& s = scene(static_cast<Index>(state.range(0)));
+  FclBroadPhase bp;
+  bp.build(s.master, s.x, BroadPhaseOptions{0.1, {}});
+  std::vector<Candidate> cand;
+  std::vector<SegmentProjection> nearest(s.slaves.size());
+  const std::vector<Real> x0 = s.x.x;
+  long step = 0;
+  for (auto _ : state) {
+    slide(s, step++, 0.01);
+    bp.update(s.x);
+    bp.query(s.slaves, s.x, 0.0, cand);
+    assign_nearest_segments(s.slaves, cand, s.master, s.x, nearest);
+    benchmark::DoNotOptimize(nearest.data());
+  }
+  s.x.x = x0;
+  state.counters["segments"] = static_cast<double>(s.master.segment_count());
+  set_rate(state, "t_per_node", static_cast<double>(s.slaves.size()));
+}
+BENCHMARK(BM_FclSearchAndNearest)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -11,8 +11,10 @@
 /// index in both, tracking agrees with `nearest_segment` over all segments on flat and convex
 /// surfaces, including points exactly above edges and corners, and on curved surfaces while the
 /// point is near the surface (distance small against the radius of curvature). Far from a wavy
-/// surface the distance has several local minima and the walk may stop in one: the periodic
-/// broad-phase search (SearchCadence) resets it.
+/// surface the distance has several local minima and the walk may stop in one; over a valley (a
+/// concave kink between two segments) both sides may hold an interior minimum and the walk keeps
+/// the one it is on (the two distances differ to second order). The periodic broad-phase search
+/// (SearchCadence, then nearest_segment) resets it.
 #include <algorithm>
 #include <array>
 #include <span>
