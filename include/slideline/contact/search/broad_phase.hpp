@@ -9,6 +9,7 @@
 /// - Domain limit (DYNA3D Type 12's bounding box): when `domain` is set, a segment takes part
 ///   only if its un-inflated box overlaps the domain, and a node only if it lies inside the closed
 ///   domain. Segments are re-classified on every update().
+/// - With `skip_incident`, a node never gets a segment it is a corner of (single-surface contact).
 /// - Candidates come out grouped by node in the order of the query list, each node's segments
 ///   ascending. With an ascending node list (Surface::nodes is one) that is "sorted by node, then
 ///   segment". The result does not depend on the number of threads.
@@ -70,6 +71,9 @@ struct BroadPhaseOptions {
   Real margin = 0.0;
   /// Only segments whose box meets this box, and nodes inside it, take part (Type 12 domain).
   std::optional<Aabb> domain;
+  /// Leave out the segments a node is a corner of (single-surface contact, Type 12, where every
+  /// node is a slave and every segment a master: a node always touches its own segments).
+  bool skip_incident = false;
 };
 
 /// The broad-phase interface. Derived classes only index the segment boxes; the box rules, the
@@ -112,7 +116,10 @@ class BroadPhase {
         cs.scratch.hits.clear();
         collect(Aabb::around(p, r), cs.scratch);
         std::sort(cs.scratch.hits.begin(), cs.scratch.hits.end());
-        for (Index s : cs.scratch.hits) cs.pairs.push_back({node, s});
+        for (Index s : cs.scratch.hits) {
+          if (options_.skip_incident && is_corner(node, s)) continue;
+          cs.pairs.push_back({node, s});
+        }
       }
     });
     out.clear();
@@ -153,6 +160,11 @@ class BroadPhase {
     QueryScratch scratch;
     std::vector<Candidate> pairs;
   };
+
+  bool is_corner(Index node, Index s) const {
+    const Index* c = &master_->conn[4 * static_cast<std::size_t>(s)];
+    return c[0] == node || c[1] == node || c[2] == node || c[3] == node;
+  }
 
   void compute_boxes(const Vec3Field& x) {
     const Surface& m = *master_;

@@ -253,3 +253,34 @@ TEST(SearchCadence, CandidatesStayCompleteBetweenSearches) {
   EXPECT_GT(searches, 5);
   EXPECT_LT(searches, 40);
 }
+
+TEST(BroadPhase, SkipIncidentLeavesOutANodesOwnSegments) {
+  // Single-surface contact on one flat plate: with a margin below the cell size a node's boxes
+  // are exactly those of its own segments, so it gets its node_segments row, or nothing when
+  // incident segments are skipped.
+  Vec3Field x;
+  const Surface s = test::make_plate(x, 5, 4, 1.0, Vec3::Zero());
+  for (bool skip : {false, true}) {
+    BroadPhaseOptions opt;
+    opt.margin = 0.3;
+    opt.skip_incident = skip;
+    FclBroadPhase fcl;
+    BruteForceBroadPhase brute;
+    fcl.build(s, x, opt);
+    brute.build(s, x, opt);
+    std::vector<Candidate> a, b;
+    fcl.query(s.nodes, x, 0.0, a);
+    brute.query(s.nodes, x, 0.0, b);
+    EXPECT_EQ(a, b);
+    std::vector<Candidate> expected;
+    if (!skip) {
+      for (Index i = 0; i < s.node_count(); ++i) {
+        for (Index j = s.node_segments.begin(i); j < s.node_segments.end(i); ++j) {
+          expected.push_back({s.nodes[static_cast<std::size_t>(i)], s.node_segments.value[static_cast<std::size_t>(j)]});
+        }
+      }
+      ASSERT_EQ(expected.size(), 80u);  // 20 quads x 4 corners
+    }
+    EXPECT_EQ(a, expected);
+  }
+}
