@@ -107,12 +107,14 @@ void BM_FclQueryOnly(benchmark::State& state) {
 }
 BENCHMARK(BM_FclQueryOnly)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
-// One closest-point projection onto a warped quadrilateral; Arg 0: points over the interior
-// (Newton only), Arg 1: points beyond the edges (Newton + closed-form edges).
+// One closest-point projection. Arg 0: a mildly warped quad (corners +-1 % of a side off-plane),
+// points over the interior (Newton only); 1: the same, points beyond the edges (Newton + the
+// closed-form edges); 2: a strongly warped quad (+-10 %), points over the interior (Newton, the
+// edges and a Newton restart).
 void BM_Projection(benchmark::State& state) {
-  const SegmentCorners c{Vec3(0.0, 0.0, 0.1), Vec3(1.1, 0.05, -0.1), Vec3(0.95, 0.9, 0.1),
-                         Vec3(-0.1, 1.05, -0.1)};
-  const Real spread = state.range(0) == 0 ? 0.8 : 2.5;
+  const Real w = state.range(0) == 2 ? 0.1 : 0.01;
+  const SegmentCorners c{Vec3(0.0, 0.0, w), Vec3(1.1, 0.05, -w), Vec3(0.95, 0.9, w), Vec3(-0.1, 1.05, -w)};
+  const Real spread = state.range(0) == 1 ? 2.5 : 0.8;
   std::vector<Vec3> pts;
   for (int k = 0; k < 1024; ++k) {
     const Real a = 0.5 + spread * (std::fmod(0.6180339887 * k, 1.0) - 0.5);
@@ -126,7 +128,7 @@ void BM_Projection(benchmark::State& state) {
   }
   set_rate(state, "t_per_projection", 1.0);
 }
-BENCHMARK(BM_Projection)->Arg(0)->Arg(1);
+BENCHMARK(BM_Projection)->Arg(0)->Arg(1)->Arg(2);
 
 // Local tracking of every slave node on a 100 x 100 plate while sliding: per node, re-project on
 // the current segment and walk to a neighbour when it leaves.

@@ -11,6 +11,10 @@
 ///   the minimum lies on the boundary: the four edges of a bilinear quad are straight, so each edge
 ///   is solved in closed form (projection onto a line segment, clamped to its end points, which
 ///   covers the corners) and the nearest edge point wins (the lowest edge number on exact ties).
+///   On a strongly warped quad (twist |x0 - x1 + x2 - x3| . n above 8 % of its diagonal) the
+///   edges are checked even after an interior Newton solution, which may be a local minimum, and
+///   Newton is restarted from the best point found; on extreme warps (corners a diagonal's length
+///   off-plane) a worse local minimum can still win.
 /// - Triangle: exact projection onto the plane with barycentric coordinates (l0, l1, l2); a point
 ///   with every l >= -tol is inside, otherwise the nearest of the three edges. Reported in the
 ///   collapsed-quad parametrisation: eta = 2 l2 - 1, xi = (l1 - l0) / (l0 + l1), and the shape
@@ -117,6 +121,33 @@ inline void finish(Projection& r, const Vec3& p, Vec3 n, const SegmentCorners& c
   r.gap = (p - r.point).dot(r.normal);
 }
 
+/// Newton on grad(1/2 |x(xi, eta) - p|^2) = 0 from (xi, eta), kept within [-2, 2]^2 so that a far
+/// point cannot run away. Returns true when converged; (xi, eta) hold the last iterate.
+inline bool quad_newton(const Vec3& p, const SegmentCorners& c, const Vec3& x_xe, int max_iterations,
+                        Real& xi, Real& eta) {
+  for (int it = 0; it < max_iterations; ++it) {
+    const Vec3 x_xi = 0.25 * ((1 - eta) * (c[1] - c[0]) + (1 + eta) * (c[2] - c[3]));
+    const Vec3 x_eta = 0.25 * ((1 - xi) * (c[3] - c[0]) + (1 + xi) * (c[2] - c[1]));
+    const Vec3 res = combine(c, bilinear_shape(xi, eta)) - p;
+    const Real g0 = x_xi.dot(res), g1 = x_eta.dot(res);
+    const Real a = x_xi.squaredNorm(), d = x_eta.squaredNorm();
+    Real b = x_xi.dot(x_eta) + res.dot(x_xe);
+    Real det = a * d - b * b;
+    if (!(det > 1e-12 * a * d)) {  // not positive definite: Gauss-Newton
+      b = x_xi.dot(x_eta);
+      det = a * d - b * b;
+    }
+    if (!(det > 0.0)) return false;  // degenerate segment: the edges decide
+    const Real dxi = -(d * g0 - b * g1) / det;
+    const Real deta = -(a * g1 - b * g0) / det;
+    xi = std::clamp(xi + dxi, Real(-2), Real(2));
+    eta = std::clamp(eta + deta, Real(-2), Real(2));
+    // Quadratic convergence: after a step below 1e-10 the error is at round-off level.
+    if (std::max(std::abs(dxi), std::abs(deta)) < 1e-10) return true;
+  }
+  return false;
+}
+
 }  // namespace detail
 
 /// Projects point p (length) onto the bilinear quadrilateral with corners c (counter-clockwise).
@@ -127,32 +158,8 @@ inline Projection project_point_to_quad(const Vec3& p, const SegmentCorners& c,
   r.size = detail::segment_size(c);
   const Vec3 x_xe = 0.25 * (c[0] - c[1] + c[2] - c[3]);  // d2x / dxi deta (constant)
 
-  // Newton on grad(1/2 |x - p|^2) = 0, kept within [-2, 2]^2 so that a far point cannot run away.
   Real xi = 0.0, eta = 0.0;
-  bool converged = false;
-  for (int it = 0; it < opt.max_iterations; ++it) {
-    const Vec3 x_xi = 0.25 * ((1 - eta) * (c[1] - c[0]) + (1 + eta) * (c[2] - c[3]));
-    const Vec3 x_eta = 0.25 * ((1 - xi) * (c[3] - c[0]) + (1 + xi) * (c[2] - c[1]));
-    const Vec3 res = detail::combine(c, detail::bilinear_shape(xi, eta)) - p;
-    const Real g0 = x_xi.dot(res), g1 = x_eta.dot(res);
-    const Real a = x_xi.squaredNorm(), d = x_eta.squaredNorm();
-    Real b = x_xi.dot(x_eta) + res.dot(x_xe);
-    Real det = a * d - b * b;
-    if (!(det > 1e-12 * a * d)) {  // not positive definite: Gauss-Newton
-      b = x_xi.dot(x_eta);
-      det = a * d - b * b;
-    }
-    if (!(det > 0.0)) break;  // degenerate segment: the edges decide
-    const Real dxi = -(d * g0 - b * g1) / det;
-    const Real deta = -(a * g1 - b * g0) / det;
-    xi = std::clamp(xi + dxi, Real(-2), Real(2));
-    eta = std::clamp(eta + deta, Real(-2), Real(2));
-    // Quadratic convergence: after a step below 1e-10 the error is at round-off level.
-    if (std::max(std::abs(dxi), std::abs(deta)) < 1e-10) {
-      converged = true;
-      break;
-    }
-  }
+  const bool converged = detail::quad_newton(p, c, x_xe, opt.max_iterations, xi, eta);
   const Real lim = 1 + opt.tol;
   const bool newton_inside = std::abs(xi) <= lim && std::abs(eta) <= lim;
   Real best_d2 = std::numeric_limits<Real>::infinity();
@@ -165,7 +172,12 @@ inline Projection project_point_to_quad(const Vec3& p, const SegmentCorners& c,
     r.point = detail::combine(c, r.shape);
     best_d2 = (p - r.point).squaredNorm();
   }
-  if (!(newton_inside && converged)) {
+  // A strongly warped quad can hold an interior local minimum that is not the global one: check
+  // the edges too when the twist |x0 - x1 + x2 - x3| . n exceeds 8 % of the diagonal.
+  const Vec3 seg_n = detail::segment_normal_direction(c);
+  const Real seg_nn = seg_n.norm();
+  const bool warped = seg_nn > 0.0 && std::abs(x_xe.dot(seg_n)) > 0.02 * r.size * seg_nn;
+  if (!(newton_inside && converged) || warped) {
     // The minimum lies on the boundary (or Newton failed): each straight edge in closed form.
     for (int k = 0; k < kSegmentEdges; ++k) {
       const Real t = detail::segment_parameter(p, c[k], c[(k + 1) % 4]);
@@ -181,6 +193,24 @@ inline Projection project_point_to_quad(const Vec3& p, const SegmentCorners& c,
         r.eta = e_eta;
         r.shape = shape;
         r.point = q;
+      }
+    }
+    if (warped) {
+      // Newton again from the best point so far, pulled slightly inside: on a warped quad an
+      // interior minimum may sit next to the edge that Newton from the centre did not reach.
+      Real xi2 = 0.9 * r.xi, eta2 = 0.9 * r.eta;
+      if (detail::quad_newton(p, c, x_xe, opt.max_iterations, xi2, eta2) && std::abs(xi2) <= lim &&
+          std::abs(eta2) <= lim) {
+        xi2 = std::clamp(xi2, Real(-1), Real(1));
+        eta2 = std::clamp(eta2, Real(-1), Real(1));
+        const auto shape = detail::bilinear_shape(xi2, eta2);
+        const Vec3 q = detail::combine(c, shape);
+        if ((p - q).squaredNorm() < best_d2) {
+          r.xi = xi2;
+          r.eta = eta2;
+          r.shape = shape;
+          r.point = q;
+        }
       }
     }
   }

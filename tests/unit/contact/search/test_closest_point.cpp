@@ -169,6 +169,24 @@ TEST(ClosestPoint, RandomPointsMatchTheSampledMinimumOnFlatAndWarpedQuads) {
   EXPECT_GT(boundary, 20);
 }
 
+TEST(ClosestPoint, StronglyWarpedQuadsFindTheGlobalMinimum) {
+  // Corners up to half a side off-plane: the distance can have an interior local minimum that is
+  // not the global one (the edge check and the Newton restart handle it).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  for (int q = 0; q < 12; ++q) {
+    const SegmentCorners c{Vec3(0, 0, 0.5 * u(rng)), Vec3(1 + 0.3 * u(rng), 0.3 * u(rng), 0.5 * u(rng)),
+                           Vec3(1 + 0.3 * u(rng), 1 + 0.3 * u(rng), 0.5 * u(rng)),
+                           Vec3(0.3 * u(rng), 1 + 0.3 * u(rng), 0.5 * u(rng))};
+    for (int t = 0; t < 10; ++t) {
+      const Vec3 p(0.5 + 1.5 * u(rng), 0.5 + 1.5 * u(rng), u(rng));
+      const Projection r = project_point_to_quad(p, c);
+      expect_consistent(r, p, c);
+      EXPECT_LE(r.distance, reference_projection(p, c).distance + 1e-9) << "quad " << q << " point " << t;
+    }
+  }
+}
+
 TEST(ClosestPoint, WarpedQuadNormalIsTheLocalTangentCrossProduct) {
   const SegmentCorners c = warped_quad();
   const Projection r = project_point_to_quad(Vec3(1.0, 0.8, 1.0), c);
