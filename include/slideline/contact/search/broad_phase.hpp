@@ -23,6 +23,7 @@
 #include <span>
 #include <vector>
 
+#include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
@@ -96,6 +97,7 @@ class BroadPhase {
   /// Recomputes the segment boxes from the current coordinates x and refits the index.
   /// No allocation. O(segments).
   void update(const Vec3Field& x) {
+    require_built();
     compute_boxes(x);
     refit_index();
   }
@@ -103,6 +105,7 @@ class BroadPhase {
   /// Candidates for the slave nodes `nodes` (internal indices) at coordinates x, with query
   /// radius r (length, >= 0). Clears and fills `out` (see the file comment for the order).
   void query(std::span<const Index> nodes, const Vec3Field& x, Real r, std::vector<Candidate>& out) {
+    require_built();
     const Index n = static_cast<Index>(nodes.size());
     const Index nchunks = chunk_count(n);
     if (static_cast<Index>(chunks_.size()) < nchunks) chunks_.resize(static_cast<std::size_t>(nchunks));
@@ -139,6 +142,13 @@ class BroadPhase {
   }
 
  protected:
+  // Copy and move only through a final class (no slicing through the interface).
+  BroadPhase() = default;
+  BroadPhase(const BroadPhase&) = default;
+  BroadPhase& operator=(const BroadPhase&) = default;
+  BroadPhase(BroadPhase&&) = default;
+  BroadPhase& operator=(BroadPhase&&) = default;
+
   /// Per-chunk working storage, kept between queries.
   struct QueryScratch {
     std::vector<Index> hits;          ///< segments found for the current node, any order
@@ -160,6 +170,10 @@ class BroadPhase {
     QueryScratch scratch;
     std::vector<Candidate> pairs;
   };
+
+  void require_built() const {
+    if (master_ == nullptr) throw Error("BroadPhase: update() or query() before build()");
+  }
 
   bool is_corner(Index node, Index s) const {
     const Index* c = &master_->conn[4 * static_cast<std::size_t>(s)];

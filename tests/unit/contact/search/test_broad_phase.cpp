@@ -184,6 +184,16 @@ TEST(BroadPhase, ResultDoesNotDependOnTheThreadCountAndReusesStorage) {
   EXPECT_EQ(one, many);
 }
 
+TEST(BroadPhase, UseBeforeBuildThrows) {
+  Vec3Field x;
+  x.resize(2);
+  FclBroadPhase fcl;
+  std::vector<Candidate> c;
+  const std::vector<Index> nodes{0};
+  EXPECT_THROW(fcl.update(x), Error);
+  EXPECT_THROW(fcl.query(nodes, x, 0.0, c), Error);
+}
+
 TEST(BroadPhase, EmptyMasterGivesNoCandidates) {
   Vec3Field x;
   x.resize(3);
