@@ -105,31 +105,15 @@ class BroadPhase {
   /// Candidates for the slave nodes `nodes` (internal indices) at coordinates x, with query
   /// radius r (length, >= 0). Clears and fills `out` (see the file comment for the order).
   void query(std::span<const Index> nodes, const Vec3Field& x, Real r, std::vector<Candidate>& out) {
-    require_built();
-    const Index n = static_cast<Index>(nodes.size());
-    const Index nchunks = chunk_count(n);
-    if (static_cast<Index>(chunks_.size()) < nchunks) chunks_.resize(static_cast<std::size_t>(nchunks));
-    parallel_for_chunks(n, [&](Index b, Index e, Index c) {
-      ChunkScratch& cs = chunks_[static_cast<std::size_t>(c)];
-      cs.pairs.clear();
-      for (Index i = b; i < e; ++i) {
-        const Index node = nodes[static_cast<std::size_t>(i)];
-        const Vec3 p = x.get(node);
-        if (options_.domain && !options_.domain->contains(p)) continue;
-        cs.scratch.hits.clear();
-        collect(Aabb::around(p, r), cs.scratch);
-        std::sort(cs.scratch.hits.begin(), cs.scratch.hits.end());
-        for (Index s : cs.scratch.hits) {
-          if (options_.skip_incident && is_corner(node, s)) continue;
-          cs.pairs.push_back({node, s});
-        }
-      }
-    });
-    out.clear();
-    for (Index c = 0; c < nchunks; ++c) {
-      const auto& p = chunks_[static_cast<std::size_t>(c)].pairs;
-      out.insert(out.end(), p.begin(), p.end());
-    }
+    query_impl(nodes, x, [r](Index) { return r; }, out);
+  }
+
+  /// The same with one query radius per node: radius[i] (length, >= 0) for nodes[i], e.g. half
+  /// the thickness of the shell a node belongs to.
+  void query(std::span<const Index> nodes, const Vec3Field& x, std::span<const Real> radius,
+             std::vector<Candidate>& out) {
+    if (radius.size() != nodes.size()) throw Error("BroadPhase::query: one radius per node");
+    query_impl(nodes, x, [radius](Index i) { return radius[static_cast<std::size_t>(i)]; }, out);
   }
 
   /// The inflated segment boxes (empty for a segment outside the domain), one per segment.
@@ -170,6 +154,36 @@ class BroadPhase {
     QueryScratch scratch;
     std::vector<Candidate> pairs;
   };
+
+  template <class RadiusOf>
+  void query_impl(std::span<const Index> nodes, const Vec3Field& x, RadiusOf radius_of,
+                  std::vector<Candidate>& out) {
+    require_built();
+    const Index n = static_cast<Index>(nodes.size());
+    const Index nchunks = chunk_count(n);
+    if (static_cast<Index>(chunks_.size()) < nchunks) chunks_.resize(static_cast<std::size_t>(nchunks));
+    parallel_for_chunks(n, [&](Index b, Index e, Index c) {
+      ChunkScratch& cs = chunks_[static_cast<std::size_t>(c)];
+      cs.pairs.clear();
+      for (Index i = b; i < e; ++i) {
+        const Index node = nodes[static_cast<std::size_t>(i)];
+        const Vec3 p = x.get(node);
+        if (options_.domain && !options_.domain->contains(p)) continue;
+        cs.scratch.hits.clear();
+        collect(Aabb::around(p, radius_of(i)), cs.scratch);
+        std::sort(cs.scratch.hits.begin(), cs.scratch.hits.end());
+        for (Index s : cs.scratch.hits) {
+          if (options_.skip_incident && is_corner(node, s)) continue;
+          cs.pairs.push_back({node, s});
+        }
+      }
+    });
+    out.clear();
+    for (Index c = 0; c < nchunks; ++c) {
+      const auto& p = chunks_[static_cast<std::size_t>(c)].pairs;
+      out.insert(out.end(), p.begin(), p.end());
+    }
+  }
 
   void require_built() const {
     if (master_ == nullptr) throw Error("BroadPhase: update() or query() before build()");

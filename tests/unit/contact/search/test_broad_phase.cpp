@@ -184,6 +184,27 @@ TEST(BroadPhase, ResultDoesNotDependOnTheThreadCountAndReusesStorage) {
   EXPECT_EQ(one, many);
 }
 
+TEST(BroadPhase, PerNodeRadiiMatchSingleNodeQueries) {
+  Scene sc = make_scene(51, 9, 7, 150);
+  FclBroadPhase fcl;
+  BruteForceBroadPhase brute;
+  fcl.build(sc.master, sc.x, BroadPhaseOptions{0.05, {}, false});
+  brute.build(sc.master, sc.x, BroadPhaseOptions{0.05, {}, false});
+  std::vector<Real> radius;
+  for (std::size_t i = 0; i < sc.slaves.size(); ++i) radius.push_back(0.02 * static_cast<Real>(i % 7));
+  std::vector<Candidate> a, b, one, joined;
+  fcl.query(sc.slaves, sc.x, radius, a);
+  brute.query(sc.slaves, sc.x, radius, b);
+  EXPECT_EQ(a, b);
+  for (std::size_t i = 0; i < sc.slaves.size(); ++i) {
+    brute.query(std::span<const Index>(&sc.slaves[i], 1), sc.x, radius[i], one);
+    joined.insert(joined.end(), one.begin(), one.end());
+  }
+  EXPECT_EQ(a, joined);
+  EXPECT_GT(a.size(), 50u);
+  EXPECT_THROW(fcl.query(sc.slaves, sc.x, std::span<const Real>(radius.data(), 3), a), Error);
+}
+
 TEST(BroadPhase, UseBeforeBuildThrows) {
   Vec3Field x;
   x.resize(2);
