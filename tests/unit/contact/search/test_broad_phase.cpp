@@ -227,6 +227,16 @@ TEST(BroadPhase, EmptyMasterGivesNoCandidates) {
   fcl.query(nodes, x, 1.0, c);
   EXPECT_TRUE(c.empty());
   EXPECT_EQ(fcl.tree_height(), 0);
+  // One segment: the tree is a single leaf.
+  Vec3Field y;
+  const Surface one = test::make_plate(y, 1, 1, 1.0, Vec3::Zero());
+  y.x.push_back(0.5);
+  y.y.push_back(0.5);
+  y.z.push_back(0.0);
+  fcl.build(one, y, {});
+  const std::vector<Index> slave{4};
+  fcl.query(slave, y, 0.0, c);
+  EXPECT_EQ(c, (std::vector<Candidate>{{4, 0}}));
 }
 
 TEST(SearchCadence, DueWhenTheLargestDisplacementReachesHalfTheMargin) {
