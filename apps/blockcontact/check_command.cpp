@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/build.hpp"
 
 namespace blockcontact {
 
@@ -38,10 +39,9 @@ const char* enforcement_name(slideline::model::Enforcement e) {
   return "?";
 }
 
-int run_check(const std::string& deck) {
-  std::vector<slideline::Diagnostic> warnings;
-  const auto m = slideline::read_keyword_file(deck, &warnings);
-  for (const auto& w : warnings) fmt::print(stderr, "warning: {}\n", slideline::to_string(w));
+int run_check(const std::string& deck, bool ignore_unsupported) {
+  std::size_t warnings = 0;
+  const auto m = read_deck(deck, ignore_unsupported, warnings);
   fmt::print("{}\n", deck);
   if (!m.title.empty()) fmt::print("  title     {}\n", m.title);
   fmt::print("  nodes     {}\n", m.nodes.size());
@@ -65,7 +65,13 @@ int run_check(const std::string& deck) {
     fmt::print(stderr, "{}: {} problem(s)\n", deck, problems.size());
     return kBadInput;
   }
-  fmt::print("ok ({} warning(s))\n", warnings.size());
+  print_dropped(m);
+  // Everything `run` checks before its first step: the build (element kinds, volumes and node
+  // order, materials, controls, unsupported features) and the initialisation (masses, first step).
+  auto sim = slideline::build_simulation(m);
+  sim->initialize();
+  fmt::print("ok ({} warning(s){})\n", warnings,
+             m.unsupported.empty() ? "" : fmt::format(", {} card(s) dropped", m.unsupported.size()));
   return kOk;
 }
 
@@ -74,8 +80,11 @@ int run_check(const std::string& deck) {
 void register_check(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("check", "Read and validate a keyword deck without running it");
   auto deck = std::make_shared<std::string>();
+  auto ignore = std::make_shared<bool>(false);
   cmd->add_option("deck", *deck, "Keyword deck (.k)")->required()->check(CLI::ExistingFile);
-  cmd->callback([deck, &exit_code] { exit_code = run_check(*deck); });
+  cmd->add_flag("--ignore-unsupported", *ignore,
+                "Accept a deck with unsupported physics cards: drop them and list them");
+  cmd->callback([deck, ignore, &exit_code] { exit_code = run_check(*deck, *ignore); });
 }
 
 }  // namespace blockcontact

@@ -4,6 +4,11 @@
 // more register_* function and one call in main.cpp.
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
+#include <string>
+
+#include "slideline/model/model.hpp"
+
 namespace blockcontact {
 
 /// Exit codes: 0 success, 1 other failure, 2 bad input, 3 not implemented, 4 instability.
@@ -11,5 +16,11 @@ enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kNotImplemented = 3,
 
 void register_run(CLI::App& app, int& exit_code);
 void register_check(CLI::App& app, int& exit_code);
+
+/// Reads a deck, printing the reader's warnings to stderr (also when it then throws).
+/// `ignore_unsupported` drops unsupported physics cards instead of failing (deck_input.cpp).
+slideline::model::Model read_deck(const std::string& deck, bool ignore_unsupported, std::size_t& warning_count);
+/// Prints the cards --ignore-unsupported dropped, one line each, to stdout (the run log).
+void print_dropped(const slideline::model::Model& model);
 
 }  // namespace blockcontact

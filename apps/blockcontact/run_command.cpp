@@ -26,6 +26,7 @@ struct RunOptions {
   bool csv = false;
   int threads = 0;
   double end_time = 0.0;
+  bool ignore_unsupported = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -43,10 +44,9 @@ class Progress {
     last_ = now;
     const double t = sim.time();
     const double eta = t > 0.0 ? elapsed * (end_time_ - t) / t : 0.0;
-    // The step the solver is taking: sim.dt() is the last step, which is often a short one that
-    // landed on an output time.
-    double dt = sim.controls.dt_scale * sim.stable_dt();
-    if (sim.controls.dt_max > 0.0) dt = std::min(dt, sim.controls.dt_max);
+    // The step the solver takes next (sim.dt() is the last step, which is often a short one that
+    // landed on an output time).
+    const double dt = sim.plan_step().dt_next;
     const std::string line =
         fmt::format("cycle {:>9}  t {:.5e} / {:.4g}  dt {:.3e}  energy error {:+.2e}  ETA {:.0f} s", sim.cycle(), t,
                     end_time_, dt, sim.energy().relative_balance_error(), eta);
@@ -79,9 +79,9 @@ class Progress {
 };
 
 int run_deck(const RunOptions& o) {
-  std::vector<slideline::Diagnostic> warnings;
-  const auto model = slideline::read_keyword_file(o.deck, &warnings);
-  for (const auto& w : warnings) fmt::print(stderr, "warning: {}\n", slideline::to_string(w));
+  std::size_t warning_count = 0;
+  const auto model = read_deck(o.deck, o.ignore_unsupported, warning_count);
+  print_dropped(model);
   const auto problems = slideline::check_references(model);
   if (!problems.empty()) {
     for (const auto& p : problems) fmt::print(stderr, "error: {}\n", slideline::to_string(p));
@@ -93,6 +93,7 @@ int run_deck(const RunOptions& o) {
   build.end_time = o.end_time;
   auto sim = slideline::build_simulation(model, build);
   if (o.threads > 0) slideline::set_threads(o.threads);
+  sim->initialize();  // before any output file exists: a refused model leaves no stub .h5
 
   std::filesystem::create_directories(o.out_dir);
   const auto stem = std::filesystem::path(o.deck).stem().string();
@@ -142,6 +143,8 @@ void register_run(CLI::App& app, int& exit_code) {
   cmd->add_option("--threads", o->threads, "OpenMP threads (0 = OpenMP default)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--end-time", o->end_time, "Override *CONTROL_TERMINATION ENDTIM (> 0)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--ignore-unsupported", o->ignore_unsupported,
+                "Run even though the deck holds unsupported physics cards: drop them and list them");
   cmd->callback([o, &exit_code] { exit_code = run_deck(*o); });
 }
 

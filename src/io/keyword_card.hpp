@@ -1,6 +1,9 @@
 #pragma once
 // Internal to the keyword reader: deck lines grouped into keyword blocks, and field access on one
-// card (fixed columns or free format) with located error messages. Not installed.
+// card (fixed columns or free format, standard or long format, &parameter substitution) with
+// located error messages. Not installed.
+#include <deque>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
@@ -12,15 +15,20 @@
 
 namespace slideline::keyword {
 
+/// Field widths of a card: standard, I10 (fields narrower than 10 become 10) or long (every
+/// field 20 wide).
+enum class Format : std::uint8_t { standard, i10, wide };
+
 struct Line {
   std::string_view text;
   int number = 0;  // 1-based line number in the file
+  Format format = Format::standard;
 };
 
 /// One keyword and the data cards under it (comment lines removed, blank lines kept: a blank
 /// card is a card of defaults).
 struct Block {
-  std::string keyword;  // upper-case, with the leading '*'
+  std::string keyword;  // upper-case, with the leading '*' and without a format suffix (+ - %)
   int line = 0;
   std::vector<Line> cards;
   std::size_t next = 0;
@@ -30,14 +38,31 @@ struct Block {
   const Line* take() { return done() ? nullptr : &cards[next++]; }
 };
 
-/// Reading state shared by the card handlers.
+/// A *PARAMETER value: its type letter (R, I or C) and the text substituted for &name.
+struct Parameter {
+  char type = 'R';
+  std::string text;
+  Real value = 0.0;  // for R and I
+};
+
+/// Reading state shared by the card handlers of every file of a deck (the main file and its
+/// *INCLUDEs). Each file has its own Context pointing at it.
+struct DeckState {
+  std::map<std::string, Parameter, std::less<>> parameters;  // upper-case names
+};
+
+/// Reading state of one file.
 struct Context {
   std::string file;
   std::vector<Diagnostic>* warnings = nullptr;
+  DeckState* deck = nullptr;
+  int file_index = 0;  // index of `file` in model::Model::files
   void warn(int line, std::string message) const {
     if (warnings) warnings->push_back({file, line, std::move(message)});
   }
   model::Source source(int line) const { return {file, line}; }
+  /// "file:line: "
+  std::string where(int line) const { return file + ":" + std::to_string(line) + ": "; }
 };
 
 // Column layouts (field widths) of the card formats.
@@ -47,6 +72,7 @@ inline constexpr int kElementCard[] = {8, 8, 8, 8, 8, 8, 8, 8, 8, 8};
 inline constexpr int kCurvePoint[] = {20, 20};
 
 /// Field access on one card. Blank fields leave the target untouched (the model default).
+/// A field holding `&name` (or `-&name`) takes the value of *PARAMETER name.
 class Card {
  public:
   Card(const Context& ctx, const Line& line, std::string_view keyword, std::span<const int> widths);
@@ -54,7 +80,7 @@ class Card {
   /// Number of fields the layout or free-format card holds.
   int size() const { return static_cast<int>(free_ ? free_fields_.size() : widths_.size()); }
   bool blank(int i) const;
-  /// The trimmed text of field i ("" when absent).
+  /// The trimmed text of field i ("" when absent), parameters substituted.
   std::string_view raw(int i) const;
 
   void get(int i, const char* name, Real& out) const;
@@ -66,6 +92,9 @@ class Card {
 
  private:
   [[noreturn]] void fail(int i, const char* name, const char* expected) const;
+  std::string_view field_text(int i) const;
+  int width(int k) const;
+  std::string place(int i) const;
 
   const Context& ctx_;
   Line line_;
@@ -73,14 +102,17 @@ class Card {
   std::span<const int> widths_;
   bool free_ = false;
   std::vector<std::string_view> free_fields_;
+  mutable std::deque<std::string> substituted_;  // texts of &name fields (a deque: views stay valid)
 };
 
-/// Parses a real number (Fortran 'D' exponents accepted); false if not a finite number.
+/// Parses a real number (Fortran 'D' exponents and exponents without a letter, "1.5-3", accepted);
+/// false if not a finite number.
 bool parse_real(std::string_view s, Real& out);
 /// Parses an integer (an integral real such as "3." is accepted); false if not an integer.
 bool parse_integer(std::string_view s, Id& out);
 
 std::string_view trim(std::string_view s);
+std::string upper(std::string_view s);
 
 /// A heading card: the whole line, trimmed.
 std::string heading(const Line& line);
@@ -93,11 +125,22 @@ void read_id_heading(const Context& ctx, const Line& line, std::string_view keyw
 namespace slideline::keyword {
 
 /// Reads one block into the model. Returns false when the keyword is not supported (the caller
-/// warns). Throws InputError on a malformed card.
+/// classifies it, see keyword_unsupported.cpp). Throws InputError on a malformed card.
 bool read_block(const Context& ctx, Block& block, model::Model& model);
+
+/// True when read_block handles this keyword (so its cards are worth keeping in memory).
+bool is_supported(std::string_view keyword);
 
 /// The *CONTACT_... family (keyword_contacts.cpp). Returns false for an unsupported contact type.
 bool read_contact(const Context& ctx, Block& block, model::Model& model);
+/// True when read_contact reads this keyword.
+bool is_supported_contact(std::string_view keyword);
+
+/// *PARAMETER and *PARAMETER_EXPRESSION (keyword_parameters.cpp). False for other keywords.
+bool read_parameters(const Context& ctx, Block& block);
+/// Evaluates an arithmetic expression over numbers and parameters (keyword_parameters.cpp);
+/// throws InputError naming `where` on a syntax error, an unknown name or a non-finite result.
+Real evaluate_expression(std::string_view expr, const DeckState& deck, const std::string& where);
 
 /// Warns about non-blank cards left in a block whose reader took what it needs.
 void warn_extra_cards(const Context& ctx, Block& block);

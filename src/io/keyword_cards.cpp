@@ -66,6 +66,8 @@ void read_solids(const Context& ctx, Block& b, Model& m) {
   while (const Line* l = next_record(b)) {
     Card c = card_of(ctx, *l, b, kElementCard);
     model::SolidElement e;
+    e.line = l->number;
+    e.file = ctx.file_index;
     c.get(0, "EID", e.id);
     c.get(1, "PID", e.pid);
     bool nodes_blank = true;
@@ -86,6 +88,8 @@ void read_shells(const Context& ctx, Block& b, Model& m) {
   while (const Line* l = next_record(b)) {
     Card c = card_of(ctx, *l, b, kElementCard);
     model::ShellElement e;
+    e.line = l->number;
+    e.file = ctx.file_index;
     c.get(0, "EID", e.id);
     c.get(1, "PID", e.pid);
     for (int k = 0; k < 4; ++k) c.get(k + 2, kNodeNames[k], e.n[static_cast<std::size_t>(k)]);
@@ -395,6 +399,31 @@ void read_database_dt(const Context& ctx, Block& b, Real& dt) {
   single_card(ctx, b, [&](const Card& c, const Line&) { c.get(0, "DT", dt); });
 }
 
+void read_control_timestep(const Context& ctx, Block& b, Model& m) {
+  auto& t = m.timestep;
+  t.src = ctx.source(b.line);
+  single_card(ctx, b, [&](const Card& k, const Line& l) {
+    t.src = ctx.source(l.number);
+    k.get(0, "DTINIT", t.dtinit);
+    k.get(1, "TSSFAC", t.tssfac);
+    k.get(2, "ISDO", t.isdo);
+    k.get(3, "TSLIMT", t.tslimt);
+    k.get(4, "DT2MS", t.dt2ms);
+    k.get(5, "LCTM", t.lctm);
+    // Read (the writer keeps them) but not honoured by the solver: say so.
+    const auto ignored = [&](bool set, const char* field, const char* what) {
+      if (set)
+        ctx.warn(l.number, std::string("*CONTROL_TIMESTEP: field ") + field + " (" + what +
+                               ") is read but not honoured; the run does without it");
+    };
+    ignored(t.dt2ms != 0.0, "DT2MS", "mass scaling");
+    ignored(t.lctm != 0, "LCTM", "time-step limit curve");
+    ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
+    ignored(t.isdo != 0, "ISDO", "shell time-step length option");
+    ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
+  });
+}
+
 using Handler = std::function<void(const Context&, Block&, Model&, bool)>;
 
 struct Entry {
@@ -438,22 +467,14 @@ const std::vector<Entry>& table() {
          });
        })},
       {"*CONTROL_TERMINATION", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line&) {
+         m.termination.src = c.source(b.line);
+         single_card(c, b, [&](const Card& k, const Line& l) {
+           m.termination.src = c.source(l.number);
            k.get(0, "ENDTIM", m.termination.endtim);
            k.get(1, "ENDCYC", m.termination.endcyc);
          });
        })},
-      {"*CONTROL_TIMESTEP", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line&) {
-           auto& t = m.timestep;
-           k.get(0, "DTINIT", t.dtinit);
-           k.get(1, "TSSFAC", t.tssfac);
-           k.get(2, "ISDO", t.isdo);
-           k.get(3, "TSLIMT", t.tslimt);
-           k.get(4, "DT2MS", t.dt2ms);
-           k.get(5, "LCTM", t.lctm);
-         });
-       })},
+      {"*CONTROL_TIMESTEP", nullptr, plain(read_control_timestep)},
       {"*CONTROL_CONTACT", nullptr, plain([](const Context& c, Block& b, Model& m) {
          // Cards 2-6 of *CONTROL_CONTACT are optional and hold nothing this code uses.
          if (const Line* l = b.take()) {
@@ -512,23 +533,41 @@ const std::vector<Entry>& table() {
   return entries;
 }
 
+const Entry* find_entry(std::string_view kw, bool& titled) {
+  for (const auto& e : table()) {
+    const std::string_view name = e.name;
+    if (kw == name) {
+      titled = false;
+      return &e;
+    }
+    if (e.option && kw.size() > name.size() && kw.substr(0, name.size()) == name &&
+        kw.substr(name.size()) == e.option) {
+      titled = true;
+      return &e;
+    }
+  }
+  return nullptr;
+}
+
 }  // namespace
+
+bool is_supported(std::string_view kw) {
+  if (kw.rfind("*CONTACT_", 0) == 0) return is_supported_contact(kw);
+  if (kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" || kw == "*PARAMETER_EXPRESSION" ||
+      kw == "*PARAMETER_EXPRESSION_LOCAL")
+    return true;
+  bool titled = false;
+  return find_entry(kw, titled) != nullptr;
+}
 
 bool read_block(const Context& ctx, Block& block, model::Model& model) {
   const std::string& kw = block.keyword;
   if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
-  for (const auto& e : table()) {
-    if (kw == e.name) {
-      e.read(ctx, block, model, false);
-      return true;
-    }
-    if (e.option && kw.size() > std::char_traits<char>::length(e.name) && kw.rfind(e.name, 0) == 0 &&
-        kw.substr(std::char_traits<char>::length(e.name)) == e.option) {
-      e.read(ctx, block, model, true);
-      return true;
-    }
-  }
-  return false;
+  bool titled = false;
+  const Entry* e = find_entry(kw, titled);
+  if (!e) return false;
+  e->read(ctx, block, model, titled);
+  return true;
 }
 
 }  // namespace slideline::keyword

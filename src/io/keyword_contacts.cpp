@@ -59,28 +59,49 @@ Enforcement default_enforcement(ContactType t) {
   }
 }
 
-}  // namespace
-
-bool read_contact(const Context& ctx, Block& b, model::Model& m) {
-  std::string_view name = b.keyword;
-  name.remove_prefix(std::string_view("*CONTACT_").size());
-  bool with_heading = strip_suffix(name, "_ID") || strip_suffix(name, "_TITLE");
+/// The parts of a contact keyword: base type, options, heading suffix. False when unsupported.
+struct ContactName {
+  const ContactBase* base = nullptr;
+  bool with_heading = false;
   bool lagrange = false;
   bool sliding = false;
-  const ContactBase* base = find_base(name);
+};
+
+bool parse_contact_name(std::string_view name, ContactName& out) {
+  if (name.substr(0, 9) != "*CONTACT_") return false;
+  name.remove_prefix(std::string_view("*CONTACT_").size());
+  out.with_heading = strip_suffix(name, "_ID") || strip_suffix(name, "_TITLE");
+  out.base = find_base(name);
   // Options: _LAGRANGE (Lagrange-multiplier enforcement) and _SLIDING_ONLY (type 10's no-separation
   // option), in either order, before _ID/_TITLE. Checked only when the name is not a base itself,
   // so that *CONTACT_SLIDING_ONLY stays type 1.
-  while (!base) {
-    if (!lagrange && strip_suffix(name, "_LAGRANGE")) {
-      lagrange = true;
-    } else if (!sliding && strip_suffix(name, "_SLIDING_ONLY")) {
-      sliding = true;
+  while (!out.base) {
+    if (!out.lagrange && strip_suffix(name, "_LAGRANGE")) {
+      out.lagrange = true;
+    } else if (!out.sliding && strip_suffix(name, "_SLIDING_ONLY")) {
+      out.sliding = true;
     } else {
       return false;
     }
-    base = find_base(name);
+    out.base = find_base(name);
   }
+  return true;
+}
+
+}  // namespace
+
+bool is_supported_contact(std::string_view keyword) {
+  ContactName n;
+  return parse_contact_name(keyword, n);
+}
+
+bool read_contact(const Context& ctx, Block& b, model::Model& m) {
+  ContactName n;
+  if (!parse_contact_name(b.keyword, n)) return false;
+  const ContactBase* base = n.base;
+  const bool with_heading = n.with_heading;
+  const bool lagrange = n.lagrange;
+  const bool sliding = n.sliding;
 
   model::Contact c;
   c.keyword = b.keyword;

@@ -1,16 +1,21 @@
-// Keyword deck reader: splitting a deck into keyword blocks, field parsing with located errors,
-// and the entry points. The card handlers are in keyword_cards.cpp and keyword_contacts.cpp.
+// Keyword deck reader: field parsing with located errors and parameter substitution (Card), and
+// the entry points, which stream a deck line by line into keyword blocks, follow *INCLUDEs and
+// hand each block to its card handler (keyword_cards.cpp, keyword_contacts.cpp,
+// keyword_parameters.cpp) or to the unsupported-card log (keyword_unsupported.cpp).
 #include "slideline/io/keyword_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
+#include <streambuf>
 
 #include "keyword_card.hpp"
+#include "keyword_unsupported.hpp"
 #include "slideline/core/error.hpp"
 
 namespace slideline {
@@ -30,24 +35,38 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+std::string upper(std::string_view s) {
+  std::string u(s);
+  for (auto& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return u;
+}
+
 bool parse_real(std::string_view s, Real& out) {
   s = trim(s);
   if (s.empty() || s.size() > 64) return false;
-  // Copy to a buffer: Fortran writes 'D' exponents and a leading '+', which from_chars rejects.
+  // Copy to a buffer: Fortran writes 'D' exponents, a leading '+', and exponents without a letter
+  // ("2.00000-3" = 2e-3, "1.5+2" = 150), which from_chars rejects.
   char buf[72];
   std::size_t n = 0;
+  bool exponent = false;
   for (std::size_t i = 0; i < s.size(); ++i) {
     char c = s[i];
     if (i == 0 && c == '+') continue;
-    if (c == 'd' || c == 'D') c = 'e';
+    if (c == 'd' || c == 'D' || c == 'e' || c == 'E') {
+      c = 'e';
+      exponent = true;
+    } else if ((c == '+' || c == '-') && n > 0 && !exponent &&
+               (std::isdigit(static_cast<unsigned char>(buf[n - 1])) || buf[n - 1] == '.')) {
+      buf[n++] = 'e';
+      exponent = true;
+    }
     buf[n++] = c;
   }
   if (n == 0) return false;
   // from_chars also accepts "inf" and "nan": only digits, sign, point and exponent are numbers.
   for (std::size_t i = 0; i < n; ++i) {
     const char c = buf[i];
-    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' ||
-          c == 'e' || c == 'E'))
+    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e'))
       return false;
   }
   double v = 0.0;
@@ -90,14 +109,57 @@ Card::Card(const Context& ctx, const Line& line, std::string_view keyword,
   }
 }
 
-std::string_view Card::raw(int i) const {
+int Card::width(int k) const {
+  const int w = widths_[static_cast<std::size_t>(k)];
+  switch (line_.format) {
+    case Format::wide: return 20;
+    case Format::i10: return std::max(w, 10);
+    default: return w;
+  }
+}
+
+std::string_view Card::field_text(int i) const {
   if (i < 0) return {};
   if (free_) return i < static_cast<int>(free_fields_.size()) ? free_fields_[i] : std::string_view{};
   if (i >= static_cast<int>(widths_.size())) return {};
   std::size_t start = 0;
-  for (int k = 0; k < i; ++k) start += static_cast<std::size_t>(widths_[k]);
+  for (int k = 0; k < i; ++k) start += static_cast<std::size_t>(width(k));
   if (start >= line_.text.size()) return {};
-  return trim(line_.text.substr(start, static_cast<std::size_t>(widths_[i])));
+  return trim(line_.text.substr(start, static_cast<std::size_t>(width(i))));
+}
+
+std::string Card::place(int i) const {
+  if (free_) return "free-format field " + std::to_string(i + 1);
+  int start = 0;
+  for (int k = 0; k < i; ++k) start += width(k);
+  return "columns " + std::to_string(start + 1) + "-" + std::to_string(start + width(i));
+}
+
+std::string_view Card::raw(int i) const {
+  const std::string_view s = field_text(i);
+  const bool negate = s.size() > 1 && s[0] == '-' && s[1] == '&';
+  if (s.empty() || (s[0] != '&' && !negate)) return s;
+  const std::string name = upper(trim(s.substr(negate ? 2 : 1)));
+  const Parameter* p = nullptr;
+  if (ctx_.deck) {
+    const auto f = ctx_.deck->parameters.find(name);
+    if (f != ctx_.deck->parameters.end()) p = &f->second;
+  }
+  if (!p)
+    throw InputError(ctx_.where(line_.number) + place(i) + " of " + std::string(keyword_) +
+                     ": parameter &" + name +
+                     " is not defined (a *PARAMETER must come before the cards that use it)");
+  auto& text = substituted_.emplace_back();
+  if (!negate) {
+    text = p->text;
+  } else if (p->type == 'C') {
+    text = "-" + p->text;
+  } else {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", -p->value);
+    text = buf;
+  }
+  return text;
 }
 
 bool Card::blank(int i) const { return raw(i).empty(); }
@@ -105,17 +167,11 @@ bool Card::blank(int i) const { return raw(i).empty(); }
 bool Card::all_blank() const { return trim(line_.text).empty(); }
 
 void Card::fail(int i, const char* name, const char* expected) const {
-  std::string where;
-  if (free_) {
-    where = "free-format field " + std::to_string(i + 1);
-  } else {
-    int start = 0;
-    for (int k = 0; k < i; ++k) start += widths_[k];
-    where = "columns " + std::to_string(start + 1) + "-" + std::to_string(start + widths_[i]);
-  }
-  throw InputError(ctx_.file + ":" + std::to_string(line_.number) + ": " + where + " (field " +
-                   name + " of " + std::string(keyword_) + "): expected " + expected + ", got '" +
-                   std::string(raw(i)) + "'");
+  const std::string_view written = field_text(i);
+  std::string got = "'" + std::string(raw(i)) + "'";
+  if (raw(i) != written) got += " (from " + std::string(written) + ")";
+  throw InputError(ctx_.where(line_.number) + place(i) + " (field " + name + " of " +
+                   std::string(keyword_) + "): expected " + expected + ", got " + got);
 }
 
 void Card::get(int i, const char* name, Real& out) const {
@@ -146,23 +202,22 @@ void read_id_heading(const Context& ctx, const Line& line, std::string_view keyw
                      std::string& title) {
   // Free format only when a comma falls inside the ID columns, so that a fixed-format heading may
   // itself hold commas.
+  const std::size_t id_width = line.format == Format::wide ? 20 : 10;
   const auto comma = line.text.find(',');
   std::string_view id_text;
   std::string_view rest;
-  int first = 1;
-  int last = 10;
-  if (comma != std::string_view::npos && comma < 10) {
+  int last = static_cast<int>(id_width);
+  if (comma != std::string_view::npos && comma < id_width) {
     id_text = line.text.substr(0, comma);
     rest = line.text.substr(comma + 1);
     last = static_cast<int>(comma);
   } else {
-    id_text = line.text.substr(0, std::min<std::size_t>(10, line.text.size()));
-    rest = line.text.size() > 10 ? line.text.substr(10) : std::string_view{};
+    id_text = line.text.substr(0, std::min<std::size_t>(id_width, line.text.size()));
+    rest = line.text.size() > id_width ? line.text.substr(id_width) : std::string_view{};
   }
   const auto t = trim(id_text);
   if (!t.empty() && !parse_integer(t, id))
-    throw InputError(ctx.file + ":" + std::to_string(line.number) + ": columns " +
-                     std::to_string(first) + "-" + std::to_string(last) + " (field ID of " +
+    throw InputError(ctx.where(line.number) + "columns 1-" + std::to_string(last) + " (field ID of " +
                      std::string(keyword) + "): expected an integer, got '" + std::string(t) + "'");
   title = std::string(trim(rest));
 }
@@ -181,78 +236,272 @@ void warn_extra_cards(const Context& ctx, Block& block) {
 
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string u(s);
-  for (auto& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
-
-/// Splits the text into keyword blocks, dropping comments and everything after *END.
-std::vector<Block> split_blocks(std::string_view text, const Context& ctx) {
-  std::vector<Block> blocks;
-  int number = 0;
-  int orphan_line = 0;
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    const auto nl = text.find('\n', pos);
-    std::string_view line = text.substr(pos, nl == std::string_view::npos ? text.size() - pos : nl - pos);
-    pos = nl == std::string_view::npos ? text.size() + 1 : nl + 1;
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (!line.empty() && line.front() == '$') continue;
-    if (!line.empty() && line.front() == '*') {
-      auto end = line.find_first_of(" \t");
-      std::string kw = upper(line.substr(0, end));
-      if (end != std::string_view::npos) {
-        const auto rest = trim(line.substr(end));
-        // Long format ("*NODE +" or "*KEYWORD LONG=Y") changes every column width.
-        if (rest == "+" || (kw == "*KEYWORD" && upper(rest).find("LONG") != std::string::npos))
-          throw InputError(ctx.file + ":" + std::to_string(number) + ": " + kw +
-                           ": long-format (20-character) cards are not supported");
-      }
-      if (!kw.empty() && (kw.back() == '+' || kw.back() == '-')) {
-        if (kw.back() == '+')
-          throw InputError(ctx.file + ":" + std::to_string(number) + ": " + kw +
-                           ": long-format (20-character) cards are not supported");
-        kw.pop_back();
-      }
-      if (kw == "*END") break;
-      blocks.push_back(Block{kw, number, {}, 0});
-      continue;
-    }
-    if (blocks.empty()) {
-      if (!trim(line).empty() && orphan_line == 0) orphan_line = number;
-      continue;
-    }
-    blocks.back().cards.push_back(Line{line, number});
+/// A std::streambuf over text held in memory, so that strings and files stream the same way.
+class ViewBuf : public std::streambuf {
+ public:
+  explicit ViewBuf(std::string_view s) {
+    char* p = const_cast<char*>(s.data());  // read only: the get area is never written
+    setg(p, p, p + s.size());
   }
-  if (orphan_line != 0) ctx.warn(orphan_line, "data lines before the first keyword ignored");
-  return blocks;
+};
+
+/// Lines of a stream; "\n", "\r\n" and a lone "\r" each end a line.
+class LineSource {
+ public:
+  explicit LineSource(std::streambuf& buf) : buf_(buf) {}
+  bool next(std::string& line) {
+    line.clear();
+    int c = buf_.sbumpc();
+    if (c == std::char_traits<char>::eof()) return false;
+    while (c != std::char_traits<char>::eof() && c != '\n' && c != '\r') {
+      line.push_back(static_cast<char>(c));
+      c = buf_.sbumpc();
+    }
+    if (c == '\r' && buf_.sgetc() == '\n') buf_.sbumpc();
+    return true;
+  }
+
+ private:
+  std::streambuf& buf_;
+};
+
+// Blank cards in a row kept in a block: no keyword has more positional cards than this, so longer
+// runs of blank lines carry nothing and are not stored (a file of empty lines stays small).
+constexpr int kMaxBlankRun = 16;
+// Cards kept of a block that no handler reads: enough to find its id; the rest are only counted.
+constexpr int kKeptUnsupported = 3;
+
+/// The block being filled while streaming: line texts in one buffer, views made when it is done.
+struct PendingBlock {
+  std::string keyword;
+  int line = 0;
+  Format format = Format::standard;
+  bool keep_all = true;
+  int cards = 0;  // non-comment lines seen
+  int blank_run = 0;
+  std::string storage;
+  struct Ref {
+    std::size_t offset, size;
+    int number;
+  };
+  std::vector<Ref> refs;
+
+  void add(std::string_view text, int number) {
+    ++cards;
+    if (trim(text).empty()) {
+      if (++blank_run > kMaxBlankRun) return;
+    } else {
+      blank_run = 0;
+    }
+    if (!keep_all && static_cast<int>(refs.size()) >= kKeptUnsupported) return;
+    refs.push_back({storage.size(), text.size(), number});
+    storage.append(text);
+  }
+
+  Block finish() const {
+    Block b{keyword, line, {}, 0};
+    b.cards.reserve(refs.size());
+    for (const auto& r : refs)
+      b.cards.push_back(Line{std::string_view(storage).substr(r.offset, r.size), r.number, format});
+    return b;
+  }
+};
+
+constexpr int kMaxIncludeDepth = 32;
+
+/// Reads one file (or string) of a deck into the model, recursing into its *INCLUDEs.
+class DeckReader {
+ public:
+  DeckReader(model::Model& model, DeckState& deck, UnsupportedLog& log, std::vector<Diagnostic>* warnings)
+      : model_(model), deck_(deck), log_(log), warnings_(warnings) {}
+
+  /// Returns the number of keywords read.
+  int read(std::streambuf& buf, const std::string& name, Format format, int depth) {
+    Context ctx{name, warnings_, &deck_};
+    ctx.file_index = static_cast<int>(model_.files.size());
+    model_.files.push_back(name);
+    LineSource src(buf);
+    std::string text;
+    int number = 0;
+    int orphan_line = 0;
+    int keywords = 0;
+    PendingBlock pending;
+    bool open = false;
+    while (src.next(text)) {
+      ++number;
+      if (!text.empty() && text.front() == '$') continue;
+      if (!text.empty() && text.front() == '*') {
+        if (open) process(ctx, pending, depth);
+        open = false;
+        std::string kw;
+        Format block_format = format;
+        if (!parse_keyword_line(ctx, text, number, kw, format, block_format)) continue;
+        ++keywords;
+        if (kw == "*END") break;
+        pending = PendingBlock{};
+        pending.keyword = std::move(kw);
+        pending.line = number;
+        pending.format = block_format;
+        pending.keep_all = pending.keyword == "*INCLUDE" || is_supported(pending.keyword);
+        open = true;
+        continue;
+      }
+      if (!open) {
+        if (!trim(text).empty() && orphan_line == 0) orphan_line = number;
+        continue;
+      }
+      pending.add(text, number);
+    }
+    if (open) process(ctx, pending, depth);
+    if (orphan_line != 0) {
+      if (keywords == 0)
+        throw InputError(ctx.where(orphan_line) +
+                         "no keyword cards: this is not an LS-DYNA keyword deck (its cards start "
+                         "with '*', e.g. *KEYWORD, *NODE)");
+      ctx.warn(orphan_line, "data lines before the first keyword ignored");
+    }
+    return keywords;
+  }
+
+ private:
+  /// Splits a keyword line into the keyword and its format; handles *KEYWORD's format options.
+  /// Returns false for a line that is only '*'.
+  static bool parse_keyword_line(const Context& ctx, std::string_view line, int number, std::string& kw,
+                                 Format& file_format, Format& block_format) {
+    const auto end = line.find_first_of(" \t");
+    kw = upper(line.substr(0, end));
+    const std::string rest = end == std::string_view::npos ? std::string() : upper(trim(line.substr(end)));
+    if (kw.size() <= 1) {
+      ctx.warn(number, "a line holding only '*' ignored");
+      return false;
+    }
+    // Keywords are printable ASCII: anything else means binary data or a corrupted file.
+    const auto printable = [](char c) { return c > ' ' && c < 127; };
+    if (!std::all_of(kw.begin(), kw.end(), printable)) {
+      std::string shown;
+      for (char c : kw.substr(0, 24)) {
+        if (printable(c)) {
+          shown += c;
+        } else {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(c));
+          shown += buf;
+        }
+      }
+      throw InputError(ctx.where(number) + "'" + shown + (kw.size() > 24 ? "...'" : "'") +
+                       " is not a keyword (non-text bytes): the file is not a keyword deck, or it is "
+                       "corrupted");
+    }
+    if (kw == "*KEYWORD") {
+      // "*KEYWORD [memory] LONG=Y I10=Y": the format of the rest of this file.
+      if (rest.find("LONG=Y") != std::string::npos) file_format = Format::wide;
+      else if (rest.find("I10=Y") != std::string::npos) file_format = Format::i10;
+      else if (rest.find("LONG=") != std::string::npos || rest.find("I10=") != std::string::npos)
+        file_format = Format::standard;
+      block_format = file_format;
+      return true;
+    }
+    block_format = file_format;
+    // Per-keyword format: a suffix '+' long, '%' I10, '-' standard ("*NODE+" or "*NODE +").
+    char suffix = kw.back();
+    if (suffix == '+' || suffix == '-' || suffix == '%') {
+      kw.pop_back();
+    } else if (rest == "+" || rest == "-" || rest == "%") {
+      suffix = rest[0];
+    } else {
+      suffix = 0;
+    }
+    if (suffix == '+') block_format = Format::wide;
+    if (suffix == '%') block_format = Format::i10;
+    if (suffix == '-') block_format = Format::standard;
+    return true;
+  }
+
+  void process(const Context& ctx, const PendingBlock& pending, int depth) {
+    Block block = pending.finish();
+    if (block.keyword == "*INCLUDE") {
+      include(ctx, block, depth);
+      return;
+    }
+    if (read_parameters(ctx, block)) return;
+    if (read_block(ctx, block, model_)) return;
+    log_.add(ctx, block, pending.cards);
+  }
+
+  void include(const Context& ctx, Block& block, int depth) {
+    namespace fs = std::filesystem;
+    while (const Line* l = block.take()) {
+      const std::string name(trim(l->text));
+      if (name.empty()) continue;
+      fs::path path(name);
+      if (path.is_relative()) path = fs::path(ctx.file).parent_path() / path;
+      std::error_code ec;
+      const fs::path canonical = fs::weakly_canonical(path, ec);
+      const std::string key = ec ? path.lexically_normal().string() : canonical.string();
+      if (std::find(stack_.begin(), stack_.end(), key) != stack_.end())
+        throw InputError(ctx.where(l->number) + "*INCLUDE of '" + name + "' makes a cycle (" + key +
+                         " is already being read)");
+      if (depth + 1 > kMaxIncludeDepth)
+        throw InputError(ctx.where(l->number) + "*INCLUDE nested more than " +
+                         std::to_string(kMaxIncludeDepth) + " deep");
+      if (fs::is_directory(path, ec))
+        throw InputError(ctx.where(l->number) + "*INCLUDE: '" + name + "' is a directory");
+      std::ifstream in(path, std::ios::binary);
+      if (!in)
+        throw InputError(ctx.where(l->number) + "*INCLUDE: cannot open '" + name + "' (looked for " +
+                         path.string() + ")");
+      stack_.push_back(key);
+      read(*in.rdbuf(), path.string(), Format::standard, depth + 1);
+      stack_.pop_back();
+    }
+  }
+
+ public:
+  /// Marks the top-level file as being read, so that an include of it is a cycle.
+  void enter(std::string canonical_path) { stack_.push_back(std::move(canonical_path)); }
+
+ private:
+  std::vector<std::string> stack_;  // canonical paths of the files being read, for cycles
+  model::Model& model_;
+  DeckState& deck_;
+  UnsupportedLog& log_;
+  std::vector<Diagnostic>* warnings_;
+};
+
+model::Model read_deck(std::streambuf& buf, const std::string& name, std::vector<Diagnostic>* warnings,
+                       const ReadOptions& options) {
+  model::Model model;
+  DeckState deck;
+  UnsupportedLog log;
+  DeckReader reader(model, deck, log, warnings);
+  std::error_code ec;
+  const auto canonical = std::filesystem::weakly_canonical(name, ec);
+  reader.enter(ec ? name : canonical.string());
+  const int keywords = reader.read(buf, name, Format::standard, 0);
+  if (keywords == 0)
+    throw InputError(name +
+                     ": no keyword cards: this is not an LS-DYNA keyword deck (its cards start with "
+                     "'*', e.g. *KEYWORD, *NODE)");
+  log.finish(model, warnings, options.ignore_unsupported);
+  return model;
 }
 
 }  // namespace
 }  // namespace keyword
 
 model::Model read_keyword_string(std::string_view text, const std::string& name,
-                                 std::vector<Diagnostic>* warnings) {
-  keyword::Context ctx{name, warnings};
-  model::Model model;
-  auto blocks = keyword::split_blocks(text, ctx);
-  for (auto& block : blocks) {
-    if (!keyword::read_block(ctx, block, model))
-      ctx.warn(block.line, "unknown keyword " + block.keyword + " skipped (" +
-                               std::to_string(block.cards.size()) + " card(s))");
-  }
-  return model;
+                                 std::vector<Diagnostic>* warnings, const ReadOptions& options) {
+  keyword::ViewBuf buf(text);
+  return keyword::read_deck(buf, name, warnings, options);
 }
 
-model::Model read_keyword_file(const std::string& path, std::vector<Diagnostic>* warnings) {
+model::Model read_keyword_file(const std::string& path, std::vector<Diagnostic>* warnings,
+                               const ReadOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a keyword file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the keyword file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  return read_keyword_string(text, path, warnings);
+  return keyword::read_deck(*in.rdbuf(), path, warnings, options);
 }
 
 }  // namespace slideline

@@ -1,8 +1,11 @@
 // check_references: dangling and duplicate ids of a model, each named with its card and line.
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "issue_groups.hpp"
+#include "keyword_unsupported.hpp"
 #include "slideline/io/keyword_reader.hpp"
 
 namespace slideline {
@@ -38,12 +41,20 @@ model::Source src_member(const T& t) {
 
 std::vector<Diagnostic> check_references(const model::Model& m) {
   Checker ck;
+  // Without nodes or elements every other reference problem is a consequence: say only that.
+  if (m.nodes.empty() || (m.solids.empty() && m.shells.empty())) {
+    const std::string file = m.files.empty() ? std::string() : m.files.front();
+    if (m.nodes.empty()) ck.out.push_back({file, 0, "the deck defines no nodes (*NODE): nothing to run"});
+    if (m.solids.empty() && m.shells.empty())
+      ck.out.push_back({file, 0, "the deck defines no elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run"});
+    return ck.out;
+  }
   const model::Source none;
   const auto no_src = [&](const auto&) { return none; };
 
   const IdSet nodes = ck.collect(m.nodes, "node", [](const auto& n) { return n.id; }, no_src);
-  ck.collect(m.solids, "solid element", [](const auto& e) { return e.id; }, no_src);
-  ck.collect(m.shells, "shell element", [](const auto& e) { return e.id; }, no_src);
+  ck.collect(m.solids, "solid element", [](const auto& e) { return e.id; }, [&](const auto& e) { return model::element_source(m, e); });
+  ck.collect(m.shells, "shell element", [](const auto& e) { return e.id; }, [&](const auto& e) { return model::element_source(m, e); });
   const IdSet parts = ck.collect(m.parts, "part", [](const auto& p) { return p.pid; },
                                  [](const auto& p) { return p.src; });
   IdSet sections = ck.collect(m.solid_sections, "section", [](const auto& s) { return s.secid; },
@@ -67,24 +78,47 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
   const IdSet curves = ck.collect(m.curves, "curve", [](const auto& c) { return c.lcid; },
                                   [](const auto& c) { return c.src; });
 
-  for (const auto& e : m.solids) {
-    const std::string who = "*ELEMENT_SOLID " + std::to_string(e.id);
-    if (!parts.count(e.pid)) ck.add(none, who + " refers to undefined part " + std::to_string(e.pid));
+  IssueGroups element_issues;
+  const auto check_element = [&](const auto& e, const char* keyword) {
+    const model::Source src = model::element_source(m, e);
+    const std::string who = std::string(keyword) + " " + std::to_string(e.id);
+    if (!parts.count(e.pid)) {
+      const std::string what = "refers to undefined part " + std::to_string(e.pid);
+      element_issues.add(std::string(keyword) + " " + what, who + " " + what, std::to_string(e.id), src);
+    }
+    // A 4-node tetrahedron written with N5..N8 blank: validate_model names the element kind.
+    bool tet = false;
+    if constexpr (std::tuple_size_v<decltype(e.n)> == 8)
+      tet = e.n[4] == 0 && e.n[5] == 0 && e.n[6] == 0 && e.n[7] == 0 && e.n[3] != 0;
     for (Id n : e.n)
-      if (!nodes.count(n)) ck.add(none, who + " refers to undefined node " + std::to_string(n));
-  }
-  for (const auto& e : m.shells) {
-    const std::string who = "*ELEMENT_SHELL " + std::to_string(e.id);
-    if (!parts.count(e.pid)) ck.add(none, who + " refers to undefined part " + std::to_string(e.pid));
-    for (Id n : e.n)
-      if (!nodes.count(n)) ck.add(none, who + " refers to undefined node " + std::to_string(n));
-  }
+      if (!nodes.count(n) && !(tet && n == 0)) {
+        std::string what = "refers to undefined node " + std::to_string(n);
+        if (n == 0) what += " (a blank node field)";
+        element_issues.add(std::string(keyword) + " refers to undefined nodes", who + " " + what,
+                           std::to_string(e.id) + " -> " + std::to_string(n), src, "references (element -> node)");
+      }
+  };
+  for (const auto& e : m.solids) check_element(e, "*ELEMENT_SOLID");
+  for (const auto& e : m.shells) check_element(e, "*ELEMENT_SHELL");
+  element_issues.append_to(ck.out);
+  // A reference to an id that only an unsupported (dropped) card defines names that card.
+  const auto dropped = [&](const model::Source& from, const std::string& who, std::string_view kind, Id id) {
+    if (const auto* u = keyword::find_unsupported(m, kind, id)) {
+      ck.add(from, who + " uses " + keyword::card_and_place(*u, from.file) + ", not supported");
+      return true;
+    }
+    return false;
+  };
   for (const auto& p : m.parts) {
     const std::string who = "*PART " + std::to_string(p.pid);
-    if (!sections.count(p.secid)) ck.add(p.src, who + " refers to undefined section " + std::to_string(p.secid));
-    if (!materials.count(p.mid)) ck.add(p.src, who + " refers to undefined material " + std::to_string(p.mid));
-    if (p.hgid != 0 && !hourglasses.count(p.hgid))
+    const std::string part = "part " + std::to_string(p.pid);
+    if (!sections.count(p.secid) && !dropped(p.src, part, "section", p.secid))
+      ck.add(p.src, who + " refers to undefined section " + std::to_string(p.secid));
+    if (!materials.count(p.mid) && !dropped(p.src, part, "material", p.mid))
+      ck.add(p.src, who + " refers to undefined material " + std::to_string(p.mid));
+    if (p.hgid != 0 && !hourglasses.count(p.hgid) && !dropped(p.src, part, "hourglass", p.hgid))
       ck.add(p.src, who + " refers to undefined hourglass " + std::to_string(p.hgid));
+    if (p.eosid != 0) dropped(p.src, part, "equation of state", p.eosid);
   }
   for (const auto& s : m.node_sets)
     for (Id n : s.nodes)
@@ -100,12 +134,12 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
       if (!parts.count(p))
         ck.add(s.src, "*SET_PART_LIST " + std::to_string(s.sid) + " refers to undefined part " + std::to_string(p));
   for (const auto& s : m.spcs)
-    if (!node_sets.count(s.nsid))
+    if (!node_sets.count(s.nsid) && !dropped(s.src, "*BOUNDARY_SPC_SET", "node set", s.nsid))
       ck.add(s.src, "*BOUNDARY_SPC_SET refers to undefined node set " + std::to_string(s.nsid));
   for (const auto& p : m.prescribed_motions) {
-    if (!node_sets.count(p.nsid))
+    if (!node_sets.count(p.nsid) && !dropped(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET", "node set", p.nsid))
       ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined node set " + std::to_string(p.nsid));
-    if (!curves.count(p.lcid))
+    if (!curves.count(p.lcid) && !dropped(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET", "curve", p.lcid))
       ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined curve " + std::to_string(p.lcid));
   }
   for (const auto& l : m.body_loads)

@@ -11,6 +11,7 @@
 #include "slideline/material/mooney_rivlin.hpp"
 #include "slideline/element/shell_block.hpp"
 #include "slideline/solver/rigid_body.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace slideline {
 
@@ -325,17 +326,49 @@ struct Builder {
                        std::to_string(v) + ")");
   }
 
-  std::vector<Index> node_set(Id sid, const model::Source& from, const char* field) const {
-    for (const auto& s : m.node_sets)
-      if (s.sid == sid) {
-        std::vector<Index> out;
-        for (Id nid : s.nodes) out.push_back(node(nid, s.src, "*SET_NODE_LIST"));
-        std::sort(out.begin(), out.end());
-        out.erase(std::unique(out.begin(), out.end()), out.end());
-        return out;
+  /// Resolves every node, part and segment set into sim->sets (after build_elements, which finds
+  /// each part's nodes), so that they outlive the build: contact interfaces look them up by id.
+  void build_sets() {
+    MeshSets& sets = sim->sets;
+    sets.part_nodes = part_nodes;
+    for (const auto& s : m.node_sets) {
+      const std::string card = "*SET_NODE_LIST " + std::to_string(s.sid);
+      std::vector<Index> out;
+      for (Id nid : s.nodes) out.push_back(node(nid, s.src, card.c_str()));
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      if (!sets.node_sets.emplace(s.sid, std::move(out)).second)
+        throw InputError(describe(s.src) + ": duplicate *SET_NODE id " + std::to_string(s.sid));
+      sets.node_set_titles[s.sid] = s.title;
+    }
+    std::set<Id> defined_parts;
+    for (const auto& p : m.parts) defined_parts.insert(p.pid);
+    for (const auto& s : m.part_sets) {
+      for (Id pid : s.parts)
+        if (!defined_parts.count(pid))
+          throw InputError(describe(s.src) + ": *SET_PART " + std::to_string(s.sid) +
+                           " refers to part " + std::to_string(pid) + ", which the deck does not define");
+      if (!sets.part_sets.emplace(s.sid, s.parts).second)
+        throw InputError(describe(s.src) + ": duplicate *SET_PART id " + std::to_string(s.sid));
+      sets.part_set_titles[s.sid] = s.title;
+    }
+    for (const auto& s : m.segment_sets) {
+      const std::string card = "*SET_SEGMENT " + std::to_string(s.sid);
+      std::vector<SegmentNodes> segs;
+      segs.reserve(s.segments.size());
+      for (const auto& seg : s.segments) {
+        SegmentNodes c;
+        for (int k = 0; k < 4; ++k) c[k] = node(seg[k], s.src, card.c_str());
+        segs.push_back(c);
       }
-    throw InputError(describe(from) + ": " + field + " refers to node set " + std::to_string(sid) +
-                     ", which the deck does not define");
+      if (!sets.segment_sets.emplace(s.sid, std::move(segs)).second)
+        throw InputError(describe(s.src) + ": duplicate *SET_SEGMENT id " + std::to_string(s.sid));
+      sets.segment_set_titles[s.sid] = s.title;
+    }
+  }
+
+  std::vector<Index> node_set(Id sid, const model::Source& from, const char* field) const {
+    return sim->sets.node_set(sid, describe(from) + ": " + field);
   }
 
   std::vector<Index> parts_nodes(const std::vector<Id>& pids, const model::Source& from) const {
@@ -351,10 +384,7 @@ struct Builder {
   }
 
   std::vector<Id> part_set(Id sid, const model::Source& from, const char* field) const {
-    for (const auto& s : m.part_sets)
-      if (s.sid == sid) return s.parts;
-    throw InputError(describe(from) + ": " + field + " refers to part set " + std::to_string(sid) +
-                     ", which the deck does not define");
+    return sim->sets.part_set(sid, describe(from) + ": " + field);
   }
 
   void build_boundaries() {
@@ -479,10 +509,12 @@ struct Builder {
 }  // namespace
 
 std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options) {
+  validate_model(model, options);  // located, collapsed input errors before anything is built
   Builder b(model, options);
   b.build_nodes();
   b.build_curves();
   b.build_elements();
+  b.build_sets();
   b.build_boundaries();
   b.build_loads();
   b.build_damping();

@@ -69,15 +69,15 @@ Vec3 RigidBody::solve_omega(const Mat3& inertia, const Vec3& l) const {
   return w;
 }
 
-void RigidBody::initialize(NodalFields& nodes) {
+void RigidBody::initialize(NodalFields& nodes, std::span<const Real> mass) {
   const Index n = static_cast<Index>(nodes.size());
   mass_ = 0.0;
   Vec3 first = Vec3::Zero();
   for (Index i : nodes_) {
     if (i < 0 || i >= n)
       throw InputError("rigid part " + std::to_string(part_id_) + " refers to a node index out of range");
-    mass_ += nodes.mass[i];
-    first += nodes.mass[i] * nodes.x.get(i);
+    mass_ += mass[i];
+    first += mass[i] * nodes.x.get(i);
   }
   if (!(mass_ > 0.0))
     throw InputError("rigid part " + std::to_string(part_id_) +
@@ -91,7 +91,7 @@ void RigidBody::initialize(NodalFields& nodes) {
     const Index i = nodes_[k];
     const Vec3 s = nodes.x.get(i) - com_;
     offset0_[k] = s;
-    const Real m = nodes.mass[i];
+    const Real m = mass[i];
     point_inertia0_ += m * (s.squaredNorm() * Mat3::Identity() - s * s.transpose());
     p += m * nodes.v.get(i);
     l += m * s.cross(nodes.v.get(i));
@@ -115,16 +115,16 @@ void RigidBody::initialize(NodalFields& nodes) {
   reset_nodes(nodes);
 }
 
-void RigidBody::constrain_accelerations(NodalFields& nodes, Real t) {
+void RigidBody::constrain_accelerations(const ConstraintLoads& loads, NodalFields& nodes, Real t) {
   t_n_ = t;
   const Mat3 r = q_.toRotationMatrix();
   Vec3 f = Vec3::Zero(), tau_p = Vec3::Zero(), tau_r = Vec3::Zero();
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const Index i = nodes_[k];
-    const Vec3 fi = nodes.f_int.get(i) + nodes.f_ext.get(i);
+    const Vec3 fi = loads.force(i);
     f += fi;
     tau_p += (r * offset0_[k]).cross(fi);
-    if (carries_rotation(nodes, i)) tau_r += nodes.m_int.get(i) + nodes.m_ext.get(i);
+    if (carries_rotation(nodes, i)) tau_r += loads.moment(i);
   }
   torque_ = tau_p + tau_r;
   // With the constrained velocity held at zero, the support carries the applied load.
@@ -142,7 +142,7 @@ void RigidBody::constrain_accelerations(NodalFields& nodes, Real t) {
     nodes.a.set(nodes_[k], acc + beta.cross(r * offset0_[k]));
 }
 
-void RigidBody::after_positions(NodalFields& nodes, Real t) {
+void RigidBody::after_positions(std::span<const Real> mass, NodalFields& nodes, Real t) {
   const Real dt = t - t_n_;
   if (!(dt > 0.0)) return;
   const Mat3 r = q_.toRotationMatrix();
@@ -150,7 +150,7 @@ void RigidBody::after_positions(NodalFields& nodes, Real t) {
   Vec3 p = Vec3::Zero(), l = Vec3::Zero();
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const Index i = nodes_[k];
-    const Real m = nodes.mass[i];
+    const Real m = mass[i];
     const Vec3 v = nodes.v.get(i);
     p += m * v;
     l += m * (r * offset0_[k]).cross(v);

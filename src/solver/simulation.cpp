@@ -11,20 +11,16 @@
 namespace slideline {
 
 namespace {
-// Energy partial sums per chunk: kinetic, then (a, b) halves of the trapezoid for internal,
-// external, damping, support and constraint work (see compute_reactions_and_velocities).
-constexpr int kEnergyTerms = 11;
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 }  // namespace
 
 Real EnergyReport::relative_balance_error() const {
-  const Real scale = std::max({std::abs(external) + std::abs(support) + std::abs(constraint) + kinetic0,
-                               kinetic,
-                               std::abs(internal) + hourglass + bulk_viscosity + damping,
-                               std::numeric_limits<Real>::min()});
+  const Real scale =
+      std::max({std::abs(external) + std::abs(support) + std::abs(constraint) + kinetic0, kinetic,
+                std::abs(internal) + hourglass + bulk_viscosity + damping + std::abs(contact) + friction,
+                std::numeric_limits<Real>::min()});
   return balance_error() / scale;
 }
 
@@ -88,16 +84,20 @@ void Simulation::initialize() {
   corners_.moment.resize(mbase);
   corners_.force_slots.build(n, force_pairs);
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
-  for (auto& c : constraints) c->initialize(nodes);
   has_rotations_ = std::any_of(nodes.has_rotation.begin(), nodes.has_rotation.end(),
                                [](std::uint8_t r) { return r != 0; });
-  constrained_.assign(n, 0);
+
+  // Who dictates each node's motion: rigid bodies first (their node lists are known before they
+  // initialise), then contact ties (known after the interfaces initialise, below).
+  node_kind_.assign(n, kFree);
+  rigid_.assign(n, 0);
   constrained_nodes_.clear();
   for (const auto& c : constraints)
     for (Index i : c->constrained_nodes()) {
       if (i < 0 || i >= n) throw InputError("a nodal constraint refers to a node index out of range");
-      if (!constrained_[i]) constrained_nodes_.push_back(i);
-      constrained_[i] = 1;
+      if (!rigid_[i]) constrained_nodes_.push_back(i);
+      rigid_[i] = 1;
+      node_kind_[i] = kRigid;
     }
 
   // Body loads act on the mass of the loaded parts only.
@@ -132,15 +132,57 @@ void Simulation::initialize() {
   for (const auto& d : damping) has_damping_curves_ = has_damping_curves_ || d.has_curve;
   update_damping_coefficients();
 
+  // Contact interfaces, then the nodes their ties dictate, then the rigid bodies (which need the
+  // effective mass: a slave tied to a rigid master moves with the body).
+  t_ = 0.0;
+  dt_ = 0.0;
+  cycle_ = 0;
+  contacts.initialize(ContactContext{nodes, blocks, &sets, rigid_});
+  dictated_nodes_.clear();
+  for (const auto& c : contacts) {
+    for (Index i : c->dictated_nodes()) {
+      if (i < 0 || i >= n) throw InputError("contact " + c->name() + " ties a node index out of range");
+      if (node_kind_[i] == kRigid)
+        throw InputError("contact " + c->name() + ": tied slave node " + std::to_string(nodes.ids[i]) +
+                         " belongs to a rigid part; tie the rigid part as the master instead");
+      if (node_kind_[i] != kDictated) dictated_nodes_.push_back(i);
+      node_kind_[i] = kDictated;
+    }
+  }
+  for (const auto& c : contacts)
+    for (Index i : c->tie_master_nodes())
+      if (i >= 0 && i < n && node_kind_[i] == kFree) node_kind_[i] = kTieMaster;
+  std::sort(dictated_nodes_.begin(), dictated_nodes_.end());
+  dictated_v_old_.assign(dictated_nodes_.size(), Vec3::Zero());
+  dictated_w_old_.assign(dictated_nodes_.size(), Vec3::Zero());
+  if (!contacts.empty()) {
+    f_total_.resize(n);
+    m_total_.resize(n);
+  }
+  mass_eff_ = nodes.mass;
+  rot_inertia_eff_ = nodes.rot_inertia;
+  if (contacts.condenses()) {
+    // The condensed mass of constant ties, for the rigid bodies' mass properties.
+    f_total_.fill(0.0);
+    m_total_.fill(0.0);
+    contacts.condense(nodes, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
+  }
+  for (auto& c : constraints) c->initialize(nodes, effective_mass());
+
   // History channels.
   channels_.clear();
+  contact_outputs_.clear();
+  std::vector<std::string> names;
   for (const auto& c : contacts) {
     channels_.push_back({"interfaces/" + c->name() + "/slave_force", 3});
     channels_.push_back({"interfaces/" + c->name() + "/master_force", 3});
+    names.clear();
+    c->append_output_names(names);
+    for (auto& s : names) channels_.push_back({"interfaces/" + c->name() + "/" + s, 3});
+    contact_outputs_.push_back(3 * names.size());
   }
   for (const auto& g : supports) channels_.push_back({"supports/" + g.name + "/reaction", 3});
   constraint_outputs_.clear();
-  std::vector<std::string> names;
   for (const auto& c : constraints) {
     names.clear();
     c->append_output_names(names);
@@ -151,22 +193,17 @@ void Simulation::initialize() {
     if (i < 0 || i >= n) throw InputError("history node index out of range");
     channels_.push_back({"nodes/" + std::to_string(nodes.ids[i]) + "/displacement", 3});
   }
-  for (const char* e : {"kinetic", "internal", "hourglass", "bulk_viscosity", "damping", "external",
-                        "support", "constraint", "balance_error"})
-    channels_.push_back({std::string("energy/") + e, 1});
+  for (const char* e : EnergyReport::names) channels_.push_back({std::string("energy/") + e, 1});
   std::size_t width = 0;
   for (const auto& c : channels_) width += c.components;
   history_values_.assign(width, 0.0);
   state_values_.assign(3 * static_cast<std::size_t>(n), 0.0);
-  chunk_e_.assign(static_cast<std::size_t>(chunk_count(n)) * kEnergyTerms, 0.0);
+  chunk_e_.assign(static_cast<std::size_t>(chunk_count(n)), NodalEnergySums{});
 
-  for (auto& c : contacts) c->initialize(nodes);
-  t_ = 0.0;
-  dt_ = 0.0;
-  cycle_ = 0;
-  energy_ = EnergyReport{};
-  stress_work_ = external_work_ = damping_work_ = support_work_ = constraint_work_ = 0.0;
-  compute_forces();
+  ledger_.reset();
+  compute_internal_forces();
+  compute_external_forces();
+  apply_contact_forces();
   if (!(dt_crit_ > 0.0) || !std::isfinite(dt_crit_))
     throw InputError("simulation: no stable time step (is there at least one element?)");
   initialized_ = true;
@@ -184,7 +221,9 @@ void Simulation::update_damping_coefficients() {
   }
 }
 
-void Simulation::compute_forces() {
+// ---- Forces at t^n -------------------------------------------------------------------------
+
+void Simulation::compute_internal_forces() {
   const auto t0 = std::chrono::steady_clock::now();
   Real dtc = std::numeric_limits<Real>::max();
   BlockEnergy be;
@@ -205,12 +244,15 @@ void Simulation::compute_forces() {
   }
   corners_.gather(nodes.f_int, nodes.m_int);
   element_seconds_ += seconds_since(t0);
-  // Hourglass and bulk-viscosity powers at t^n, integrated over the coming average step.
-  const Real dt_avg = cycle_ == 0 ? 0.0 : dt_;
-  energy_.hourglass += be.hourglass_power * dt_avg;
-  energy_.bulk_viscosity += be.viscous_power * dt_avg;
+  // Element powers at t^n, integrated over the step that ends at t^n.
+  ledger_.add_element_powers(be.hourglass_power, be.viscous_power, be.damping_power,
+                             cycle_ == 0 ? 0.0 : dt_);
+  dt_elements_ = dtc;
+  dt_crit_ = dtc;
+}
 
-  // External forces, in parallel: serial node loops here would cap the two-thread speed-up.
+void Simulation::compute_external_forces() {
+  // In parallel: serial node loops here would cap the two-thread speed-up.
   const Index n = static_cast<Index>(nodes.size());
   const bool rotations = has_rotations_;
   parallel_for(n, [&](Index i) {
@@ -230,50 +272,225 @@ void Simulation::compute_forces() {
     parallel_for(static_cast<Index>(bl.nodes.size()),
                  [&](Index k) { f[bl.nodes[k]] += bl.mass[k] * acc; });
   }
-  const auto t1 = std::chrono::steady_clock::now();
-  for (auto& c : contacts) {
-    c->apply_forces(nodes, t_, dt_);
-    dtc = std::min(dtc, c->stable_dt());
+}
+
+void Simulation::apply_contact_forces() {
+  dt_crit_ = dt_elements_;
+  if (contacts.empty()) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  nodes.f_contact.fill(0.0);
+  if (has_rotations_) nodes.m_contact.fill(0.0);
+  // The coming step is not known yet (the interfaces vote for it here).
+  const StepTimes times{t_, dt_, 0.0, 0.0, cycle_};
+  const Real dtc = contacts.apply_forces(nodes, times, ContactForceView{nodes.f_contact, nodes.m_contact});
+  dt_crit_ = std::min(dt_crit_, dtc);
+  contact_seconds_ += seconds_since(t0);
+}
+
+// ---- The step --------------------------------------------------------------------------------
+
+StepPlan Simulation::plan_step() const {
+  StepPlan p;
+  const Real end = controls.end_time;
+  // Time tolerance relative to the run's own time scale (an absolute one would swallow whole
+  // steps of a nanosecond-scale run), far above the round-off of t.
+  const Real tol_t =
+      1e-12 * (end > 0.0 ? end : std::max({t_, controls.history_interval, controls.state_interval}));
+  p.at_end = (end > 0.0 && t_ >= end - tol_t) ||
+             (controls.max_cycles > 0 && cycle_ >= controls.max_cycles);
+
+  // The scaled stable step, shortened to land exactly on the next output time.
+  Real dt_new = controls.dt_scale * dt_crit_;
+  if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
+  Real target = end > 0.0 ? end : std::numeric_limits<Real>::infinity();
+  if (controls.history_interval > 0.0)
+    target = std::min(target, next_output_time(controls.history_interval, t_));
+  if (controls.state_interval > 0.0)
+    target = std::min(target, next_output_time(controls.state_interval, t_));
+  // The last output multiple can fall an ulp short of the end time (50 x 2e-6 < 1e-4): land on
+  // the end time itself, or the run would end there and record its last values at the wrong time.
+  if (end > 0.0 && target >= end - tol_t) target = end;
+  bool lands = false;
+  if (!p.at_end && target > t_ + tol_t && t_ + dt_new >= target - tol_t) {
+    dt_new = target - t_;
+    lands = true;
   }
-  contact_seconds_ += seconds_since(t1);
-  dt_crit_ = dtc;
+  if (p.at_end) dt_new = dt_ > 0.0 ? dt_ : dt_new;
+  p.dt_next = dt_new;
+  p.dt_avg = cycle_ == 0 ? 0.5 * dt_new : 0.5 * (dt_ + dt_new);
+  p.t_next = lands ? target : t_ + dt_new;
+  return p;
+}
+
+bool Simulation::step() {
+  if (!initialized_) initialize();
+  if (finished_) return false;
+  // The forces at t^n (and the stable step) were evaluated at the end of the last cycle, or by
+  // initialize() for t = 0.
+  const StepPlan plan = plan_step();
+  if (!(plan.dt_next > 0.0) || !std::isfinite(plan.dt_next))
+    throw InstabilityError("time step collapsed to " + std::to_string(plan.dt_next) + " at t = " +
+                               std::to_string(t_) + ", cycle " + std::to_string(cycle_),
+                           t_, cycle_);
+  form_accelerations();
+  apply_constraints(plan);
+  update_velocities(plan);
+  record_outputs(plan.at_end);
+  if (plan.at_end) {
+    finished_ = true;
+    return false;
+  }
+  update_positions(plan);
+  // Forces at t^{n+1}: the next cycle's loads and stable step.
+  compute_internal_forces();
+  compute_external_forces();
+  apply_contact_forces();
+  return true;
 }
 
 void Simulation::form_accelerations() {
   const Index n = static_cast<Index>(nodes.size());
+  const bool rotations = has_rotations_;
   parallel_for(n, [&](Index i) {
     const Real m = nodes.mass[i];
     const Real inv = m > 0.0 ? 1.0 / m : 0.0;
-    nodes.a.x[i] = (nodes.f_int.x[i] + nodes.f_ext.x[i]) * inv;
-    nodes.a.y[i] = (nodes.f_int.y[i] + nodes.f_ext.y[i]) * inv;
-    nodes.a.z[i] = (nodes.f_int.z[i] + nodes.f_ext.z[i]) * inv;
+    nodes.a.x[i] = (nodes.f_int.x[i] + nodes.f_ext.x[i] + nodes.f_contact.x[i]) * inv;
+    nodes.a.y[i] = (nodes.f_int.y[i] + nodes.f_ext.y[i] + nodes.f_contact.y[i]) * inv;
+    nodes.a.z[i] = (nodes.f_int.z[i] + nodes.f_ext.z[i] + nodes.f_contact.z[i]) * inv;
+    if (rotations && nodes.has_rotation[i]) {
+      const Real ri = nodes.rot_inertia[i];
+      const Real rinv = ri > 0.0 ? 1.0 / ri : 0.0;
+      nodes.alpha.x[i] = (nodes.m_int.x[i] + nodes.m_ext.x[i] + nodes.m_contact.x[i]) * rinv;
+      nodes.alpha.y[i] = (nodes.m_int.y[i] + nodes.m_ext.y[i] + nodes.m_contact.y[i]) * rinv;
+      nodes.alpha.z[i] = (nodes.m_int.z[i] + nodes.m_ext.z[i] + nodes.m_contact.z[i]) * rinv;
+    }
   });
 }
 
-void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
-  // Prescribed velocity of each supported component over the coming step. Zero unless the
-  // support follows a displacement curve; then it lands the node exactly on u(t^{n+1}).
-  for (auto& g : supports) {
-    Vec3 r = Vec3::Zero();
+ConstraintLoads Simulation::constraint_loads() const {
+  if (contacts.empty()) return ConstraintLoads{nodes.mass, nodes};
+  return ConstraintLoads{effective_mass(), nodes, &f_total_, &m_total_};
+}
+
+void Simulation::condense_ties() {
+  // Total loads: the nodes' own, then tied slaves moved onto their masters.
+  const Index n = static_cast<Index>(nodes.size());
+  const bool condensing = contacts.condenses();
+  const bool rotations = has_rotations_;
+  parallel_for(n, [&](Index i) {
+    f_total_.x[i] = nodes.f_int.x[i] + nodes.f_ext.x[i] + nodes.f_contact.x[i];
+    f_total_.y[i] = nodes.f_int.y[i] + nodes.f_ext.y[i] + nodes.f_contact.y[i];
+    f_total_.z[i] = nodes.f_int.z[i] + nodes.f_ext.z[i] + nodes.f_contact.z[i];
+    if (rotations) {
+      m_total_.x[i] = nodes.m_int.x[i] + nodes.m_ext.x[i] + nodes.m_contact.x[i];
+      m_total_.y[i] = nodes.m_int.y[i] + nodes.m_ext.y[i] + nodes.m_contact.y[i];
+      m_total_.z[i] = nodes.m_int.z[i] + nodes.m_ext.z[i] + nodes.m_contact.z[i];
+    }
+    if (condensing) {
+      mass_eff_[i] = nodes.mass[i];
+      rot_inertia_eff_[i] = nodes.rot_inertia[i];
+    }
+  });
+  if (!condensing) return;
+  contacts.condense(nodes, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
+  parallel_for(n, [&](Index i) {
+    if (node_kind_[i] == kFree) return;  // unchanged by the condensation
+    const Real m = mass_eff_[i];
+    const Real inv = m > 0.0 ? 1.0 / m : 0.0;
+    nodes.a.x[i] = f_total_.x[i] * inv;
+    nodes.a.y[i] = f_total_.y[i] * inv;
+    nodes.a.z[i] = f_total_.z[i] * inv;
+    if (rotations && nodes.has_rotation[i]) {
+      const Real ri = rot_inertia_eff_[i];
+      const Real rinv = ri > 0.0 ? 1.0 / ri : 0.0;
+      nodes.alpha.x[i] = m_total_.x[i] * rinv;
+      nodes.alpha.y[i] = m_total_.y[i] * rinv;
+      nodes.alpha.z[i] = m_total_.z[i] * rinv;
+    }
+  });
+}
+
+void Simulation::constrain_rigid_bodies() {
+  const ConstraintLoads loads = constraint_loads();
+  for (auto& c : constraints) c->constrain_accelerations(loads, nodes, t_);
+}
+
+void Simulation::prescribe_supports(const StepPlan& plan) {
+  // The velocity each supported component must have over the coming step: zero unless the support
+  // follows a displacement curve; then it lands the node exactly on u(t^{n+1}).
+  const Real dt_new = plan.dt_next;
+  for (auto& g : supports)
     for (const auto& s : g.supports) {
-      if (s.rotational) continue;
       const int c = static_cast<int>(s.axis);
+      if (s.rotational) continue;  // the velocity update zeroes fixed rotations
       for (Index i : s.nodes) {
         Real vnew = 0.0;
         if (s.has_curve) {
           const Real u_now = nodes.x[c][i] - nodes.x0[c][i];
           vnew = (s.scale * s.curve(t_ + dt_new) - u_now) / dt_new;
         }
-        const Real m = nodes.mass[i];
-        const Real vold = nodes.v[c][i];
-        const Real a_req = (vnew - vold) / dt_avg;
-        r[c] += nodes.f_int[c][i] + nodes.f_ext[c][i] - m * a_req;
-        nodes.a[c][i] = a_req;  // the velocity update below then lands on vnew (see there)
+        nodes.a[c][i] = (vnew - nodes.v[c][i]) / plan.dt_avg;  // the velocity update lands on vnew
+      }
+    }
+}
+
+void Simulation::compute_reactions() {
+  // R = F - m a_required: the force the body exerts on the support, including the load that
+  // contact (penalty, Lagrange, or condensed tied slaves) carries into a supported node.
+  const bool total = !contacts.empty();
+  const auto mass = effective_mass();
+  for (auto& g : supports) {
+    Vec3 r = Vec3::Zero();
+    for (const auto& s : g.supports) {
+      if (s.rotational) continue;
+      const int c = static_cast<int>(s.axis);
+      for (Index i : s.nodes) {
+        const Real f = total ? f_total_[c][i] : nodes.f_int[c][i] + nodes.f_ext[c][i];
+        r[c] += f - mass[i] * nodes.a[c][i];
       }
     }
     g.reaction = r;
   }
+}
 
+void Simulation::apply_constraints(const StepPlan& plan) {
+  // 1. tied slaves condensed onto their masters (totals formed for every contact model);
+  // 2. rigid bodies from the total loads and effective masses;
+  // 3. supports prescribe their components (they win over rigid bodies and ties);
+  // 4. Lagrange-multiplier contact at the predicted x^{n+1}, with the components fixed by 2-3
+  //    immovable; then 2-3 again so that rigid bodies carry the contact forces on their nodes;
+  // 5. support reactions from the final loads.
+  // Tied slaves follow their masters after the velocity and position updates.
+  if (!contacts.empty()) condense_ties();
+  constrain_rigid_bodies();
+  prescribe_supports(plan);
+  if (!contacts.empty()) {
+    const StepTimes times{t_, dt_, plan.dt_avg, plan.dt_next, cycle_};
+    ConstraintView view{nodes,
+                        effective_mass(),
+                        alpha_,
+                        {fixed_[0], fixed_[1], fixed_[2]},
+                        rigid_,
+                        nodes.a,
+                        f_total_,
+                        nodes.f_contact};
+    contacts.enforce(view, times);
+    if (!constraints.empty()) {
+      constrain_rigid_bodies();
+      prescribe_supports(plan);
+    }
+  }
+  compute_reactions();
+}
+
+void Simulation::update_velocities(const StepPlan& plan) {
+  update_damping_coefficients();
+  const Real dt_avg = plan.dt_avg;
+  const Real dt_new = plan.dt_next;
+  for (std::size_t k = 0; k < dictated_nodes_.size(); ++k) {
+    dictated_v_old_[k] = nodes.v.get(dictated_nodes_[k]);
+    dictated_w_old_[k] = nodes.omega.get(dictated_nodes_[k]);
+  }
   const Index n = static_cast<Index>(nodes.size());
   const Real dt_old = dt_;
   // The kinetic energy at t^n is that of the mean of the half-step velocities, except at t = 0:
@@ -281,15 +498,17 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
   // mean would put an O(dt) offset into the balance that never goes away.
   const bool first = cycle_ == 0;
   parallel_for_chunks(n, [&](Index b, Index end, Index chunk) {
-    Real e[kEnergyTerms] = {};
+    NodalEnergySums e;
     for (Index i = b; i < end; ++i) {
       const Real m = nodes.mass[i];
-      if (m <= 0.0) continue;
+      const std::uint8_t kind = node_kind_[i];
+      if (m <= 0.0 || kind == kDictated) continue;  // tied slaves: book_dictated_nodes
       const Real al = alpha_[i];
       for (int c = 0; c < 3; ++c) {
         const Real vold = nodes.v[c][i];
+        const bool fixed = fixed_[c][i] != 0;
         Real vnew;
-        if (fixed_[c][i]) {
+        if (fixed) {
           vnew = vold + dt_avg * nodes.a[c][i];  // a holds the required acceleration
         } else {
           const Real h = 0.5 * al * dt_avg;
@@ -301,82 +520,137 @@ void Simulation::compute_reactions_and_velocities(Real dt_avg, Real dt_new) {
         const Real dnext = 0.5 * dt_new * vnew;  // half of x^{n+1} - x^n
         const Real fi = nodes.f_int[c][i];
         const Real fe = nodes.f_ext[c][i];
-        const Real fd = fixed_[c][i] ? 0.0 : -al * m * vbar;
-        const Real fs = fixed_[c][i] ? m * (vnew - vold) / dt_avg - fi - fe : 0.0;
-        // A constrained node's acceleration is the constraint's, not (fi + fe) / m: the
-        // difference is the force the constraint applies (a support on the same component wins).
-        const Real fc = constrained_[i] && !fixed_[c][i] ? m * (vnew - vold) / dt_avg - fi - fe - fd : 0.0;
+        const Real fk = nodes.f_contact[c][i];
+        const Real fd = fixed ? 0.0 : -al * m * vbar;
         const Real vk = first ? vold : vbar;
-        e[0] += 0.5 * m * vk * vk;
-        e[1] -= fi * dprev;
-        e[2] -= fi * dnext;
-        e[3] += fe * dprev;
-        e[4] += fe * dnext;
-        e[5] -= fd * dprev;
-        e[6] -= fd * dnext;
-        e[7] += fs * dprev;
-        e[8] += fs * dnext;
-        e[9] += fc * dprev;
-        e[10] += fc * dnext;
+        e.kinetic += 0.5 * m * vk * vk;
+        e.stress.add(-fi, dprev, dnext);
+        e.external.add(fe, dprev, dnext);
+        e.contact.add(fk, dprev, dnext);
+        e.damping.add(-fd, dprev, dnext);
+        if (fixed) {
+          e.support.add(m * (vnew - vold) / dt_avg - fi - fe - fk, dprev, dnext);
+        } else if (kind != kFree) {
+          // The node's acceleration is the constraint's or the tie's, not the loads' over its own
+          // mass: the difference is the force the rigid body or the tie applies.
+          const Real fc = m * (vnew - vold) / dt_avg - fi - fe - fk - fd;
+          (kind == kRigid ? e.constraint : e.contact).add(fc, dprev, dnext);
+        }
       }
       if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0) {
         const Real inertia = nodes.rot_inertia[i];
         const Real h = 0.5 * al * dt_avg;
         for (int c = 0; c < 3; ++c) {
           const Real wold = nodes.omega[c][i];
-          const Real mom = nodes.m_int[c][i] + nodes.m_ext[c][i];
-          const Real wnew =
-              fixed_rot_[c][i] ? 0.0 : ((1.0 - h) * wold + dt_avg * mom / inertia) / (1.0 + h);
+          const Real mi = nodes.m_int[c][i];
+          const Real me = nodes.m_ext[c][i];
+          const Real mk = nodes.m_contact[c][i];
+          const bool fixed = fixed_rot_[c][i] != 0;
+          const Real wnew = fixed ? 0.0 : ((1.0 - h) * wold + dt_avg * nodes.alpha[c][i]) / (1.0 + h);
           nodes.omega[c][i] = wnew;
           const Real wbar = 0.5 * (wold + wnew);
           const Real dprev = 0.5 * dt_old * wold;
           const Real dnext = 0.5 * dt_new * wnew;
           const Real wk = first ? wold : wbar;
-          e[0] += 0.5 * inertia * wk * wk;
-          e[1] -= nodes.m_int[c][i] * dprev;
-          e[2] -= nodes.m_int[c][i] * dnext;
-          e[3] += nodes.m_ext[c][i] * dprev;
-          e[4] += nodes.m_ext[c][i] * dnext;
-          e[5] += al * inertia * wbar * dprev;
-          e[6] += al * inertia * wbar * dnext;
-          if (constrained_[i] && !fixed_rot_[c][i]) {
-            const Real mc = inertia * (wnew - wold) / dt_avg - mom + al * inertia * wbar;
-            e[9] += mc * dprev;
-            e[10] += mc * dnext;
+          e.kinetic += 0.5 * inertia * wk * wk;
+          e.stress.add(-mi, dprev, dnext);
+          e.external.add(me, dprev, dnext);
+          e.contact.add(mk, dprev, dnext);
+          e.damping.add(al * inertia * wbar, dprev, dnext);
+          if (kind != kFree && !fixed) {
+            const Real mc = inertia * (wnew - wold) / dt_avg - mi - me - mk + al * inertia * wbar;
+            (kind == kRigid ? e.constraint : e.contact).add(mc, dprev, dnext);
           }
         }
       }
     }
-    std::copy(e, e + kEnergyTerms, chunk_e_.begin() + static_cast<std::ptrdiff_t>(chunk) * kEnergyTerms);
+    chunk_e_[static_cast<std::size_t>(chunk)] = e;
   });
-  Real e[kEnergyTerms] = {};
-  const Index nchunks = chunk_count(n);
-  for (Index c = 0; c < nchunks; ++c)
-    for (int k = 0; k < kEnergyTerms; ++k) e[k] += chunk_e_[static_cast<std::size_t>(c) * kEnergyTerms + k];
-  // The works up to t^n are the committed sums plus the (a) halves; the (b) halves belong to the
-  // next interval and are committed now.
-  energy_.kinetic = e[0];
-  if (cycle_ == 0) energy_.kinetic0 = e[0];
-  stress_work_ += e[1];
-  energy_.external = external_work_ + e[3];
-  energy_.damping = damping_work_ + e[5];
-  energy_.support = support_work_ + e[7];
-  energy_.constraint = constraint_work_ + e[9];
-  energy_.internal = stress_work_ - energy_.hourglass - energy_.bulk_viscosity;
-  stress_work_ += e[2];
-  external_work_ += e[3] + e[4];
-  damping_work_ += e[5] + e[6];
-  support_work_ += e[7] + e[8];
-  constraint_work_ += e[9] + e[10];
+  NodalEnergySums total;
+  for (const auto& e : chunk_e_) total += e;
+  if (!dictated_nodes_.empty()) {
+    contacts.follow_velocities(nodes);
+    book_dictated_nodes(plan);
+    total += dictated_sums_;
+  }
+  ledger_.book(total, first);
+  ledger_.set_friction(contacts.friction_work());
 }
 
-void Simulation::update_positions(Real dt_new) {
+void Simulation::book_dictated_nodes(const StepPlan& plan) {
+  // Tied slaves took their masters' velocities: book their kinetic energy and the work of the tie
+  // force m (v^{n+1/2} - v^{n-1/2}) / dt - f (damping included: they move as their masters do).
+  NodalEnergySums e;
+  const bool first = cycle_ == 0;
+  for (std::size_t k = 0; k < dictated_nodes_.size(); ++k) {
+    const Index i = dictated_nodes_[k];
+    const Real m = nodes.mass[i];
+    for (int c = 0; c < 3; ++c) {
+      const Real vold = dictated_v_old_[k][c];
+      const Real vnew = nodes.v[c][i];
+      const Real vbar = 0.5 * (vold + vnew);
+      const Real dprev = 0.5 * dt_ * vold;
+      const Real dnext = 0.5 * plan.dt_next * vnew;
+      const Real fi = nodes.f_int[c][i];
+      const Real fe = nodes.f_ext[c][i];
+      const Real vk = first ? vold : vbar;
+      e.kinetic += 0.5 * m * vk * vk;
+      e.stress.add(-fi, dprev, dnext);
+      e.external.add(fe, dprev, dnext);
+      e.contact.add(m * (vnew - vold) / plan.dt_avg - fi - fe, dprev, dnext);
+    }
+    if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0) {
+      const Real inertia = nodes.rot_inertia[i];
+      for (int c = 0; c < 3; ++c) {
+        const Real wold = dictated_w_old_[k][c];
+        const Real wnew = nodes.omega[c][i];
+        const Real wbar = 0.5 * (wold + wnew);
+        const Real dprev = 0.5 * dt_ * wold;
+        const Real dnext = 0.5 * plan.dt_next * wnew;
+        const Real mi = nodes.m_int[c][i];
+        const Real me = nodes.m_ext[c][i];
+        const Real wk = first ? wold : wbar;
+        e.kinetic += 0.5 * inertia * wk * wk;
+        e.stress.add(-mi, dprev, dnext);
+        e.external.add(me, dprev, dnext);
+        e.contact.add(inertia * (wnew - wold) / plan.dt_avg - mi - me, dprev, dnext);
+      }
+    }
+  }
+  dictated_sums_ = e;
+}
+
+void Simulation::update_positions(const StepPlan& plan) {
   const Index n = static_cast<Index>(nodes.size());
+  const Real dt_new = plan.dt_next;
   parallel_for(n, [&](Index i) {
     nodes.x.x[i] += dt_new * nodes.v.x[i];
     nodes.x.y[i] += dt_new * nodes.v.y[i];
     nodes.x.z[i] += dt_new * nodes.v.z[i];
   });
+  t_ = plan.t_next;
+  dt_ = dt_new;
+  ++cycle_;
+  // The constraints reset the half-step velocities of their nodes; the kinetic energy that changes
+  // is work the constraint does (with constant steps this closes the balance up to a bounded
+  // O(dt^2) term, as for unconstrained nodes).
+  if (!constraints.empty()) {
+    const Real k_before = constrained_kinetic_energy();
+    for (auto& c : constraints) c->after_positions(effective_mass(), nodes, t_);
+    ledger_.add_constraint_work(constrained_kinetic_energy() - k_before);
+  }
+  if (!dictated_nodes_.empty()) {
+    // A rigid master's reset moved its nodes: the slaves follow again (the change of their
+    // kinetic energy is work of the tie).
+    if (!constraints.empty()) {
+      Real k_before = 0.0, k_after = 0.0;
+      for (Index i : dictated_nodes_) k_before += 0.5 * nodes.mass[i] * nodes.v.get(i).squaredNorm();
+      contacts.follow_velocities(nodes);
+      for (Index i : dictated_nodes_) k_after += 0.5 * nodes.mass[i] * nodes.v.get(i).squaredNorm();
+      ledger_.add_contact_work(k_after - k_before);
+    }
+    contacts.follow_positions(nodes);
+  }
 }
 
 Real Simulation::constrained_kinetic_energy() const {
@@ -389,6 +663,8 @@ Real Simulation::constrained_kinetic_energy() const {
   return k;
 }
 
+// ---- Output ----------------------------------------------------------------------------------
+
 void Simulation::collect_history(std::vector<Real>& values) const {
   std::size_t k = 0;
   auto put3 = [&](const Vec3& v) {
@@ -396,9 +672,12 @@ void Simulation::collect_history(std::vector<Real>& values) const {
     values[k++] = v[1];
     values[k++] = v[2];
   };
+  std::size_t ci = 0;
   for (const auto& c : contacts) {
     put3(c->slave_force());
     put3(c->master_force());
+    c->write_output_values(std::span<Real>(values).subspan(k, contact_outputs_[ci]));
+    k += contact_outputs_[ci++];
   }
   for (const auto& g : supports) put3(g.reaction);
   for (std::size_t c = 0; c < constraints.size(); ++c) {
@@ -406,13 +685,12 @@ void Simulation::collect_history(std::vector<Real>& values) const {
     k += constraint_outputs_[c];
   }
   for (Index i : history_nodes) put3(nodes.displacement(i));
-  const EnergyReport& e = energy_;
-  for (Real v : {e.kinetic, e.internal, e.hourglass, e.bulk_viscosity, e.damping, e.external,
-                 e.support, e.constraint, e.balance_error()})
-    values[k++] = v;
+  for (Real v : ledger_.report().values()) values[k++] = v;
 }
 
-void Simulation::write_outputs(const std::vector<OutputSink*>& sinks, bool force) {
+void Simulation::record_outputs(bool force) {
+  if (sinks_ == nullptr) return;
+  const auto& sinks = *sinks_;
   const Real tol = 1e-9 * std::max(dt_crit_, 1e-300);
   const Real hi = controls.history_interval;
   const bool history_due =
@@ -443,67 +721,6 @@ Real Simulation::next_output_time(Real interval, Real after) const {
   if (after < 0.0) return 0.0;
   const Real k = std::floor(after / interval + 1e-9) + 1.0;
   return k * interval;
-}
-
-bool Simulation::step() {
-  if (!initialized_) initialize();
-  if (finished_) return false;
-  const Real end = controls.end_time;
-  // Time tolerance relative to the run's own time scale (an absolute one would swallow whole
-  // steps of a nanosecond-scale run), far above the round-off of t.
-  const Real tol_t =
-      1e-12 * (end > 0.0 ? end : std::max({t_, controls.history_interval, controls.state_interval}));
-  const bool at_end = (controls.end_time > 0.0 && t_ >= end - tol_t) ||
-                      (controls.max_cycles > 0 && cycle_ >= controls.max_cycles);
-
-  // The coming step: the scaled stable step, shortened to land exactly on the next output time.
-  Real dt_new = controls.dt_scale * dt_crit_;
-  if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
-  Real target = end > 0.0 ? end : std::numeric_limits<Real>::infinity();
-  if (controls.history_interval > 0.0)
-    target = std::min(target, next_output_time(controls.history_interval, t_));
-  if (controls.state_interval > 0.0)
-    target = std::min(target, next_output_time(controls.state_interval, t_));
-  // The last output multiple can fall an ulp short of the end time (50 x 2e-6 < 1e-4): land on
-  // the end time itself, or the run would end there and record its last values at the wrong time.
-  if (end > 0.0 && target >= end - tol_t) target = end;
-  bool lands = false;
-  if (!at_end && target > t_ + tol_t && t_ + dt_new >= target - tol_t) {
-    dt_new = target - t_;
-    lands = true;
-  }
-  if (at_end) dt_new = dt_ > 0.0 ? dt_ : dt_new;
-  if (!(dt_new > 0.0) || !std::isfinite(dt_new))
-    throw InstabilityError("time step collapsed to " + std::to_string(dt_new) + " at t = " +
-                               std::to_string(t_) + ", cycle " + std::to_string(cycle_),
-                           t_, cycle_);
-  const Real dt_avg = cycle_ == 0 ? 0.5 * dt_new : 0.5 * (dt_ + dt_new);
-
-  form_accelerations();
-  for (auto& c : constraints) c->constrain_accelerations(nodes, t_);
-  for (auto& c : contacts) c->constrain_accelerations(nodes, t_, dt_avg);
-  update_damping_coefficients();
-  compute_reactions_and_velocities(dt_avg, dt_new);
-  if (sinks_ != nullptr) write_outputs(*sinks_, at_end);
-  if (at_end) {
-    finished_ = true;
-    return false;
-  }
-
-  update_positions(dt_new);
-  t_ = lands ? target : t_ + dt_new;
-  dt_ = dt_new;
-  ++cycle_;
-  // The constraints reset the half-step velocities of their nodes; the kinetic energy that changes
-  // is work the constraint does (with constant steps this closes the balance up to a bounded
-  // O(dt^2) term, as for unconstrained nodes).
-  if (!constraints.empty()) {
-    const Real k_before = constrained_kinetic_energy();
-    for (auto& c : constraints) c->after_positions(nodes, t_);
-    constraint_work_ += constrained_kinetic_energy() - k_before;
-  }
-  compute_forces();
-  return true;
 }
 
 void Simulation::run(const std::vector<OutputSink*>& sinks,

@@ -23,15 +23,15 @@ class PointLoads final : public NodalConstraint {
  public:
   PointLoads(std::vector<Index> nodes, std::vector<Vec3> forces, LoadCurve curve)
       : nodes_(std::move(nodes)), f_(std::move(forces)), curve_(std::move(curve)) {}
-  void initialize(NodalFields&) override {}
-  void constrain_accelerations(NodalFields& n, Real t) override {
+  void initialize(NodalFields&, std::span<const Real>) override {}
+  void constrain_accelerations(const ConstraintLoads& loads, NodalFields& n, Real t) override {
     const Real s = curve_(t);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
       const Index i = nodes_[k];
-      n.a.set(i, n.a.get(i) + s * f_[k] / n.mass[i]);
+      n.a.set(i, loads.force(i) / loads.mass[i] + s * f_[k] / loads.mass[i]);
     }
   }
-  void after_positions(NodalFields&, Real) override {}
+  void after_positions(std::span<const Real>, NodalFields&, Real) override {}
 
  private:
   std::vector<Index> nodes_;

@@ -21,6 +21,7 @@ struct BlockEnergy {
   Real internal = 0.0;   ///< stored strain energy, where the material has one (else 0)
   Real hourglass_power = 0.0;  ///< rate of work done against hourglass forces
   Real viscous_power = 0.0;    ///< rate of work done against bulk viscosity
+  Real damping_power = 0.0;    ///< rate of work done against stiffness-proportional damping
 };
 
 /// Reduces the per-chunk results of an element loop in chunk order (so the result does not depend
@@ -60,6 +61,9 @@ class ElementBlock {
   /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in
   /// LS-DYNA, rigid elements do not set the step of a model with deformable elements).
   virtual bool bounds_time_step() const { return true; }
+  /// Small-strain bulk modulus of the block's material (force/length^2), for contact penalty
+  /// stiffness; 0 for a block without one.
+  virtual Real bulk_modulus() const { return 0.0; }
 
   /// Computes reference element data and adds this block's lumped mass (and rotary inertia) to
   /// the nodes. Called once, before the first step.

@@ -64,6 +64,17 @@ inline constexpr int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                     {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 }  // namespace detail
 
+/// The six faces with OUTWARD node order (counter-clockwise seen from outside, so that
+/// (x[f[2]] - x[f[0]]) x (x[f[3]] - x[f[1]]) points out of the element) for LS-DYNA's node order
+/// and a positive volume. With (xi, eta, zeta) the element's natural coordinates (node 1 at
+/// (-1,-1,-1), 2 at (1,-1,-1), 3 at (1,1,-1), 4 at (-1,1,-1), 5-8 the same at zeta = +1):
+///   0: zeta = -1 (nodes 1 4 3 2), points along -zeta      1: zeta = +1 (5 6 7 8), +zeta
+///   2: eta  = -1 (nodes 1 2 6 5), points along -eta       3: xi   = +1 (2 3 7 6), +xi
+///   4: eta  = +1 (nodes 3 4 8 7), points along +eta       5: xi   = -1 (4 1 5 8), -xi
+/// Face k has the same nodes as detail::faces[k]; only face 0 runs the other way there.
+inline constexpr int outward_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                            {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
 /// Volume derivatives dV/dx_I (8x3) of a hexahedron with node coordinates X (8x3).
 /// The volume itself is V = (1/3) sum_I x_I . dV/dx_I (V is homogeneous of degree 3).
 inline NodeMat volume_gradient(const NodeMat& X) {

@@ -68,6 +68,9 @@ class HexBlock final : public ElementBlock {
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }
   const Material& material() const { return mat_; }
+  /// K = lambda + 2 G / 3 from the material's small-strain moduli: E / (3 (1 - 2 nu)) for the
+  /// elastic solid, 2 G (1 + nu) / (3 (1 - 2 nu)) with G = 2 (A + B) for Mooney-Rivlin.
+  Real bulk_modulus() const override { return mat_.lame_lambda() + 2.0 / 3.0 * mat_.shear_modulus(); }
 
   void initialize(NodalFields& nodes) override {
     const Index ne = element_count();

@@ -116,6 +116,12 @@ class RigidMassBlock final : public ElementBlock {
 
   /// The stable step of the part's elements (time), valid after initialize().
   Real stable_dt() const { return dt_; }
+  /// E / (3 (1 - 2 nu)) of the rigid material: the stiffness contact sees on a rigid surface.
+  Real bulk_modulus() const override { return youngs_ / (3.0 * (1.0 - 2.0 * poisson_)); }
+  /// Elements 0 .. hex_count() - 1 are hexahedra (8 nodes each), the rest shells (4 each, after
+  /// the hexahedra in connectivity()).
+  Index hex_count() const { return n_hex_; }
+  Real shell_thickness() const { return thickness_; }
 
  private:
   Id part_id_;

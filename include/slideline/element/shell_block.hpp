@@ -83,6 +83,8 @@ class ShellBlock final : public ElementBlock {
   bool has_moments() const override { return true; }
   const ShellMaterial& material() const { return mat_; }
   const ShellSection& section() const { return sec_; }
+  /// E / (3 (1 - 2 nu)), the 3-D bulk modulus of the shell's elastic material.
+  Real bulk_modulus() const override { return mat_.youngs / (3.0 * (1.0 - 2.0 * mat_.poisson)); }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
 
   /// Nodal mass rho A t / 4 and rotary inertia (rho A t / 4) max(t^2, A) / 12 per corner.

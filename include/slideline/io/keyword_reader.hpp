@@ -4,9 +4,16 @@
 ///
 /// Input rules: fixed 10-character fields, 8 per card (*NODE: id 8, coordinates 16, tc/rc 8;
 /// *ELEMENT_*: 8-character fields); a card holding a comma is free format; `$` starts a comment
-/// line; a blank field keeps the model.hpp default (LS-DYNA's). An unknown keyword is skipped with
-/// a warning naming it and its line; a malformed field throws InputError naming the file, line,
-/// columns, field and card. The reader never crashes: every failure is an slideline::Error.
+/// line; a blank field keeps the model.hpp default (LS-DYNA's). Long (`*KEYWORD LONG=Y`, `*NODE +`)
+/// and I10 formats, `*INCLUDE`, `*PARAMETER` / `*PARAMETER_EXPRESSION` (&name fields) are read.
+///
+/// Cards the reader does not read are classified (docs/keywords.md, "Unsupported cards"): output
+/// and tuning cards are skipped with one warning per keyword; a card that carries physics
+/// (material, section, element kind, load, boundary or initial condition, constraint, rigid wall,
+/// contact type, implicit control, or any keyword not in the tables) is an error naming the card
+/// and its line, unless ReadOptions::ignore_unsupported drops it (then it is listed in
+/// Model::unsupported and in the warnings). A malformed field throws InputError naming the file,
+/// line, columns, field and card. The reader never crashes: every failure is an slideline::Error.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,7 +23,7 @@
 namespace slideline {
 
 /// A located message: a warning of the reader or a problem found by check_references.
-/// line = 0 when the item has no card line (e.g. elements, which carry no model::Source).
+/// line = 0 when the item has no card line.
 struct Diagnostic {
   std::string file;
   int line = 0;
@@ -26,18 +33,36 @@ struct Diagnostic {
 /// "file:line: message" (or "message" when file is empty).
 std::string to_string(const Diagnostic& d);
 
-/// Reads a keyword deck from a file. Warnings (unknown keywords, ignored cards) are appended to
-/// `warnings` when given. Throws InputError when the file cannot be opened or a card is malformed.
-/// References between ids are not checked here: call check_references() on the result.
-model::Model read_keyword_file(const std::string& path, std::vector<Diagnostic>* warnings = nullptr);
+struct ReadOptions {
+  /// Drop unsupported physics cards (listing each in Model::unsupported and in the warnings)
+  /// instead of throwing NotImplementedError.
+  bool ignore_unsupported = false;
+};
 
-/// Reads a keyword deck held in memory; `name` stands in for the file name in messages.
+/// Reads a keyword deck from a file (and the files it *INCLUDEs, relative to the including file).
+/// Warnings (ignored output cards, fields read but not honoured) are appended to `warnings` when
+/// given, as they are found, so a caller can print them when an error follows. Throws InputError
+/// when a file cannot be opened or a card is malformed, NotImplementedError when the deck holds
+/// unsupported physics cards (all of them listed, one line per keyword). References between ids
+/// are not checked here: call check_references() on the result.
+model::Model read_keyword_file(const std::string& path, std::vector<Diagnostic>* warnings = nullptr,
+                               const ReadOptions& options = {});
+
+/// Reads a keyword deck held in memory; `name` stands in for the file name in messages (and
+/// *INCLUDE paths are relative to its directory).
 model::Model read_keyword_string(std::string_view text, const std::string& name,
-                                 std::vector<Diagnostic>* warnings = nullptr);
+                                 std::vector<Diagnostic>* warnings = nullptr,
+                                 const ReadOptions& options = {});
 
 /// Every dangling or duplicate id in a model: elements referring to undefined nodes or parts,
 /// parts to undefined sections, materials or hourglass cards, sets to undefined nodes or parts,
-/// boundary conditions, loads and contacts to undefined sets, parts or curves. Empty when clean.
+/// boundary conditions, loads and contacts to undefined sets, parts or curves. A reference to an
+/// id that an unsupported (dropped) card defines names that card. The same problem repeated over
+/// many elements is one Diagnostic with a count and the first few ids. Empty when clean.
 std::vector<Diagnostic> check_references(const model::Model& model);
+
+/// One line per dropped card kind of Model::unsupported: "file:line: *KEYWORD (N cards, ids ...)
+/// dropped". For a run log.
+std::vector<Diagnostic> describe_dropped(const model::Model& model);
 
 }  // namespace slideline

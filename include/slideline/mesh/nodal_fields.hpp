@@ -61,7 +61,8 @@ struct NodalFields {
   Vec3Field v;      ///< velocity at the last half step (t^{n-1/2} before, t^{n+1/2} after the update)
   Vec3Field a;      ///< acceleration at t^n
   Vec3Field f_int;  ///< internal (element) forces at t^n, as a residual: the force the elements apply to the node
-  Vec3Field f_ext;  ///< external forces at t^n: body loads, contact
+  Vec3Field f_ext;  ///< external forces at t^n: body loads
+  Vec3Field f_contact;  ///< contact forces at t^n (penalty springs, friction, Lagrange multipliers)
   std::vector<Real> mass;  ///< lumped translational mass
 
   // Rotational degrees of freedom (shells).
@@ -69,6 +70,8 @@ struct NodalFields {
   Vec3Field omega;        ///< angular velocity (global frame)
   Vec3Field m_int;        ///< internal moments (residual form)
   Vec3Field m_ext;        ///< external moments
+  Vec3Field m_contact;    ///< contact moments (shell-edge ties)
+  Vec3Field alpha;        ///< angular acceleration at t^n (global frame)
   std::vector<Real> rot_inertia;  ///< lumped (isotropic) rotary inertia
 
   std::size_t size() const { return ids.size(); }
@@ -82,11 +85,14 @@ struct NodalFields {
     a.resize(n);
     f_int.resize(n);
     f_ext.resize(n);
+    f_contact.resize(n);
     mass.assign(n, 0.0);
     has_rotation.assign(n, 0);
     omega.resize(n);
     m_int.resize(n);
     m_ext.resize(n);
+    m_contact.resize(n);
+    alpha.resize(n);
     rot_inertia.assign(n, 0.0);
   }
 

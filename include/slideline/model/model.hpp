@@ -34,6 +34,8 @@ struct SolidElement {
   Id id = 0;
   Id pid = 0;
   std::array<Id, 8> n{};
+  int line = 0;  ///< card line in Model::files[file] (0 = generated), for messages
+  int file = 0;
 };
 
 /// *ELEMENT_SHELL: 4-node quadrilateral (n3 == n4 for a triangle is not supported yet).
@@ -41,6 +43,8 @@ struct ShellElement {
   Id id = 0;
   Id pid = 0;
   std::array<Id, 4> n{};
+  int line = 0;  ///< card line in Model::files[file] (0 = generated), for messages
+  int file = 0;
 };
 
 /// *PART
@@ -232,6 +236,7 @@ struct DampingPartMass {
 struct ControlTermination {
   Real endtim = 0.0;
   int endcyc = 0;
+  Source src;
 };
 
 /// *CONTROL_TIMESTEP
@@ -242,6 +247,7 @@ struct ControlTimestep {
   Real tslimt = 0.0;
   Real dt2ms = 0.0;
   Id lctm = 0;
+  Source src;
 };
 
 /// *CONTROL_CONTACT (card 1 fields used here)
@@ -321,6 +327,16 @@ struct Contact {
   Source src;
 };
 
+/// A card the reader saw and did not use because this version does not support it, kept so that
+/// messages can name the real cause ("part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (deck.k:72),
+/// not supported") and a run can list what it dropped.
+struct UnsupportedCard {
+  std::string keyword;  ///< upper-case, e.g. "*MAT_PIECEWISE_LINEAR_PLASTICITY"
+  Id id = 0;            ///< first field of its first data card when an integer (MID, SECID, SID...), else 0
+  int cards = 0;        ///< data cards under the keyword
+  Source src;
+};
+
 /// Everything a deck says.
 struct Model {
   std::string title;
@@ -349,7 +365,19 @@ struct Model {
   ControlContact control_contact;
   DatabaseControl database;
   std::vector<Contact> contacts;
+  /// Physics cards the reader dropped (only with ReadOptions::ignore_unsupported; otherwise the
+  /// reader refuses the deck).
+  std::vector<UnsupportedCard> unsupported;
+  /// The files the deck was read from (main file first, then *INCLUDEs), for element locations.
+  std::vector<std::string> files;
 };
+
+/// Where an element card came from ("" file and line 0 when generated).
+template <class Element>
+Source element_source(const Model& m, const Element& e) {
+  if (e.line <= 0 || e.file < 0 || static_cast<std::size_t>(e.file) >= m.files.size()) return {};
+  return {m.files[static_cast<std::size_t>(e.file)], e.line};
+}
 
 /// The material id of any material alternative.
 inline Id material_id(const Material& m) {

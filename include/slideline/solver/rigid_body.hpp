@@ -26,7 +26,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/element/element_block.hpp"
-#include "slideline/solver/simulation.hpp"
+#include "slideline/solver/nodal_constraint.hpp"
 
 namespace slideline {
 
@@ -36,9 +36,9 @@ class RigidBody final : public NodalConstraint {
   /// x y z rx ry rz of the global axes (CMO = +1 CON1 / CON2).
   RigidBody(Id part_id, std::vector<Index> nodes, std::array<int, 6> fixed_dofs);
 
-  void initialize(NodalFields& nodes) override;
-  void constrain_accelerations(NodalFields& nodes, Real t) override;
-  void after_positions(NodalFields& nodes, Real t) override;
+  void initialize(NodalFields& nodes, std::span<const Real> mass) override;
+  void constrain_accelerations(const ConstraintLoads& loads, NodalFields& nodes, Real t) override;
+  void after_positions(std::span<const Real> mass, NodalFields& nodes, Real t) override;
   std::span<const Index> constrained_nodes() const override { return nodes_; }
   /// With any fixed dof: supports/rigid_<part id>/reaction (force) and
   /// supports/rigid_<part id>/reaction_moment (moment about the centre of mass); see

@@ -24,7 +24,7 @@ TEST(KeywordReader, ReadsSolidSeedDeck) {
   EXPECT_DOUBLE_EQ(m.nodes[9].x[2], -0.01);
   ASSERT_EQ(m.solids.size(), 2u);
   EXPECT_EQ(m.solids[1].pid, 2);
-  EXPECT_EQ(m.solids[1].n[7], 16);
+  EXPECT_EQ(m.solids[1].n[7], 14);  // N1-N4 counter-clockwise seen from N5-N8 (positive volume)
   ASSERT_EQ(m.parts.size(), 2u);
   EXPECT_EQ(m.parts[1].title, "lower block");
   EXPECT_EQ(m.parts[1].hgid, 1);
@@ -189,17 +189,39 @@ TEST(KeywordReader, MalformedFieldNamesFileLineColumnsFieldAndCard) {
   EXPECT_THROW(read_keyword_file("/nonexistent/deck.k"), InputError);
 }
 
-TEST(KeywordReader, UnknownKeywordsAndOptionsWarnWithLines) {
+TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
+  const std::string deck =
+      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE_SLIDING_ONLY\n1,2\n*END\n";
   std::vector<Diagnostic> warnings;
-  const auto m = read_keyword_string(
-      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE_SLIDING_ONLY\n1,2\n*END\n",
-      "w.k", &warnings);
-  ASSERT_EQ(warnings.size(), 3u);
-  EXPECT_EQ(to_string(warnings[0]).rfind("w.k:2: unknown keyword *FOO_BAR", 0), 0u) << to_string(warnings[0]);
-  EXPECT_EQ(warnings[1].line, 4);
-  EXPECT_EQ(warnings[2].line, 6);
+  try {
+    read_keyword_string(deck, "w.k", &warnings);
+    FAIL() << "no exception";
+  } catch (const NotImplementedError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("w.k:2: *FOO_BAR (keyword not in slideline's tables) is not supported\n", 0), 0u) << what;
+    EXPECT_NE(what.find("w.k:4: *CONTACT_ERODING_SINGLE_SURFACE (contact type) is not supported"), std::string::npos)
+        << what;
+  }
+  // The _SLIDING_ONLY warning was gathered before the error, for the caller to print.
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].line, 6);
+
+  warnings.clear();
+  ReadOptions ignore;
+  ignore.ignore_unsupported = true;
+  const auto m = read_keyword_string(deck, "w.k", &warnings, ignore);
   ASSERT_EQ(m.contacts.size(), 1u);
   EXPECT_FALSE(m.contacts[0].sliding_only_option);
+  ASSERT_EQ(m.unsupported.size(), 2u);
+  EXPECT_EQ(m.unsupported[0].keyword, "*FOO_BAR");
+  EXPECT_EQ(m.unsupported[0].id, 1);
+  EXPECT_EQ(m.unsupported[1].src.line, 4);
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_NE(to_string(warnings[1]).find("w.k:2: *FOO_BAR (keyword not in slideline's tables) dropped"), std::string::npos)
+      << to_string(warnings[1]);
+  const auto dropped = describe_dropped(m);
+  ASSERT_EQ(dropped.size(), 2u);
+  EXPECT_EQ(to_string(dropped[1]), "w.k:4: *CONTACT_ERODING_SINGLE_SURFACE (id 1) dropped, 1 card(s)");
 }
 
 TEST(KeywordReader, CheckReferencesNamesEveryMissingId) {

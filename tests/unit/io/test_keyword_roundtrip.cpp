@@ -126,7 +126,16 @@ TEST(KeywordRoundTrip, WrittenModelReadsBackIdentical) {
   const std::string text = write_keyword_string(m);
   std::vector<Diagnostic> warnings;
   const auto back = read_keyword_string(text, "written.k", &warnings);
-  for (const auto& w : warnings) ADD_FAILURE() << to_string(w);
+  // full_model() sets every *CONTROL_TIMESTEP field, and the solver honours only TSSFAC: the
+  // reader says so for each of the five others. Anything else is unexpected.
+  int not_honoured = 0;
+  for (const auto& w : warnings) {
+    if (w.message.find("is read but not honoured") != std::string::npos)
+      ++not_honoured;
+    else
+      ADD_FAILURE() << to_string(w);
+  }
+  EXPECT_EQ(not_honoured, 5);
   expect_same(m, back);
   EXPECT_EQ(back.contacts.size(), 13u);
   EXPECT_TRUE(check_references(back).empty()) << to_string(check_references(back).front());

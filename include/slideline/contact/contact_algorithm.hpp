@@ -1,0 +1,122 @@
+#pragma once
+/// The plug-in point for contact: one final class per interface type implements ContactAlgorithm.
+/// The simulation calls a few virtual functions per interface and cycle (none per node), through
+/// the ContactManager, in the phases of docs/solver.md:
+///
+///   apply_contact_forces:  apply_forces      (penalty, friction: into f_contact / m_contact)
+///   apply_constraints:     condense          (kinematic ties: slave mass and force -> masters)
+///                          enforce           (Lagrange multipliers: forces at predicted x^{n+1})
+///   update_velocities:     follow_velocities (kinematic ties: slave velocity from the masters)
+///   update_positions:      follow_positions  (kinematic ties: slave position from the masters)
+///
+/// An interface reads the nodal state through const references and writes only its own force
+/// buffer (f_contact, m_contact), or, for constraint interfaces, the accelerations, velocities and
+/// positions of the nodes it owns. It owns all of its state (candidates, gaps, sticking points,
+/// failure flags), allocated in initialize() or on a re-search, never per cycle.
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "slideline/core/types.hpp"
+#include "slideline/mesh/nodal_fields.hpp"
+
+namespace slideline {
+
+class ElementBlock;
+struct MeshSets;
+
+/// Times of the cycle being taken, from t^n to t^{n+1} = t + dt_next.
+struct StepTimes {
+  Real t = 0.0;        ///< t^n
+  Real dt_prev = 0.0;  ///< t^n - t^{n-1} (0 on the first cycle)
+  Real dt_avg = 0.0;   ///< velocity step (dt_prev + dt_next) / 2 (dt_next / 2 on the first cycle)
+  Real dt_next = 0.0;  ///< t^{n+1} - t^n
+  long cycle = 0;
+};
+
+/// What an interface may look at when it initialises (after masses are lumped, before the first
+/// force evaluation).
+struct ContactContext {
+  const NodalFields& nodes;
+  const std::vector<std::unique_ptr<ElementBlock>>& blocks;
+  const MeshSets* sets = nullptr;       ///< the deck's sets resolved to indices (may be null)
+  std::span<const std::uint8_t> rigid;  ///< per node: 1 if a rigid body dictates its motion
+};
+
+/// The contact force buffers (zeroed by the simulation before the phase).
+struct ContactForceView {
+  Vec3Field& force;   ///< f_contact
+  Vec3Field& moment;  ///< m_contact
+};
+
+/// Kinematic ties move the mass and force of each slave node onto its master nodes here.
+struct CondenseView {
+  std::span<Real> mass;         ///< effective translational mass (starts as NodalFields::mass)
+  Vec3Field& force;             ///< total force (starts as f_int + f_ext + f_contact)
+  std::span<Real> rot_inertia;  ///< effective rotary inertia (starts as NodalFields::rot_inertia)
+  Vec3Field& moment;            ///< total moment
+};
+
+/// The Lagrange-multiplier phase: accelerations at t^n are formed and every other constraint
+/// (ties, rigid bodies, supports) has acted. A node component is immovable for the solve when
+/// `fixed[c][i]` (prescribed by a support) or `rigid[i]`; the simulation re-runs the rigid bodies
+/// with the contact forces afterwards. The velocity update that follows is
+///   v^{n+1/2} = ((1 - h) v^{n-1/2} + dt_avg a) / (1 + h),  h = damping[i] dt_avg / 2,
+/// and x^{n+1} = x^n + dt_next v^{n+1/2}. An interface that changes the contact force on a node
+/// by df adds df to f_contact and to force, and, on a movable component, df / mass to a.
+struct ConstraintView {
+  const NodalFields& nodes;       ///< x^n, v^{n-1/2}, omega
+  std::span<const Real> mass;     ///< effective mass
+  std::span<const Real> damping;  ///< mass-damping coefficient per node (1/time)
+  std::span<const std::uint8_t> fixed[3];
+  std::span<const std::uint8_t> rigid;
+  Vec3Field& a;
+  Vec3Field& force;  ///< total force
+  Vec3Field& f_contact;
+};
+
+class ContactAlgorithm {
+ public:
+  virtual ~ContactAlgorithm() = default;
+
+  /// Output title (deck heading, else "contact_<id>").
+  virtual const std::string& name() const = 0;
+  /// Once, after masses are lumped and before the first force evaluation.
+  virtual void initialize(const ContactContext& context) = 0;
+
+  /// Penalty and friction forces at t^n (x^n, v^{n-1/2}) added into `out`.
+  virtual void apply_forces(const NodalFields& /*nodes*/, const StepTimes& /*times*/,
+                            ContactForceView /*out*/) {}
+  /// True when the interface condenses tied slaves onto masters (the simulation then keeps
+  /// effective mass arrays apart from NodalFields::mass).
+  virtual bool condenses() const { return false; }
+  virtual void condense(const NodalFields& /*nodes*/, CondenseView /*view*/) {}
+  virtual void enforce(ConstraintView /*view*/, const StepTimes& /*times*/) {}
+  /// After the velocity update: tied slaves take the velocity of their master point.
+  virtual void follow_velocities(NodalFields& /*nodes*/) {}
+  /// After the position update (and after rigid bodies reset their nodes).
+  virtual void follow_positions(NodalFields& /*nodes*/) {}
+
+  /// Largest step this interface allows (penalty springs), before the global scale factor.
+  virtual Real stable_dt() const { return std::numeric_limits<Real>::max(); }
+  /// Total interface force on the slave side and on the master side at the last cycle.
+  virtual Vec3 slave_force() const = 0;
+  virtual Vec3 master_force() const = 0;
+  /// Energy dissipated by friction so far (>= 0), for the energy ledger's friction term.
+  virtual Real friction_work() const { return 0.0; }
+  /// Nodes whose motion the interface dictates (tied slaves): the simulation books the work of
+  /// the forces that move them to the contact term.
+  virtual std::span<const Index> dictated_nodes() const { return {}; }
+  /// Nodes that receive condensed slave mass and force (tie masters): the simulation books the
+  /// work of the tie forces on them to the contact term.
+  virtual std::span<const Index> tie_master_nodes() const { return {}; }
+  /// Extra 3-vector history channels, named relative to interfaces/<name>/ (e.g.
+  /// "transmitted_force"); values written 3 per name into a preallocated span.
+  virtual void append_output_names(std::vector<std::string>& /*names*/) const {}
+  virtual void write_output_values(std::span<Real> /*out*/) const {}
+};
+
+}  // namespace slideline

@@ -1,0 +1,145 @@
+#pragma once
+/// The energy ledger: named energy terms and the trapezoidal work sums that feed them.
+///
+/// Works are integrated with the trapezoid rule over the nodal displacements of each cycle. The
+/// velocity update at t^n knows the forces at t^n and both half-step velocities, so it computes the
+/// work of each force over the half interval before t^n (x^n - x^{n-1/2}) and the half after it
+/// (x^{n+1/2} - x^n): `WorkHalves`. The energy reported at t^n is the committed sum plus the half
+/// before; the half after is committed for the next report.
+#include <array>
+
+#include "slideline/core/types.hpp"
+
+namespace slideline {
+
+/// Energies at the last recorded time (all in force x length).
+struct EnergyReport {
+  Real kinetic = 0.0;
+  Real kinetic0 = 0.0;        ///< at t = 0
+  Real internal = 0.0;        ///< stress work of the elements (strain energy for elastic bodies)
+  Real hourglass = 0.0;       ///< work against hourglass forces
+  Real bulk_viscosity = 0.0;  ///< work against bulk viscosity
+  Real damping = 0.0;         ///< work dissipated by mass- and stiffness-proportional damping
+  /// Contact: minus the work of the contact forces on the bodies, less the friction dissipation:
+  /// the elastic energy stored in penalty springs (and the work of kinematic and Lagrange contact
+  /// constraints, zero when they are exact).
+  Real contact = 0.0;
+  Real friction = 0.0;        ///< energy dissipated by friction (>= 0)
+  Real external = 0.0;        ///< work of body loads
+  Real support = 0.0;         ///< work of prescribed motions on the body
+  /// Work of the forces that NodalConstraints (rigid bodies) apply to their nodes: the forces that
+  /// keep a body rigid and hold its fixed dofs, and the velocity reset after the position update.
+  Real constraint = 0.0;
+
+  /// (kinetic + internal + hourglass + bulk viscosity + damping + contact + friction)
+  ///   - (kinetic0 + external + support + constraint)
+  Real balance_error() const {
+    return kinetic + internal + hourglass + bulk_viscosity + damping + contact + friction -
+           kinetic0 - external - support - constraint;
+  }
+  /// balance_error() relative to the largest energy in play.
+  Real relative_balance_error() const;
+
+  /// The history channel names (energy/<name>) in output order, and their values.
+  static constexpr std::array<const char*, 11> names{
+      "kinetic",  "internal", "hourglass", "bulk_viscosity", "damping",      "contact",
+      "friction", "external", "support",   "constraint",     "balance_error"};
+  std::array<Real, 11> values() const {
+    return {kinetic,  internal, hourglass, bulk_viscosity, damping,        contact,
+            friction, external, support,   constraint,     balance_error()};
+  }
+};
+
+/// The work of one kind of nodal force over a cycle, split at t^n.
+struct WorkHalves {
+  Real before = 0.0;  ///< over x^n - x^{n-1/2}
+  Real after = 0.0;   ///< over x^{n+1/2} - x^n
+
+  /// Adds the work of force f over the two half displacements.
+  void add(Real f, Real d_before, Real d_after) {
+    before += f * d_before;
+    after += f * d_after;
+  }
+  WorkHalves& operator+=(const WorkHalves& o) {
+    before += o.before;
+    after += o.after;
+    return *this;
+  }
+};
+
+/// What one velocity update contributes to the ledger (per chunk, then summed in chunk order).
+struct NodalEnergySums {
+  Real kinetic = 0.0;  ///< at t^n
+  WorkHalves stress;      ///< -f_int . dx (the elements' stress work, hourglass and bulk viscosity included)
+  WorkHalves external;    ///< f_ext . dx
+  WorkHalves contact;     ///< f_contact . dx and the work of tie forces on dictated nodes
+  WorkHalves damping;     ///< -f_damping . dx (dissipated, >= 0)
+  WorkHalves support;     ///< work of the support forces on prescribed components
+  WorkHalves constraint;  ///< work of NodalConstraint forces on their nodes
+
+  NodalEnergySums& operator+=(const NodalEnergySums& o) {
+    kinetic += o.kinetic;
+    stress += o.stress;
+    external += o.external;
+    contact += o.contact;
+    damping += o.damping;
+    support += o.support;
+    constraint += o.constraint;
+    return *this;
+  }
+};
+
+/// Accumulates the works cycle by cycle and reports the energies at t^n.
+class EnergyLedger {
+ public:
+  void reset() { *this = EnergyLedger{}; }
+
+  /// Element-side powers at t^n (hourglass, bulk viscosity, stiffness damping) over the step `dt`
+  /// that ends at t^n (0 on the first evaluation).
+  void add_element_powers(Real hourglass_power, Real viscous_power, Real damping_power, Real dt) {
+    report_.hourglass += hourglass_power * dt;
+    report_.bulk_viscosity += viscous_power * dt;
+    element_damping_ += damping_power * dt;
+  }
+  /// Books one velocity update's sums; `first` on the first cycle (sets kinetic0).
+  void book(const NodalEnergySums& s, bool first) {
+    report_.kinetic = s.kinetic;
+    if (first) report_.kinetic0 = s.kinetic;
+    report_.external = external_.at_n(s.external);
+    report_.damping = damping_.at_n(s.damping) + element_damping_;
+    report_.support = support_.at_n(s.support);
+    report_.constraint = constraint_.at_n(s.constraint);
+    contact_work_ = contact_.at_n(s.contact);
+    report_.internal = stress_.at_n(s.stress) - report_.hourglass - report_.bulk_viscosity - element_damping_;
+    report_.contact = -contact_work_ - report_.friction;
+    stress_.commit(s.stress);
+    external_.commit(s.external);
+    contact_.commit(s.contact);
+    damping_.commit(s.damping);
+    support_.commit(s.support);
+    constraint_.commit(s.constraint);
+  }
+  /// Work done on constrained nodes outside the velocity update (a rigid body's velocity reset).
+  void add_constraint_work(Real w) { constraint_.committed += w; }
+  /// Work done by contact outside the velocity update (a tie resetting its slaves).
+  void add_contact_work(Real w) { contact_.committed += w; }
+  /// The friction dissipation reported by the interfaces (a running total).
+  void set_friction(Real dissipated) {
+    report_.friction = dissipated;
+    report_.contact = -contact_work_ - dissipated;
+  }
+  const EnergyReport& report() const { return report_; }
+
+ private:
+  struct Accumulator {
+    Real committed = 0.0;
+    Real at_n(const WorkHalves& h) const { return committed + h.before; }
+    void commit(const WorkHalves& h) { committed += h.before + h.after; }
+  };
+  Accumulator stress_, external_, contact_, damping_, support_, constraint_;
+  Real element_damping_ = 0.0;
+  Real contact_work_ = 0.0;
+  EnergyReport report_;
+};
+
+}  // namespace slideline

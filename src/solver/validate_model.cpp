@@ -1,0 +1,207 @@
+// validate_model: located input checks before a build (see validate_model.hpp).
+#include "slideline/solver/validate_model.hpp"
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+#include "../io/issue_groups.hpp"
+#include "../io/keyword_unsupported.hpp"
+#include "slideline/core/error.hpp"
+#include "slideline/element/hex8.hpp"
+
+namespace slideline {
+namespace {
+
+// Material constants beyond this magnitude overflow the products the solver forms (wave speeds,
+// energies): no consistent unit system needs them.
+constexpr Real kMaxConstant = 1e30;
+
+struct Problems {
+  std::vector<Diagnostic> input;         // bad input
+  std::vector<Diagnostic> unimplemented; // valid but not implemented yet
+
+  void bad(const model::Source& src, std::string msg) { input.push_back({src.file, src.line, std::move(msg)}); }
+  void todo(const model::Source& src, std::string msg) {
+    unimplemented.push_back({src.file, src.line, std::move(msg)});
+  }
+
+  [[noreturn]] void raise() const {
+    std::string what;
+    for (const auto* list : {&input, &unimplemented})
+      for (const auto& d : *list) {
+        if (!what.empty()) what += '\n';
+        what += to_string(d);
+      }
+    if (input.empty()) throw NotImplementedError(what);
+    throw InputError(what);
+  }
+};
+
+std::string num(Real v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+void positive(Problems& p, const model::Source& src, const char* card, const char* field, Real v) {
+  if (!(v > 0.0) || !std::isfinite(v))
+    p.bad(src, std::string("field ") + field + " of " + card + " must be positive (got " + num(v) + ")");
+  else if (v > kMaxConstant)
+    p.bad(src, std::string("field ") + field + " of " + card + " is " + num(v) + ", beyond " + num(kMaxConstant) +
+                   " (check the units)");
+}
+
+void poisson(Problems& p, const model::Source& src, const char* card, Real v) {
+  if (!(v > -1.0 && v < 0.5))
+    p.bad(src, std::string("field PR of ") + card + " must be in (-1, 0.5) (got " + num(v) + ")");
+}
+
+void check_materials(const model::Model& m, Problems& p) {
+  for (const auto& mat : m.materials) {
+    std::visit(
+        [&](const auto& x) {
+          using T = std::decay_t<decltype(x)>;
+          if constexpr (std::is_same_v<T, model::MatElastic>) {
+            positive(p, x.src, "*MAT_ELASTIC", "RO", x.ro);
+            positive(p, x.src, "*MAT_ELASTIC", "E", x.e);
+            poisson(p, x.src, "*MAT_ELASTIC", x.pr);
+          } else if constexpr (std::is_same_v<T, model::MatMooneyRivlin>) {
+            const char* card = "*MAT_MOONEY-RIVLIN_RUBBER";
+            positive(p, x.src, card, "RO", x.ro);
+            poisson(p, x.src, card, x.pr);
+            if (!std::isfinite(x.a) || !std::isfinite(x.b) || std::abs(x.a) > kMaxConstant ||
+                std::abs(x.b) > kMaxConstant || !(x.a + x.b > 0.0))
+              p.bad(x.src, std::string("fields A, B of ") + card +
+                               " must give a positive shear modulus 2(A + B) (got A = " + num(x.a) +
+                               ", B = " + num(x.b) + ")");
+          } else {
+            positive(p, x.src, "*MAT_RIGID", "RO", x.ro);
+            positive(p, x.src, "*MAT_RIGID", "E", x.e);
+            poisson(p, x.src, "*MAT_RIGID", x.pr);
+          }
+        },
+        mat);
+  }
+}
+
+void check_controls(const model::Model& m, const BuildOptions& o, Problems& p) {
+  const auto& ts = m.timestep;
+  if (!std::isfinite(ts.tssfac) || ts.tssfac < 0.0 || ts.tssfac > 1.0)
+    p.bad(ts.src, "field TSSFAC of *CONTROL_TIMESTEP must be in (0, 1] (0 = the default 0.9; got " +
+                      num(ts.tssfac) + ")");
+  const Real end = o.end_time > 0.0 ? o.end_time : m.termination.endtim;
+  if (!(end > 0.0) && m.termination.endcyc <= 0) {
+    if (m.termination.src.line > 0)
+      p.bad(m.termination.src, "field ENDTIM of *CONTROL_TERMINATION must be positive (got " +
+                                   num(m.termination.endtim) + ")");
+    else
+      p.bad({m.files.empty() ? std::string() : m.files.front(), 0},
+            "no end time: the deck has no *CONTROL_TERMINATION with ENDTIM > 0");
+  }
+  for (const auto& pm : m.prescribed_motions)
+    if (pm.vid != 0 || pm.birth != 0.0 || pm.death < 1e28)
+      p.todo(pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET: VID, BIRTH and DEATH are not implemented (got VID " +
+                         std::to_string(pm.vid) + ", BIRTH " + num(pm.birth) + ", DEATH " + num(pm.death) + ")");
+}
+
+/// The kind of a degenerate hexahedron, or nullptr for eight distinct nodes.
+const char* degenerate_kind(const std::array<Id, 8>& n) {
+  const std::set<Id> distinct(n.begin(), n.end());
+  if (distinct.size() == 8) return nullptr;
+  const bool tail_blank = n[4] == 0 && n[5] == 0 && n[6] == 0 && n[7] == 0;
+  const bool tail_n4 = n[4] == n[3] && n[5] == n[3] && n[6] == n[3] && n[7] == n[3];
+  if ((tail_blank || tail_n4) && std::set<Id>(n.begin(), n.begin() + 4).size() == 4)
+    return "4-node tetrahedra (written as degenerate *ELEMENT_SOLID, N4 = N5 = ... = N8 or N5..N8 blank)";
+  if (n[4] == n[5] && n[6] == n[7] && distinct.size() == 6)
+    return "6-node pentahedra (degenerate *ELEMENT_SOLID, N5 = N6 and N7 = N8)";
+  if (n[4] == n[5] && n[5] == n[6] && n[6] == n[7] && distinct.size() == 5)
+    return "5-node pyramids (degenerate *ELEMENT_SOLID, N5 = N6 = N7 = N8)";
+  return nullptr;
+}
+
+void check_elements(const model::Model& m, Problems& p) {
+  std::unordered_map<Id, std::size_t> node_of;
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) node_of.emplace(m.nodes[i].id, i);
+  IssueGroups unimplemented, bad;
+  for (const auto& e : m.solids) {
+    const auto src = model::element_source(m, e);
+    const std::string id = std::to_string(e.id);
+    if (const char* kind = degenerate_kind(e.n)) {
+      unimplemented.add(std::string("*ELEMENT_SOLID: ") + kind + " are not supported (only 8-node hexahedra)",
+                        "*ELEMENT_SOLID " + id + " is one of the " + kind + ", which are not supported",
+                        id, src);
+      continue;
+    }
+    if (std::set<Id>(e.n.begin(), e.n.end()).size() != 8) {
+      bad.add("*ELEMENT_SOLID: degenerate hexahedra (repeated nodes in a form slideline does not know)",
+              "*ELEMENT_SOLID " + id + " repeats a node", id, src);
+      continue;
+    }
+    hex8::NodeMat X;
+    bool known = true;
+    for (int k = 0; k < 8; ++k) {
+      const auto f = node_of.find(e.n[static_cast<std::size_t>(k)]);
+      if (f == node_of.end()) {
+        known = false;
+        break;
+      }
+      X.row(k) = m.nodes[f->second].x.transpose();
+    }
+    if (!known) continue;  // check_references reports it
+    const Real v = hex8::volume(X, hex8::volume_gradient(X));
+    if (!(v > 0.0))
+      bad.add("*ELEMENT_SOLID: non-positive volume (inverted hexahedra: list N1-N4 counter-clockwise seen "
+              "from the face N5-N8)",
+              "*ELEMENT_SOLID " + id + " has non-positive volume " + num(v) +
+                  " (inverted: list N1-N4 counter-clockwise seen from the face N5-N8)",
+              id, src);
+  }
+  for (const auto& e : m.shells) {
+    const auto src = model::element_source(m, e);
+    const std::string id = std::to_string(e.id);
+    const std::set<Id> distinct(e.n.begin(), e.n.end());
+    if (e.n[2] == e.n[3] && distinct.size() == 3)
+      unimplemented.add("*ELEMENT_SHELL: triangular shells (N3 = N4) are not implemented",
+                        "*ELEMENT_SHELL " + id + " is a triangle (N3 = N4), which is not implemented",
+                        id, src);
+    else if (distinct.size() != 4)
+      bad.add("*ELEMENT_SHELL: degenerate quadrilaterals (repeated nodes)",
+              "*ELEMENT_SHELL " + id + " repeats a node", id, src);
+  }
+  bad.append_to(p.input, 1);
+  unimplemented.append_to(p.unimplemented, 1);
+}
+
+/// Parts that use a card the reader dropped (--ignore-unsupported): name the card, not a
+/// dangling id, when a caller builds without check_references.
+void check_dropped_references(const model::Model& m, Problems& p) {
+  if (m.unsupported.empty()) return;
+  for (const auto& part : m.parts) {
+    const std::pair<std::string_view, Id> uses[] = {
+        {"material", part.mid}, {"section", part.secid}, {"hourglass", part.hgid}, {"equation of state", part.eosid}};
+    for (const auto& [kind, id] : uses)
+      if (id != 0)
+        if (const auto* u = keyword::find_unsupported(m, kind, id))
+          p.todo(part.src, "part " + std::to_string(part.pid) + " uses " + keyword::card_and_place(*u, part.src.file) +
+                               ", not supported");
+  }
+}
+
+}  // namespace
+
+void validate_model(const model::Model& m, const BuildOptions& options) {
+  Problems p;
+  const model::Source deck{m.files.empty() ? std::string() : m.files.front(), 0};
+  if (m.nodes.empty()) p.bad(deck, "the model has no nodes (*NODE): nothing to run");
+  if (m.solids.empty() && m.shells.empty())
+    p.bad(deck, "the model has no elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run");
+  check_dropped_references(m, p);
+  check_materials(m, p);
+  check_controls(m, options, p);
+  check_elements(m, p);
+  if (!p.input.empty() || !p.unimplemented.empty()) p.raise();
+}
+
+}  // namespace slideline

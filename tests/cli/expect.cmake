@@ -1,0 +1,23 @@
+# Runs one blockcontact command and checks its exit code, its output (stdout and stderr together)
+# and, optionally, that a file was not created. ctest's own properties cannot check an exact exit
+# code and a message at once.
+#   -DBIN=path -DARGS="a|b|c" -DEXIT=n [-DMATCH=regex] [-DNO_MATCH=regex] [-DABSENT=path]
+string(REPLACE "|" ";" args "${ARGS}")
+if(DEFINED ABSENT)
+  file(REMOVE "${ABSENT}")
+endif()
+execute_process(COMMAND "${BIN}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+message("${all}")
+if(NOT rc EQUAL EXIT)
+  message(FATAL_ERROR "exit code ${rc}, expected ${EXIT}")
+endif()
+if(DEFINED MATCH AND NOT all MATCHES "${MATCH}")
+  message(FATAL_ERROR "output does not match: ${MATCH}")
+endif()
+if(DEFINED NO_MATCH AND all MATCHES "${NO_MATCH}")
+  message(FATAL_ERROR "output matches what it must not: ${NO_MATCH}")
+endif()
+if(DEFINED ABSENT AND EXISTS "${ABSENT}")
+  message(FATAL_ERROR "${ABSENT} exists: a refused deck must leave no output file")
+endif()
