@@ -4,16 +4,18 @@
 ///
 /// Rule (deterministic): project onto the current segment. If the closest point lies on one or
 /// more local edges (within the parametric tolerance: a point beyond an edge projects onto it),
-/// project onto the neighbour across each such edge not yet visited, in edge order 0..3. Move to
-/// the best of them if it is better than the current one by `is_better_projection` (nearer beyond
-/// the tie tolerance, or a tie and a lower segment index). Repeat up to `max_hops` times; stop
-/// when the closest point is interior or no neighbour is better. Because ties go to the lower
-/// index in both, tracking agrees with `nearest_segment` over all segments on flat and convex
-/// surfaces, including points exactly above edges and corners, and on curved surfaces while the
-/// point is near the surface (distance small against the radius of curvature). Far from a wavy
-/// surface the distance has several local minima and the walk may stop in one; over a valley (a
-/// concave kink between two segments) both sides may hold an interior minimum and the walk keeps
-/// the one it is on (the two distances differ to second order). The periodic broad-phase search
+/// project onto every neighbour not yet visited that shares such an edge (segment_neighbors
+/// order; all of them where more than two segments share an edge), and in any case onto a
+/// coincident segment (same nodes, e.g. a shell on a solid face). Move to the best of them if it
+/// is better than the current one by `is_better_projection` (nearer beyond the tie tolerance, or
+/// a tie and a lower segment index). Repeat up to `max_hops` times; stop when no neighbour looked
+/// at is better. Because ties go to the lower index in both, tracking agrees with
+/// `nearest_segment` over all segments on flat and convex surfaces, including points exactly
+/// above edges and corners, and on curved surfaces while the point is near the surface (distance
+/// small against the radius of curvature). Far from a wavy surface the distance has several
+/// local minima and the walk may stop in one; over a valley (a concave kink between two
+/// segments) both sides may hold an interior minimum and the walk keeps the one it is on (the
+/// two distances differ to second order). The periodic broad-phase search
 /// (SearchCadence, then nearest_segment) resets it.
 #include <algorithm>
 #include <array>
@@ -27,7 +29,7 @@
 namespace slideline {
 
 struct TrackingOptions {
-  int max_hops = 4;  ///< at most 7 (the visited set is a fixed array)
+  int max_hops = 4;  ///< neighbour moves at most (the walk also stops after 64 segments looked at)
   ProjectionOptions projection;
 };
 
@@ -38,49 +40,72 @@ struct SegmentProjection {
   int hops = 0;  ///< neighbour moves made by track_segment
 };
 
-/// The neighbour of segment s across its local edge k (0..3, see closest_point.hpp), from
-/// surface.segment_neighbors: the lowest-index neighbour that contains both end nodes of the
-/// edge, or -1 on a free boundary or a triangle's collapsed edge. No allocation.
-inline Index neighbor_across_edge(const Surface& surface, Index s, int k) {
+namespace detail {
+
+inline bool segment_has_node(const Surface& surface, Index t, Index n) {
+  const Index* c = &surface.conn[4 * static_cast<std::size_t>(t)];
+  return c[0] == n || c[1] == n || c[2] == n || c[3] == n;
+}
+
+/// True when t has every node of s (a coincident segment, e.g. a shell lying on a solid face).
+inline bool covers_segment(const Surface& surface, Index t, Index s) {
+  const Index* c = &surface.conn[4 * static_cast<std::size_t>(s)];
+  return segment_has_node(surface, t, c[0]) && segment_has_node(surface, t, c[1]) &&
+         segment_has_node(surface, t, c[2]) && segment_has_node(surface, t, c[3]);
+}
+
+/// True when segment t contains both end nodes of local edge k of s (a non-collapsed edge).
+inline bool shares_edge(const Surface& surface, Index s, int k, Index t) {
   const std::size_t base = 4 * static_cast<std::size_t>(s);
   const Index a = surface.conn[base + static_cast<std::size_t>(k)];
   const Index b = surface.conn[base + static_cast<std::size_t>((k + 1) % 4)];
-  if (a == b) return -1;
+  return a != b && segment_has_node(surface, t, a) && segment_has_node(surface, t, b);
+}
+
+}  // namespace detail
+
+/// The neighbour of segment s across its local edge k (0..3, see closest_point.hpp), from
+/// surface.segment_neighbors: the lowest-index neighbour that contains both end nodes of the
+/// edge and is not coincident with s (same nodes, e.g. a shell lying on a solid face), or -1 on
+/// a free edge or a triangle's collapsed edge. No allocation.
+inline Index neighbor_across_edge(const Surface& surface, Index s, int k) {
   const Csr& nb = surface.segment_neighbors;
   for (Index j = nb.begin(s); j < nb.end(s); ++j) {
     const Index t = nb.value[static_cast<std::size_t>(j)];
-    const Index* c = &surface.conn[4 * static_cast<std::size_t>(t)];
-    const bool has_a = c[0] == a || c[1] == a || c[2] == a || c[3] == a;
-    const bool has_b = c[0] == b || c[1] == b || c[2] == b || c[3] == b;
-    if (has_a && has_b) return t;
+    if (detail::shares_edge(surface, s, k, t) && !detail::covers_segment(surface, t, s)) return t;
   }
   return -1;
 }
 
-/// Re-projects point p (length) starting from segment `start` of `surface` at coordinates x and
-/// walks to neighbours as described in the file comment. Returns the segment it ends on and the
-/// projection there. No allocation.
+/// Re-projects point p (length) starting from segment `start` (a valid index) of `surface` at
+/// coordinates x and walks to neighbours as described in the file comment: every unvisited
+/// neighbour (surface.segment_neighbors) that shares an edge the closest point lies on is
+/// projected onto, so coincident segments and edges shared by more than two segments are handled.
+/// Returns the segment it ends on and the projection there. No allocation.
 inline SegmentProjection track_segment(const Vec3& p, Index start, const Surface& surface,
                                        const Vec3Field& x, const TrackingOptions& opt = {}) {
   const ProjectionOptions& po = opt.projection;
   SegmentProjection best{start, project_point_to_segment(p, surface, start, x, po), 0};
-  std::array<Index, 32> visited{};
-  int nvisited = 0;
+  std::array<Index, 64> visited{};
+  std::size_t nvisited = 0;
   visited[nvisited++] = start;
-  const int max_hops = std::min(opt.max_hops, 7);
-  for (int hop = 0; hop < max_hops && !best.projection.interior(); ++hop) {
+  const Csr& nb = surface.segment_neighbors;
+  for (int hop = 0; hop < opt.max_hops; ++hop) {
     Index next = -1;
     Projection next_proj;
-    for (int k = 0; k < kSegmentEdges; ++k) {
-      if (!best.projection.on_edge(k)) continue;
-      const Index nb = neighbor_across_edge(surface, best.segment, k);
-      if (nb < 0 || std::find(visited.begin(), visited.begin() + nvisited, nb) != visited.begin() + nvisited) {
-        continue;
+    for (Index j = nb.begin(best.segment); j < nb.end(best.segment); ++j) {
+      const Index t = nb.value[static_cast<std::size_t>(j)];
+      bool across = detail::covers_segment(surface, t, best.segment);
+      for (int k = 0; k < kSegmentEdges && !across; ++k) {
+        across = best.projection.on_edge(k) && detail::shares_edge(surface, best.segment, k, t);
       }
-      visited[nvisited++] = nb;
-      const Projection pr = project_point_to_segment(p, surface, nb, x, po);
-      if (next < 0 || is_better_projection(pr, nb, next_proj, next, po)) {
-        next = nb;
+      if (!across) continue;
+      if (std::find(visited.begin(), visited.begin() + nvisited, t) != visited.begin() + nvisited) continue;
+      if (nvisited == visited.size()) break;  // an extreme fan: stop looking further
+      visited[nvisited++] = t;
+      const Projection pr = project_point_to_segment(p, surface, t, x, po);
+      if (next < 0 || is_better_projection(pr, t, next_proj, next, po)) {
+        next = t;
         next_proj = pr;
       }
     }

@@ -147,3 +147,30 @@ TEST(SegmentTracking, NearestOverOneNodesBroadPhaseRun) {
   EXPECT_EQ(nearest_segment(Vec3(1.5, 1.5, 0.2), run, s, x).segment, 4);
   EXPECT_EQ(nearest_segment(Vec3(1.0, 0.5, 0.2), run, s, x).segment, 0);  // tie on the 0-1 edge
 }
+
+TEST(SegmentTracking, CoincidentSegmentsDoNotHideTheNeighbourAcross) {
+  // A shell layer lying on a solid face: every quad twice, the copies (0..11) numbered before the
+  // originals (12..23), so the lowest segment sharing an edge of an original is often its own
+  // coincident copy. The walk must still cross edges and agree with the full search, which picks
+  // the copies (lower indices) on ties.
+  Vec3Field x;
+  const Surface plate = test::make_plate(x, 4, 3, 1.0, Vec3::Zero());
+  Surface s;
+  s.conn = plate.conn;
+  s.conn.insert(s.conn.end(), plate.conn.begin(), plate.conn.end());
+  test::finish_surface(s);
+  EXPECT_EQ(neighbor_across_edge(s, 12 + 5, 1), 6);  // not its own copy 5
+  EXPECT_EQ(neighbor_across_edge(s, 5, 1), 6);
+  const std::vector<Index> all = all_segments(s);
+  Index seg = 12;
+  int moves = 0;
+  for (int t = 0; t <= 40; ++t) {
+    const Vec3 p(0.3 + 0.09 * t, 0.2 + 0.065 * t, 0.05);
+    const SegmentProjection tr = track_segment(p, seg, s, x);
+    ASSERT_EQ(tr.segment, nearest_segment(p, all, s, x).segment) << "step " << t;
+    moves += tr.segment != seg;
+    seg = tr.segment;
+  }
+  EXPECT_GE(moves, 5);
+  EXPECT_LT(seg, 12);
+}
