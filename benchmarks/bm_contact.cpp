@@ -1,0 +1,183 @@
+// Contact search costs: broad phase (FCL tree vs brute force), closest-point projection and local
+// segment tracking. A flat master plate of nx x nx unit segments and a slave grid of nx x nx nodes
+// 0.05 above it (offset so that no slave node sits over a master node), sliding tangentially.
+// Rates are per slave node (or per projection): the counters with kInvert report time per item.
+//   bm_contact --benchmark_min_time=0.05s
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numeric>
+
+#include "../tests/unit/contact/plate_surface.hpp"
+#include "slideline/contact/search/brute_force_broad_phase.hpp"
+#include "slideline/contact/search/fcl_broad_phase.hpp"
+#include "slideline/contact/search/narrow_phase.hpp"
+
+using namespace slideline;
+
+namespace {
+
+struct Scene {
+  Vec3Field x;
+  Surface master;
+  std::vector<Index> slaves;
+};
+
+// Scenes are cached by size: building the 10^6-segment one takes longer than a benchmark run.
+Scene& scene(Index nx) {
+  static std::map<Index, std::unique_ptr<Scene>> cache;
+  auto& s = cache[nx];
+  if (!s) {
+    s = std::make_unique<Scene>();
+    s->master = test::make_plate(s->x, nx, nx, 1.0, Vec3::Zero());
+    for (Index j = 0; j < nx; ++j) {
+      for (Index i = 0; i < nx; ++i) {
+        s->slaves.push_back(static_cast<Index>(s->x.size()));
+        s->x.x.push_back(0.37 + i);
+        s->x.y.push_back(0.41 + j);
+        s->x.z.push_back(0.05);
+      }
+    }
+  }
+  return *s;
+}
+
+// Slides the slave nodes by dx in x per step, turning back every 8 steps (so they stay over the
+// plate).
+void slide(Scene& s, long step, Real dx) {
+  if ((step / 8) % 2 != 0) dx = -dx;
+  for (Index n : s.slaves) s.x.x[n] += dx;
+}
+
+void set_rate(benchmark::State& state, const char* name, double items) {
+  state.counters[name] = benchmark::Counter(items, benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+}
+
+template <class BP>
+void broad_phase_update_query(benchmark::State& state) {
+  const Index nx = static_cast<Index>(state.range(0));
+  Scene& s = scene(nx);
+  BroadPhaseOptions opt;
+  opt.margin = 0.1;
+  BP bp;
+  const auto t0 = std::chrono::steady_clock::now();
+  bp.build(s.master, s.x, opt);
+  const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<Candidate> out;
+  const std::vector<Real> x0 = s.x.x;
+  long step = 0;
+  for (auto _ : state) {
+    slide(s, step++, 0.01);
+    bp.update(s.x);
+    bp.query(s.slaves, s.x, 0.0, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["segments"] = static_cast<double>(s.master.segment_count());
+  state.counters["slave_nodes"] = static_cast<double>(s.slaves.size());
+  state.counters["cand_per_node"] = static_cast<double>(out.size()) / static_cast<double>(s.slaves.size());
+  state.counters["build_ms"] = 1e3 * build_s;
+  s.x.x = x0;
+  set_rate(state, "t_per_node", static_cast<double>(s.slaves.size()));
+}
+
+void BM_FclUpdateQuery(benchmark::State& state) { broad_phase_update_query<FclBroadPhase>(state); }
+BENCHMARK(BM_FclUpdateQuery)->Arg(10)->Arg(32)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void BM_BruteForceUpdateQuery(benchmark::State& state) {
+  broad_phase_update_query<BruteForceBroadPhase>(state);
+}
+BENCHMARK(BM_BruteForceUpdateQuery)->Arg(10)->Arg(32)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// FCL query alone (no box update or refit), to split the cost.
+void BM_FclQueryOnly(benchmark::State& state) {
+  Scene& s = scene(static_cast<Index>(state.range(0)));
+  FclBroadPhase bp;
+  bp.build(s.master, s.x, BroadPhaseOptions{0.1, {}});
+  std::vector<Candidate> out;
+  for (auto _ : state) {
+    bp.query(s.slaves, s.x, 0.0, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["segments"] = static_cast<double>(s.master.segment_count());
+  set_rate(state, "t_per_node", static_cast<double>(s.slaves.size()));
+}
+BENCHMARK(BM_FclQueryOnly)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// One closest-point projection. Arg 0: a mildly warped quad (corners +-1 % of a side off-plane),
+// points over the interior (Newton only); 1: the same, points beyond the edges (Newton + the
+// closed-form edges); 2: a strongly warped quad (+-10 %), points over the interior (Newton, the
+// edges and a Newton restart).
+void BM_Projection(benchmark::State& state) {
+  const Real w = state.range(0) == 2 ? 0.1 : 0.01;
+  const SegmentCorners c{Vec3(0.0, 0.0, w), Vec3(1.1, 0.05, -w), Vec3(0.95, 0.9, w), Vec3(-0.1, 1.05, -w)};
+  const Real spread = state.range(0) == 1 ? 2.5 : 0.8;
+  std::vector<Vec3> pts;
+  for (int k = 0; k < 1024; ++k) {
+    const Real a = 0.5 + spread * (std::fmod(0.6180339887 * k, 1.0) - 0.5);
+    const Real b = 0.5 + spread * (std::fmod(0.7548776662 * k, 1.0) - 0.5);
+    pts.emplace_back(a, b, 0.05 * std::sin(k));
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const Projection r = project_point_to_quad(pts[k++ & 1023], c);
+    benchmark::DoNotOptimize(r.gap);
+  }
+  set_rate(state, "t_per_projection", 1.0);
+}
+BENCHMARK(BM_Projection)->Arg(0)->Arg(1)->Arg(2);
+
+// Local tracking of every slave node on a 100 x 100 plate while sliding: per node, re-project on
+// the current segment and walk to a neighbour when it leaves.
+void BM_TrackingStep(benchmark::State& state) {
+  Scene& s = scene(static_cast<Index>(state.range(0)));
+  std::vector<Index> seg(s.slaves.size());
+  const Index nx = static_cast<Index>(state.range(0));
+  for (std::size_t i = 0; i < s.slaves.size(); ++i) {
+    const Vec3 p = s.x.get(s.slaves[i]);
+    seg[i] = std::min<Index>(nx - 1, static_cast<Index>(p[0])) + nx * std::min<Index>(nx - 1, static_cast<Index>(p[1]));
+  }
+  const std::vector<Real> x0 = s.x.x;
+  long step = 0, moves = 0;
+  for (auto _ : state) {
+    slide(s, step++, 0.1);  // 0.8 per half period: every node crosses a segment edge
+    for (std::size_t i = 0; i < s.slaves.size(); ++i) {
+      const SegmentProjection r = track_segment(s.x.get(s.slaves[i]), seg[i], s.master, s.x);
+      moves += r.segment != seg[i];
+      seg[i] = r.segment;
+    }
+  }
+  state.counters["slave_nodes"] = static_cast<double>(s.slaves.size());
+  state.counters["moves_per_step"] = static_cast<double>(moves) / static_cast<double>(step);
+  s.x.x = x0;
+  set_rate(state, "t_per_node", static_cast<double>(s.slaves.size()));
+}
+BENCHMARK(BM_TrackingStep)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// A full search step: update + query + nearest candidate per node (the work done when the search
+// cadence says a search is due).
+void BM_FclSearchAndNearest(benchmark::State& state) {
+  Scene& s = scene(static_cast<Index>(state.range(0)));
+  FclBroadPhase bp;
+  bp.build(s.master, s.x, BroadPhaseOptions{0.1, {}});
+  std::vector<Candidate> cand;
+  std::vector<SegmentProjection> nearest(s.slaves.size());
+  const std::vector<Real> x0 = s.x.x;
+  long step = 0;
+  for (auto _ : state) {
+    slide(s, step++, 0.01);
+    bp.update(s.x);
+    bp.query(s.slaves, s.x, 0.0, cand);
+    assign_nearest_segments(s.slaves, cand, s.master, s.x, nearest);
+    benchmark::DoNotOptimize(nearest.data());
+  }
+  s.x.x = x0;
+  state.counters["segments"] = static_cast<double>(s.master.segment_count());
+  set_rate(state, "t_per_node", static_cast<double>(s.slaves.size()));
+}
+BENCHMARK(BM_FclSearchAndNearest)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond);
+
+}  // namespace
