@@ -18,8 +18,8 @@ namespace {
 
 constexpr Real kRho = 2.0, kE = 1000.0, kNu = 0.3, kBeta = 2.5e-3;
 
-/// An nx x ny x nz grid of hexahedra of side h; interior-free jitter of every node by up to
-/// `jitter` h (a distorted mesh). 12 elements = one full batch of 8 lanes and a partial one.
+/// An nx x ny x nz grid of hexahedra of side h, every node moved by up to `jitter` h (a distorted
+/// mesh). 3 x 2 x 2 = 12 elements: one full batch of 8 lanes and a partial one.
 struct HexGrid {
   NodalFields nodes;
   std::vector<Index> conn;
@@ -28,7 +28,9 @@ struct HexGrid {
 
 HexGrid hex_grid(int nx, int ny, int nz, Real h, Real jitter) {
   HexGrid g;
-  const auto id = [&](int i, int j, int k) { return static_cast<Index>(i + (nx + 1) * (j + (ny + 1) * k)); };
+  const auto id = [&](int i, int j, int k) {
+    return static_cast<Index>(i + (nx + 1) * (j + (ny + 1) * k));
+  };
   g.nodes.resize(static_cast<std::size_t>((nx + 1) * (ny + 1) * (nz + 1)));
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
@@ -54,8 +56,9 @@ HexGrid hex_grid(int nx, int ny, int nz, Real h, Real jitter) {
 /// A hexahedron block with no hourglass control and no bulk viscosity, so that the damping stress
 /// is the only rate-dependent term.
 HexBlock<ElasticSolid> hex_block(const HexGrid& g, Real beta) {
-  return HexBlock<ElasticSolid>(1, ElasticSolid(kRho, kE, kNu), HexHourglass{HexHourglass::Kind::viscous, 0.0},
-                                BulkViscosity{0.0, 0.0}, g.conn, g.ids, StiffnessDamping{beta});
+  return HexBlock<ElasticSolid>(1, ElasticSolid(kRho, kE, kNu),
+                                HexHourglass{HexHourglass::Kind::viscous, 0.0}, BulkViscosity{0.0, 0.0},
+                                g.conn, g.ids, StiffnessDamping{beta});
 }
 
 struct Evaluation {
@@ -71,8 +74,9 @@ Evaluation evaluate(ElementBlock& b, NodalFields& n, Real dt = 0.0) {
   r.dt = b.compute_forces(n, dt, c, r.energy);
   c.gather(n.f_int, n.m_int);
   for (std::size_t i = 0; i < n.size(); ++i) {
-    r.power += n.f_int.get(static_cast<Index>(i)).dot(n.v.get(static_cast<Index>(i)));
-    if (b.has_moments()) r.power += n.m_int.get(static_cast<Index>(i)).dot(n.omega.get(static_cast<Index>(i)));
+    const Index k = static_cast<Index>(i);
+    r.power += n.f_int.get(k).dot(n.v.get(k));
+    if (b.has_moments()) r.power += n.m_int.get(k).dot(n.omega.get(k));
   }
   return r;
 }
@@ -95,7 +99,8 @@ TEST(HexStiffnessDamping, AffineVelocityDissipatesBetaDCD) {
     g.nodes.v.set(static_cast<Index>(i), L * g.nodes.x.get(static_cast<Index>(i)));
   const Mat3 D = 0.5 * (L + L.transpose());
   const ElasticSolid mat(kRho, kE, kNu);
-  const Real density = mat.lame_lambda() * D.trace() * D.trace() + 2.0 * mat.shear_modulus() * (D.array() * D.array()).sum();
+  const Real density = mat.lame_lambda() * D.trace() * D.trace() +
+                       2.0 * mat.shear_modulus() * (D.array() * D.array()).sum();
   Real volume = 0.0;
   for (Index e = 0; e < static_cast<Index>(g.ids.size()); ++e) volume += hex_volume(g, e);
 
