@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "slideline/core/parallel.hpp"
+#include "slideline/element/block_factory.hpp"
 #include "slideline/element/shell_block.hpp"
 #include "slideline/solver/simulation.hpp"
 
@@ -37,8 +38,9 @@ std::unique_ptr<Simulation> make_plate(int n) {
       conn.insert(conn.end(), {i + np * j, i + 1 + np * j, i + 1 + np * (j + 1), i + np * (j + 1)});
   std::vector<Id> ids(conn.size() / 4);
   for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<Id>(k + 1);
-  sim->blocks.push_back(make_shell_block(1, 0.1, 1000.0, 0.3, 0.01, 5, 5.0 / 6.0, 0.1, 1.5, 0.06,
-                                         std::move(conn), std::move(ids)));
+  sim->blocks.push_back(make_shell_block(1, ShellMaterial{0.1, 1000.0, 0.3},
+                                        ShellSection{.thickness = 0.01}, std::move(conn),
+                                        std::move(ids)));
   BodyLoad bz;
   bz.axis = Axis::z;
   bz.scale = -10.0;

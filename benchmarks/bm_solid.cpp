@@ -12,8 +12,9 @@ using namespace slideline;
 
 namespace {
 
-/// n x n x n unit cube of the spec's rubber, bottom fixed in y, loaded by gravity-like body load.
-std::unique_ptr<Simulation> make_cube(int n) {
+/// n x n x n unit cube of the spec's rubber, bottom fixed in y, loaded by gravity-like body load;
+/// stiffness damping `beta` (0 = none).
+std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
   auto sim = std::make_unique<Simulation>();
   const int m = n + 1;
   const Index nn = m * m * m;
@@ -43,7 +44,7 @@ std::unique_ptr<Simulation> make_cube(int n) {
   sim->blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
       1, MooneyRivlin(0.01, 909.091, 0.0, 0.1),
       HexHourglass{HexHourglass::Kind::physical_stiffness, 1.0}, BulkViscosity{}, std::move(conn),
-      std::move(ids)));
+      std::move(ids), StiffnessDamping{beta}));
   SupportGroup bottom{"bottom", {}, Vec3::Zero()};
   Support s;
   s.axis = Axis::y;
@@ -73,7 +74,10 @@ void set_counters(benchmark::State& state, Index elements) {
 
 void BM_HexInternalForces(benchmark::State& state) {
   set_threads(static_cast<int>(state.range(1)));
-  auto sim = make_cube(static_cast<int>(state.range(0)));
+  // Third argument: 1 = with stiffness damping, beta = 3.4e-6 (about 10% of critical at the
+  // highest element frequency of n = 46), to price the damped kernel against the plain one.
+  const Real beta = state.range(2) != 0 ? 3.4e-6 : 0.0;
+  auto sim = make_cube(static_cast<int>(state.range(0)), beta);
   for (int i = 0; i < 20; ++i) sim->step();  // leave the reference state (bulk viscosity active)
   BlockEnergy e;
   // Reuse the simulation's own step but time only the element kernel via a private copy of the
@@ -99,8 +103,8 @@ void BM_FullStep(benchmark::State& state) {
 
 void sizes(benchmark::internal::Benchmark* b) {
   for (int n : {10, 22, 46, 100})
-    for (int t : {1, 2}) b->Args({n, t});
-  b->ArgNames({"n", "threads"});
+    for (int t : {1, 2}) b->Args({n, t, 0});
+  b->ArgNames({"n", "threads", "damped"});
   b->Unit(benchmark::kMillisecond);
   b->UseRealTime();
 }
@@ -108,4 +112,9 @@ void sizes(benchmark::internal::Benchmark* b) {
 }  // namespace
 
 BENCHMARK(BM_HexInternalForces)->Apply(sizes);
+BENCHMARK(BM_HexInternalForces)
+    ->Args({46, 1, 1})
+    ->ArgNames({"n", "threads", "damped"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_FullStep)->Apply(sizes);

@@ -395,6 +395,19 @@ void read_damping_part(const Context& ctx, Block& b, Model& m) {
   }
 }
 
+/// *DAMPING_PART_STIFFNESS (PID COEF), or with _SET (PSID COEF): one record per card.
+void read_damping_stiffness(const Context& ctx, Block& b, Model& m, bool set) {
+  while (const Line* l = next_record(b)) {
+    Card c = card_of(ctx, *l, b);
+    model::DampingPartStiffness d;
+    d.set = set;
+    c.get(0, set ? "PSID" : "PID", d.pid);
+    c.get(1, "COEF", d.coef);
+    d.src = ctx.source(l->number);
+    m.damping_stiffness.push_back(d);
+  }
+}
+
 void read_database_dt(const Context& ctx, Block& b, Real& dt) {
   single_card(ctx, b, [&](const Card& c, const Line&) { c.get(0, "DT", dt); });
 }
@@ -516,6 +529,7 @@ const std::vector<Entry>& table() {
       {"*DEFINE_CURVE", "_TITLE", read_curve},
       {"*DAMPING_GLOBAL", nullptr, plain(read_damping_global)},
       {"*DAMPING_PART_MASS", nullptr, plain(read_damping_part)},
+      {"*DAMPING_PART_STIFFNESS", "_SET", read_damping_stiffness},
       {"*DATABASE_HISTORY_NODE", nullptr, plain([](const Context& c, Block& b, Model& m) {
          read_id_list(c, b, "ID", m.database.history_nodes);
        })},

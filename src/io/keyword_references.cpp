@@ -154,6 +154,12 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
     if (!parts.count(d.pid)) ck.add(d.src, "*DAMPING_PART_MASS refers to undefined part " + std::to_string(d.pid));
     if (!curves.count(d.lcid)) ck.add(d.src, "*DAMPING_PART_MASS refers to undefined curve " + std::to_string(d.lcid));
   }
+  for (const auto& d : m.damping_stiffness) {
+    if (d.set && !part_sets.count(d.pid))
+      ck.add(d.src, "*DAMPING_PART_STIFFNESS_SET refers to undefined part set " + std::to_string(d.pid));
+    if (!d.set && !parts.count(d.pid))
+      ck.add(d.src, "*DAMPING_PART_STIFFNESS refers to undefined part " + std::to_string(d.pid));
+  }
   for (Id n : m.database.history_nodes)
     if (!nodes.count(n)) ck.add(none, "*DATABASE_HISTORY_NODE refers to undefined node " + std::to_string(n));
 

@@ -249,6 +249,11 @@ std::string write_keyword_string(const model::Model& m) {
     o += CardOut().i(d.pid).i(d.lcid).r(d.sf).i(d.flag).str();
     if (d.flag == 1) o += "\n";  // the per-direction scale-factor card FLAG=1 asks for
   }
+  for (const auto& d : m.damping_stiffness) {
+    o += d.set ? "*DAMPING_PART_STIFFNESS_SET\n$#    PSID      COEF\n"
+               : "*DAMPING_PART_STIFFNESS\n$#     PID      COEF\n";
+    o += CardOut().i(d.pid).r(d.coef).str();
+  }
   for (const auto& cv : m.curves) {
     o += cv.title.empty() ? "*DEFINE_CURVE\n" : "*DEFINE_CURVE_TITLE\n" + heading(cv.title);
     o += "$#    LCID      SIDR       SFA       SFO      OFFA      OFFO    DATTYP\n";

@@ -1,16 +1,14 @@
 #include "slideline/solver/build.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <unordered_map>
 
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/core/error.hpp"
-#include "slideline/element/hex_block.hpp"
-#include "slideline/material/elastic.hpp"
-#include "slideline/material/mooney_rivlin.hpp"
-#include "slideline/element/shell_block.hpp"
+#include "slideline/element/block_factory.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/validate_model.hpp"
 
@@ -127,6 +125,7 @@ struct Builder {
         m.shell_sections, [](const model::SectionShell& s) { return s.secid; }, "*SECTION_SHELL");
     const IdTable<model::Hourglass> hgs(m.hourglasses, [](const model::Hourglass& h) { return h.hgid; },
                                         "*HOURGLASS");
+    const std::map<Id, StiffnessDamping> damped = stiffness_damping(parts);
     std::unordered_map<Id, const model::Material*> mats;
     for (const auto& mat : m.materials)
       if (!mats.emplace(model::material_id(mat), &mat).second)
@@ -187,12 +186,15 @@ struct Builder {
         bv = {h.q1, h.q2};
       }
 
+      // Stiffness damping has nothing to act on in a rigid part.
       if (const auto* rigid = std::get_if<model::MatRigid>(mit->second)) {
         build_rigid_part(part, *rigid, g, pn, shsec);
         continue;
       }
+      const auto dit = damped.find(pid);
+      const StiffnessDamping damping = dit == damped.end() ? StiffnessDamping{} : dit->second;
       if (!g.quad_ids.empty()) {
-        build_shell_part(part, *mit->second, g, shsec, ihq, qm, bv);
+        build_shell_part(part, *mit->second, g, shsec, ihq, qm, bv, damping);
         continue;
       }
       const auto& sec = ssec.at(part.secid, part.src, "SECID of *PART");
@@ -211,24 +213,44 @@ struct Builder {
                                   " is not implemented (use 1-3 viscous or 10 physical stiffness)");
       }
       hg.coefficient = qm;
-      std::visit(
-          [&](const auto& mat) {
-            using T = std::decay_t<decltype(mat)>;
-            if constexpr (std::is_same_v<T, model::MatMooneyRivlin>) {
-              check_positive(mat.ro, "RO", mat.src);
-              sim->blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
-                  pid, MooneyRivlin(mat.ro, mat.a, mat.b, mat.pr), hg, bv, std::move(g.hex_conn),
-                  std::move(g.hex_ids)));
-            } else if constexpr (std::is_same_v<T, model::MatElastic>) {
-              check_positive(mat.ro, "RO", mat.src);
-              check_positive(mat.e, "E", mat.src);
-              sim->blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
-                  pid, ElasticSolid(mat.ro, mat.e, mat.pr), hg, bv, std::move(g.hex_conn),
-                  std::move(g.hex_ids)));
-            }
-          },
-          *mit->second);
+      HexMaterialSpec spec;
+      if (const auto* mr = std::get_if<model::MatMooneyRivlin>(mit->second)) {
+        check_positive(mr->ro, "RO", mr->src);
+        spec = MooneyRivlinSpec{mr->ro, mr->a, mr->b, mr->pr};
+      } else {
+        const auto& el = std::get<model::MatElastic>(*mit->second);
+        check_positive(el.ro, "RO", el.src);
+        check_positive(el.e, "E", el.src);
+        spec = ElasticSolidSpec{el.ro, el.e, el.pr};
+      }
+      sim->blocks.push_back(make_hex_block(pid, spec, hg, bv, std::move(g.hex_conn),
+                                           std::move(g.hex_ids), damping));
     }
+  }
+
+  /// *DAMPING_PART_STIFFNESS[_SET] by part id. COEF < 0 is the classical (LS-DYNA 950) Rayleigh
+  /// coefficient beta = -COEF; COEF > 0 is LS-DYNA's later, unpublished formulation.
+  std::map<Id, StiffnessDamping> stiffness_damping(const IdTable<model::Part>& parts) const {
+    std::map<Id, StiffnessDamping> out;
+    for (const auto& d : m.damping_stiffness) {
+      if (d.coef > 0.0)
+        throw NotImplementedError(
+            describe(d.src) + ": *DAMPING_PART_STIFFNESS COEF = " + std::to_string(d.coef) +
+            " > 0 selects LS-DYNA's approximate fraction of critical damping at high frequencies, "
+            "whose formulation is not published; give COEF = -beta (beta in time units, the "
+            "classical Rayleigh coefficient: fraction of critical damping beta * omega / 2)");
+      if (!std::isfinite(d.coef))
+        throw InputError(describe(d.src) + ": field COEF of *DAMPING_PART_STIFFNESS must be finite");
+      const std::vector<Id> pids =
+          d.set ? part_set(d.pid, d.src, "PSID") : std::vector<Id>{d.pid};
+      for (Id pid : pids) {
+        parts.at(pid, d.src, d.set ? "a part of PSID" : "PID");
+        if (!out.emplace(pid, StiffnessDamping{-d.coef}).second)
+          throw InputError(describe(d.src) + ": part " + std::to_string(pid) +
+                           " has stiffness damping from two *DAMPING_PART_STIFFNESS cards");
+      }
+    }
+    return out;
   }
 
   template <class Sections>
@@ -250,7 +272,8 @@ struct Builder {
 
   template <class Sections>
   void build_shell_part(const model::Part& part, const model::Material& material, PartElements& g,
-                        const Sections& shsec, int ihq, Real qm, const BulkViscosity& bv) {
+                        const Sections& shsec, int ihq, Real qm, const BulkViscosity& bv,
+                        StiffnessDamping damping) {
     const auto& sec = shell_section(part, shsec);
     const auto* el = std::get_if<model::MatElastic>(&material);
     if (el == nullptr)
@@ -267,10 +290,15 @@ struct Builder {
     if (nip < 1 || nip > 5)
       throw InputError(describe(sec.src) + ": field NIP of *SECTION_SHELL must be 1 to 5 (got " +
                        std::to_string(sec.nip) + ")");
-    const Real shrf = sec.shrf == 0.0 ? 1.0 : sec.shrf;
-    sim->blocks.push_back(make_shell_block(part.pid, el->ro, el->e, el->pr, sec.t[0], nip, shrf, qm,
-                                           bv.quadratic, bv.linear, std::move(g.quad_conn),
-                                           std::move(g.quad_ids)));
+    ShellSection ss;
+    ss.thickness = sec.t[0];
+    ss.nip = nip;
+    ss.rule = shell_bt::ThicknessRuleKind::gauss;
+    ss.shear_factor = sec.shrf == 0.0 ? 1.0 : sec.shrf;
+    ss.hourglass_coefficient = qm;
+    ss.bulk = bv;
+    sim->blocks.push_back(make_shell_block(part.pid, ShellMaterial{el->ro, el->e, el->pr}, ss,
+                                           std::move(g.quad_conn), std::move(g.quad_ids), damping));
   }
 
   /// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x,

@@ -1,5 +1,7 @@
 # Installs the build tree into a scratch prefix, then configures, builds and runs examples/
-# against it with find_package(slideline). Fails on any error.
+# against it with find_package(slideline), and (WITH_CLI) runs the installed blockcontact from the
+# install tree: `--help` and a `check` of tests/data/decks/unit_cube.k, with no LD_LIBRARY_PATH,
+# so that the program must find libslideline through its install RPATH. Fails on any error.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix
@@ -21,4 +23,22 @@ execute_process(COMMAND ${WORK_DIR}/build/loaded_block RESULT_VARIABLE rc OUTPUT
 message(STATUS "${out}")
 if(rc)
   message(FATAL_ERROR "examples/loaded_block failed: ${rc}")
+endif()
+
+if(WITH_CLI)
+  set(cli ${WORK_DIR}/prefix/${INSTALL_BINDIR}/blockcontact)
+  if(NOT EXISTS ${cli})
+    message(FATAL_ERROR "blockcontact was not installed to ${cli}")
+  endif()
+  foreach(args "--help" "check;${SOURCE_DIR}/tests/data/decks/unit_cube.k")
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH ${cli} ${args}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message(STATUS "installed blockcontact ${args}:\n${out}${err}")
+    if(rc)
+      message(FATAL_ERROR "installed blockcontact ${args} failed (${rc}): ${err}")
+    endif()
+  endforeach()
+  if(NOT out MATCHES "ok")
+    message(FATAL_ERROR "installed blockcontact check did not report ok")
+  endif()
 endif()

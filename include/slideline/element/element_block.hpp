@@ -21,17 +21,20 @@ struct BlockEnergy {
   Real internal = 0.0;   ///< stored strain energy, where the material has one (else 0)
   Real hourglass_power = 0.0;  ///< rate of work done against hourglass forces
   Real viscous_power = 0.0;    ///< rate of work done against bulk viscosity
-  Real damping_power = 0.0;    ///< rate of work done against stiffness-proportional damping
+  /// Rate of work done against stiffness-proportional (Rayleigh) damping stresses,
+  /// V beta D : C : D >= 0 summed over the elements (force x length / time).
+  Real damping_power = 0.0;
 };
 
 /// Reduces the per-chunk results of an element loop in chunk order (so the result does not depend
 /// on the thread count): throws InstabilityError naming the first bad element (`bad[c] >= 0` is an
-/// element index; `ids` maps it to the deck id), adds the hourglass and bulk-viscosity powers to
-/// `energy`, and returns the smallest element step.
+/// element index; `ids` maps it to the deck id), adds the hourglass, bulk-viscosity and
+/// stiffness-damping powers to `energy`, and returns the smallest element step.
 inline Real reduce_element_chunks(const std::vector<Real>& dt, const std::vector<Real>& hourglass,
-                                  const std::vector<Real>& viscous, const std::vector<Index>& bad,
-                                  BlockEnergy& energy, const char* kind, const std::vector<Id>& ids,
-                                  Id part, const char* failure) {
+                                  const std::vector<Real>& viscous, const std::vector<Real>& damping,
+                                  const std::vector<Index>& bad, BlockEnergy& energy,
+                                  const char* kind, const std::vector<Id>& ids, Id part,
+                                  const char* failure) {
   for (Index b : bad)
     if (b >= 0)
       throw InstabilityError(std::string(kind) + " element " + std::to_string(ids[b]) + " of part " +
@@ -39,6 +42,7 @@ inline Real reduce_element_chunks(const std::vector<Real>& dt, const std::vector
                              0.0, 0);
   energy.hourglass_power += ordered_sum(hourglass, 0.0);
   energy.viscous_power += ordered_sum(viscous, 0.0);
+  energy.damping_power += ordered_sum(damping, 0.0);
   Real dtmin = std::numeric_limits<Real>::max();
   for (Real d : dt) dtmin = std::min(dtmin, d);
   return dtmin;

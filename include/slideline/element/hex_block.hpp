@@ -10,44 +10,38 @@
 #include "slideline/core/lanes.hpp"
 #include "slideline/core/tensor3.hpp"
 #include "slideline/core/parallel.hpp"
+#include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/hex8.hpp"
 
 namespace slideline {
 
-/// Hourglass control of a hexahedron block.
-struct HexHourglass {
-  enum class Kind : std::uint8_t {
-    viscous,            ///< Flanagan-Belytschko viscous (LS-DYNA/DYNA3D types 1-3)
-    physical_stiffness  ///< total-displacement stiffness scaled to the element's bending stiffness (type 10)
-  };
-  Kind kind = Kind::viscous;
-  Real coefficient = 0.1;
-};
-
-/// Linear and quadratic bulk viscosity coefficients.
-struct BulkViscosity {
-  Real quadratic = 1.5;
-  Real linear = 0.06;
-};
-
 /// Hexahedra with material law `Material` (MooneyRivlin, ElasticSolid): a class with
-/// density(), wave_speed(), youngs_modulus() and cauchy_stress(F).
+/// density(), wave_speed(), youngs_modulus(), shear_modulus(), lame_lambda() and
+/// cauchy_stress(F).
 template <class Material>
 class HexBlock final : public ElementBlock {
  public:
+  /// `damping.beta` > 0 adds the stiffness-proportional damping stress
+  /// beta (lambda tr(D) I + 2 mu D) with the material's small-strain Lame constants.
   HexBlock(Id part_id, Material material, HexHourglass hourglass, BulkViscosity bulk,
-           std::vector<Index> connectivity, std::vector<Id> element_ids)
+           std::vector<Index> connectivity, std::vector<Id> element_ids,
+           StiffnessDamping damping = {})
       : part_id_(part_id),
         mat_(std::move(material)),
         hg_(hourglass),
         bulk_(bulk),
+        damping_(damping),
         conn_(std::move(connectivity)),
         ids_(std::move(element_ids)) {
+    if (!(damping_.beta >= 0.0))
+      throw InputError("solid part " + std::to_string(part_id_) +
+                       ": the stiffness damping coefficient beta must not be negative");
     const Index ne = element_count();
     chunk_dt_.assign(chunk_count(ne), 0.0);
     chunk_hg_.assign(chunk_count(ne), 0.0);
     chunk_visc_.assign(chunk_count(ne), 0.0);
+    chunk_damp_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
     volume0_.assign(padded(ne), 0.0);
     // Lane-major connectivity: batch j, node k, lane l at 64 j + 8 k + l, the spare lanes of a
@@ -71,6 +65,7 @@ class HexBlock final : public ElementBlock {
   /// K = lambda + 2 G / 3 from the material's small-strain moduli: E / (3 (1 - 2 nu)) for the
   /// elastic solid, 2 G (1 + nu) / (3 (1 - 2 nu)) with G = 2 (A + B) for Mooney-Rivlin.
   Real bulk_modulus() const override { return mat_.lame_lambda() + 2.0 / 3.0 * mat_.shear_modulus(); }
+  const StiffnessDamping& stiffness_damping() const { return damping_; }
 
   void initialize(NodalFields& nodes) override {
     const Index ne = element_count();
@@ -90,17 +85,25 @@ class HexBlock final : public ElementBlock {
   }
 
   /// Internal forces of all elements into their corner slots of `corners` (residual form), the
-  /// hourglass and bulk-viscosity powers into `energy`; returns the smallest element time step.
-  /// Throws InstabilityError naming the first element (of the first chunk) that inverted or
-  /// produced a non-finite force.
+  /// hourglass, bulk-viscosity and stiffness-damping powers into `energy`; returns the smallest
+  /// element time step. Throws InstabilityError naming the first element (of the first chunk)
+  /// that inverted or produced a non-finite force.
   Real compute_forces(const NodalFields& nodes, Real /*dt*/, CornerBuffer& corners,
                       BlockEnergy& energy) override {
-    if (hg_.kind == HexHourglass::Kind::viscous)
-      compute_chunks<true>(nodes, corners);
+    // One branch per block: a block without stiffness damping runs the kernel without it.
+    const bool viscous = hg_.kind == HexHourglass::Kind::viscous;
+    const bool damped = damping_.beta > 0.0;
+    if (viscous && !damped)
+      compute_chunks<true, false>(nodes, corners);
+    else if (!damped)
+      compute_chunks<false, false>(nodes, corners);
+    else if (viscous)
+      compute_chunks<true, true>(nodes, corners);
     else
-      compute_chunks<false>(nodes, corners);
-    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_bad_, energy, "solid", ids_,
-                                 part_id_, "inverted (non-positive volume or non-finite force)");
+      compute_chunks<false, true>(nodes, corners);
+    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_bad_, energy,
+                                 "solid", ids_, part_id_,
+                                 "inverted (non-positive volume or non-finite force)");
   }
 
  private:
@@ -108,20 +111,23 @@ class HexBlock final : public ElementBlock {
   /// chunk boundaries and hence the results do not depend on the thread count) is processed in
   /// batches of kLanes elements, one per lane; a last partial batch repeats its last element in
   /// the spare lanes and discards them.
-  template <bool viscous>
+  template <bool viscous, bool damped>
   void compute_chunks(const NodalFields& nodes, CornerBuffer& corners) {
     static_assert(kChunkSize % kLanes == 0, "batches must not straddle chunks");
     const Index ne = element_count();
     const Real c = mat_.wave_speed();
     const Real rho0 = mat_.density();
     const Real e_mod = mat_.youngs_modulus();
+    [[maybe_unused]] const Real beta_lambda = damping_.beta * mat_.lame_lambda();
+    [[maybe_unused]] const Real beta_2mu = 2.0 * damping_.beta * mat_.shear_modulus();
+    [[maybe_unused]] const Real beta_c2 = damping_.beta * c * c;
     Real* fx_out = corners.force.x.data() + force_slot_base();
     Real* fy_out = corners.force.y.data() + force_slot_base();
     Real* fz_out = corners.force.z.data() + force_slot_base();
     parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
       using hex8::NodeLanes;
       Lanes dtmin = Lanes::Constant(std::numeric_limits<Real>::max());
-      Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero();
+      Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero(), p_damp = Lanes::Zero();
       Index bad = -1;
       for (Index e0 = b; e0 < end; e0 += kLanes) {
         const int valid = static_cast<int>(std::min<Index>(kLanes, end - e0));
@@ -177,7 +183,42 @@ class HexBlock final : public ElementBlock {
             rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd), 0.0);
         for (int i = 0; i < 3; ++i) sigma[i][i] -= q;
         Lanes visc = -q * trd * vol;
-        const Lanes qdt = compressing.select(bulk_.linear * c + bulk_.quadratic * len * (-trd), 0.0);
+        Lanes qdt = compressing.select(bulk_.linear * c + bulk_.quadratic * len * (-trd), 0.0);
+        Lanes damp = Lanes::Zero();
+        if constexpr (damped) {
+          // Rayleigh stiffness damping: sigma_d = beta (lambda tr(D) I + 2 mu D), D = sym(v (x) B).
+          Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
+          Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
+          Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
+          for (int k = 0; k < 8; ++k) {
+            dxx += vx[k] * bx[k];
+            dyy += vy[k] * by[k];
+            dzz += vz[k] * bz[k];
+            lxy += vx[k] * by[k];
+            lyx += vy[k] * bx[k];
+            lyz += vy[k] * bz[k];
+            lzy += vz[k] * by[k];
+            lxz += vx[k] * bz[k];
+            lzx += vz[k] * bx[k];
+          }
+          const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
+          const Lanes lt = beta_lambda * trd;
+          const Lanes sxx = lt + beta_2mu * dxx, syy = lt + beta_2mu * dyy, szz = lt + beta_2mu * dzz;
+          const Lanes sxy = beta_2mu * dxy, syz = beta_2mu * dyz, sxz = beta_2mu * dxz;
+          sigma[0][0] += sxx;
+          sigma[1][1] += syy;
+          sigma[2][2] += szz;
+          sigma[0][1] += sxy;
+          sigma[1][0] += sxy;
+          sigma[1][2] += syz;
+          sigma[2][1] += syz;
+          sigma[0][2] += sxz;
+          sigma[2][0] += sxz;
+          damp = vol * (sxx * dxx + syy * dyy + szz * dzz + 2.0 * (sxy * dxy + syz * dyz + sxz * dxz));
+          // The step of a damped element: (2 / w)(sqrt(1 + xi^2) - xi) with w = 2 c / len and
+          // xi = beta w / 2 adds beta c^2 / len to the bulk-viscosity term.
+          qdt += beta_c2 / len;
+        }
         // Stress divergence: f_I = -V sigma B_I (residual form).
         NodeLanes fx, fy, fz;
         for (int k = 0; k < 8; ++k) {
@@ -220,7 +261,7 @@ class HexBlock final : public ElementBlock {
         const LaneMask failed = !(vol > 0.0) || !fsum.isFinite();
         if (valid < kLanes) {  // the spare lanes of a last partial batch
           for (int l = valid; l < kLanes; ++l) {
-            hg[l] = visc[l] = 0.0;
+            hg[l] = visc[l] = damp[l] = 0.0;
             dt[l] = std::numeric_limits<Real>::max();
           }
         }
@@ -232,6 +273,7 @@ class HexBlock final : public ElementBlock {
             }
         p_hg += hg;
         p_visc += visc;
+        if constexpr (damped) p_damp += damp;
         dtmin = dtmin.min(dt);
         const std::size_t s0 = 8 * static_cast<std::size_t>(e0);
         if (valid == kLanes) {
@@ -250,6 +292,7 @@ class HexBlock final : public ElementBlock {
       chunk_dt_[chunk] = dtmin.minCoeff();
       chunk_hg_[chunk] = p_hg.sum();
       chunk_visc_[chunk] = p_visc.sum();
+      chunk_damp_[chunk] = p_damp.sum();
       chunk_bad_[chunk] = bad;
     });
   }
@@ -264,11 +307,12 @@ class HexBlock final : public ElementBlock {
   Material mat_;
   HexHourglass hg_;
   BulkViscosity bulk_;
+  StiffnessDamping damping_;
   std::vector<Index> conn_;
   std::vector<Id> ids_;
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
-  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_;
+  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_;
   std::vector<Index> chunk_bad_;
 };
 

@@ -14,28 +14,10 @@
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/element_block.hpp"
-#include "slideline/element/hex_block.hpp"  // BulkViscosity
+#include "slideline/element/block_options.hpp"
 #include "slideline/element/shell_bt.hpp"
 
 namespace slideline {
-
-/// Linear elastic, plane-stress material of a shell part.
-struct ShellMaterial {
-  Real density = 0.0;  ///< mass / length^3
-  Real youngs = 0.0;   ///< force / length^2
-  Real poisson = 0.0;
-  /// Plate (plane-stress) wave speed sqrt(E / (rho (1 - nu^2))), length / time.
-  Real wave_speed() const { return std::sqrt(youngs / (density * (1.0 - poisson * poisson))); }
-  Real shear_modulus() const { return youngs / (2.0 * (1.0 + poisson)); }
-};
-
-/// Shell section: constant thickness, through-thickness rule, transverse shear factor.
-struct ShellSection {
-  Real thickness = 0.0;
-  int nip = 5;
-  shell_bt::ThicknessRule::Kind rule = shell_bt::ThicknessRule::Kind::gauss;
-  Real shear_factor = 5.0 / 6.0;  ///< SHRF: scales the transverse shear modulus
-};
 
 /// Stress components stored per through-thickness point, local frame.
 inline constexpr int kShellStressComponents = 5;  // xx, yy, xy, yz, xz
@@ -43,15 +25,17 @@ inline constexpr int kShellStressComponents = 5;  // xx, yy, xy, yz, xz
 class ShellBlock final : public ElementBlock {
  public:
   /// `connectivity`: 4 internal node indices per element (counter-clockwise seen from the side
-  /// the normal points to); `hourglass_coefficient`: viscous hourglass coefficient (fraction of
-  /// the critical damping of each hourglass mode, LS-DYNA QM, default 0.1).
-  ShellBlock(Id part_id, ShellMaterial material, ShellSection section, Real hourglass_coefficient,
-             BulkViscosity bulk, std::vector<Index> connectivity, std::vector<Id> element_ids)
+  /// the normal points to); `damping.beta` > 0 adds the stiffness-proportional damping stress
+  /// beta (C : strain rate) with the plane-stress and transverse-shear moduli.
+  ShellBlock(Id part_id, ShellMaterial material, ShellSection section,
+             std::vector<Index> connectivity, std::vector<Id> element_ids,
+             StiffnessDamping damping = {})
       : part_id_(part_id),
         mat_(material),
         sec_(section),
-        qhg_(hourglass_coefficient),
-        bulk_(bulk),
+        qhg_(section.hourglass_coefficient),
+        bulk_(section.bulk),
+        damping_(damping),
         rule_(shell_bt::ThicknessRule::make(section.nip, section.rule)),
         conn_(std::move(connectivity)),
         ids_(std::move(element_ids)) {
@@ -62,6 +46,9 @@ class ShellBlock final : public ElementBlock {
       throw InputError("shell part " + std::to_string(part_id_) + ": thickness must be positive");
     if (!(sec_.shear_factor > 0.0))
       throw InputError("shell part " + std::to_string(part_id_) + ": shear factor must be positive");
+    if (!(damping_.beta >= 0.0))
+      throw InputError("shell part " + std::to_string(part_id_) +
+                       ": the stiffness damping coefficient beta must not be negative");
     if (conn_.size() != 4 * ids_.size())
       throw InputError("shell part " + std::to_string(part_id_) + ": connectivity needs 4 nodes per element");
     const Index ne = element_count();
@@ -69,6 +56,7 @@ class ShellBlock final : public ElementBlock {
     chunk_dt_.assign(nc, 0.0);
     chunk_hg_.assign(nc, 0.0);
     chunk_visc_.assign(nc, 0.0);
+    chunk_damp_.assign(nc, 0.0);
     chunk_bad_.assign(nc, -1);
     area0_.assign(ne, 0.0);
     stress_.assign(static_cast<std::size_t>(ne) * rule_.n * kShellStressComponents, 0.0);
@@ -85,6 +73,7 @@ class ShellBlock final : public ElementBlock {
   const ShellSection& section() const { return sec_; }
   /// E / (3 (1 - 2 nu)), the 3-D bulk modulus of the shell's elastic material.
   Real bulk_modulus() const override { return mat_.youngs / (3.0 * (1.0 - 2.0 * mat_.poisson)); }
+  const StiffnessDamping& stiffness_damping() const { return damping_; }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
 
   /// Nodal mass rho A t / 4 and rotary inertia (rho A t / 4) max(t^2, A) / 12 per corner.
@@ -115,12 +104,27 @@ class ShellBlock final : public ElementBlock {
   /// Forces and moments at x^n with velocities and angular velocities at t^{n-1/2}: the stress
   /// increment uses the strain rate on the mid-step geometry x^n - dt/2 v (exactly zero for a
   /// rigid rotation), the forces the geometry at x^n. Returns the smallest element step
-  /// A / max(side, diagonal) / (plate wave speed, with bulk viscosity), time.
+  /// A / max(side, diagonal) / (plate wave speed, with bulk viscosity and stiffness damping),
+  /// time.
   Real compute_forces(const NodalFields& nodes, Real dt, CornerBuffer& corners,
                       BlockEnergy& energy) override {
+    // One branch per block: a block without stiffness damping runs the loop without it.
+    if (damping_.beta > 0.0)
+      compute_chunks<true>(nodes, dt, corners);
+    else
+      compute_chunks<false>(nodes, dt, corners);
+    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_bad_, energy,
+                                 "shell", ids_, part_id_,
+                                 "degenerated (non-positive area or non-finite force)");
+  }
+
+ private:
+  template <bool damped>
+  void compute_chunks(const NodalFields& nodes, Real dt, CornerBuffer& corners) {
     const Index ne = element_count();
     const Real c = mat_.wave_speed();
     const Real rho = mat_.density;
+    [[maybe_unused]] const Real beta = damping_.beta;
     const Real t = sec_.thickness;
     const Real half_t = 0.5 * t;
     const Real c11 = mat_.youngs / (1.0 - mat_.poisson * mat_.poisson);
@@ -132,7 +136,7 @@ class ShellBlock final : public ElementBlock {
     const int nip = rule_.n;
     parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
-      Real p_hg = 0.0, p_visc = 0.0;
+      Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0;
       Index bad = -1;
       for (Index e = b; e < end; ++e) {
         const shell_bt::NodeMat X = gather(nodes.x, e);
@@ -146,6 +150,7 @@ class ShellBlock final : public ElementBlock {
         shell_bt::Resultants r;
         Real* sig = stress_.data() + static_cast<std::size_t>(e) * nip * kShellStressComponents;
         shell_bt::StrainRates sr;
+        [[maybe_unused]] Real damp = 0.0;  // damping power per unit area
         // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: a rigid rotation's chord velocities
         // are exactly rigid there, so strain and hourglass rates vanish for it.
         const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
@@ -175,6 +180,26 @@ class ShellBlock final : public ElementBlock {
           r.m[2] += wz * z * s[2];
           r.q[0] += wz * s[3];
           r.q[1] += wz * s[4];
+          if constexpr (damped) {
+            // Rayleigh stiffness damping: beta (C : strain rate), in the resultants only.
+            const Real rxx = sr.membrane[0] + z * sr.curvature[0];
+            const Real ryy = sr.membrane[1] + z * sr.curvature[1];
+            const Real rxy = sr.membrane[2] + z * sr.curvature[2];
+            const Real d0 = beta * (c11 * rxx + c12 * ryy);
+            const Real d1 = beta * (c12 * rxx + c11 * ryy);
+            const Real d2 = beta * g_mod * rxy;
+            const Real d3 = beta * gs * sr.shear[0];
+            const Real d4 = beta * gs * sr.shear[1];
+            r.n[0] += wz * d0;
+            r.n[1] += wz * d1;
+            r.n[2] += wz * d2;
+            r.m[0] += wz * z * d0;
+            r.m[1] += wz * z * d1;
+            r.m[2] += wz * z * d2;
+            r.q[0] += wz * d3;
+            r.q[1] += wz * d4;
+            damp += wz * (d0 * rxx + d1 * ryy + d2 * rxy + d3 * sr.shear[0] + d4 * sr.shear[1]);
+          }
         }
         // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
         const Real len = shell_bt::characteristic_length(X, g.area);
@@ -186,6 +211,10 @@ class ShellBlock final : public ElementBlock {
           r.n[1] -= q * t;
           p_visc += -q * trd * g.area * t;
           qdt = bulk_.linear * c + bulk_.quadratic * len * (-trd);
+        }
+        if constexpr (damped) {
+          p_damp += damp * g.area;
+          qdt += beta * c * c / len;  // the damped step, as for the hexahedron
         }
         shell_bt::NodeMat fl, ml;
         shell_bt::resultant_forces(g, r, fl, ml);
@@ -243,12 +272,12 @@ class ShellBlock final : public ElementBlock {
       chunk_dt_[chunk] = dtmin;
       chunk_hg_[chunk] = p_hg;
       chunk_visc_[chunk] = p_visc;
+      chunk_damp_[chunk] = p_damp;
       chunk_bad_[chunk] = bad;
     });
-    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_bad_, energy, "shell", ids_,
-                                 part_id_, "degenerated (non-positive area or non-finite force)");
   }
 
+ public:
   /// Stress (force/length^2, local co-rotational frame: xx, yy, xy, yz, xz) of element e at
   /// through-thickness point ip (0 = bottom, z = xi * t / 2).
   Eigen::Matrix<Real, 5, 1> stress(Index e, int ip) const {
@@ -279,34 +308,14 @@ class ShellBlock final : public ElementBlock {
   ShellSection sec_;
   Real qhg_;
   BulkViscosity bulk_;
+  StiffnessDamping damping_;
   shell_bt::ThicknessRule rule_;
   std::vector<Index> conn_;
   std::vector<Id> ids_;
   std::vector<Real> area0_;
   std::vector<Real> stress_;  // element-major, then point, then component
-  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_;
+  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_;
   std::vector<Index> chunk_bad_;
 };
-
-/// Builder entry point (called by build_simulation): a Belytschko-Tsay shell block with
-/// `nip` Gauss points through the thickness (1..5), transverse shear factor `shear_factor`,
-/// viscous hourglass coefficient `hourglass_coefficient` and bulk viscosity `q_quadratic`,
-/// `q_linear` on the membrane dilatation. `connectivity`: 4 internal node indices per element.
-/// Throws InputError on a bad value.
-inline std::unique_ptr<ElementBlock> make_shell_block(Id part_id, Real density, Real youngs,
-                                                      Real poisson, Real thickness, int nip,
-                                                      Real shear_factor, Real hourglass_coefficient,
-                                                      Real q_quadratic, Real q_linear,
-                                                      std::vector<Index> connectivity,
-                                                      std::vector<Id> element_ids) {
-  ShellSection sec;
-  sec.thickness = thickness;
-  sec.nip = nip;
-  sec.rule = shell_bt::ThicknessRule::Kind::gauss;
-  sec.shear_factor = shear_factor;
-  return std::make_unique<ShellBlock>(part_id, ShellMaterial{density, youngs, poisson}, sec,
-                                      hourglass_coefficient, BulkViscosity{q_quadratic, q_linear},
-                                      std::move(connectivity), std::move(element_ids));
-}
 
 }  // namespace slideline

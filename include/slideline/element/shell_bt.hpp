@@ -19,6 +19,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/types.hpp"
+#include "slideline/element/block_options.hpp"
 
 namespace slideline::shell_bt {
 
@@ -132,10 +133,7 @@ inline void resultant_forces(const LocalGeometry& g, const Resultants& r, NodeMa
 
 /// Through-thickness integration rule on [-1, 1] (weights sum to 2).
 struct ThicknessRule {
-  enum class Kind : std::uint8_t {
-    gauss,   ///< Gauss-Legendre (LS-DYNA default): interior points only
-    lobatto  ///< Gauss-Lobatto: includes the two surfaces (2 points = trapezoid rule)
-  };
+  using Kind = ThicknessRuleKind;  // gauss, lobatto (block_options.hpp)
   static constexpr int kMaxPoints = 5;
   int n = 0;
   std::array<Real, kMaxPoints> xi{};

@@ -232,6 +232,17 @@ struct DampingPartMass {
   Source src;
 };
 
+/// *DAMPING_PART_STIFFNESS[_SET]: stiffness-proportional (Rayleigh) damping of one part (or of
+/// each part of a part set with _SET). COEF < 0: beta = -COEF (time), the classical coefficient
+/// of LS-DYNA 950 (damping stress beta C : D); COEF > 0: LS-DYNA's approximate fraction of
+/// critical damping at high frequencies (not implemented); 0: off.
+struct DampingPartStiffness {
+  Id pid = 0;         ///< PID, or PSID with _SET
+  Real coef = 0.0;
+  bool set = false;   ///< the _SET option: pid is a part set id
+  Source src;
+};
+
 /// *CONTROL_TERMINATION
 struct ControlTermination {
   Real endtim = 0.0;
@@ -360,6 +371,7 @@ struct Model {
   std::vector<Curve> curves;
   std::optional<DampingGlobal> damping_global;
   std::vector<DampingPartMass> damping_parts;
+  std::vector<DampingPartStiffness> damping_stiffness;
   ControlTermination termination;
   ControlTimestep timestep;
   ControlContact control_contact;

@@ -58,7 +58,8 @@ ShellBlock make_block(const ShellMesh& m, Real qhg = 0.1, int nip = 5,
   sec.thickness = kT;
   sec.nip = nip;
   sec.rule = rule;
-  return ShellBlock(7, ShellMaterial{kRho, kE, kNu}, sec, qhg, BulkViscosity{}, m.conn, m.ids);
+  sec.hourglass_coefficient = qhg;
+  return ShellBlock(7, ShellMaterial{kRho, kE, kNu}, sec, m.conn, m.ids);
 }
 
 Real evaluate(ShellBlock& b, NodalFields& n, CornerBuffer& c, Real dt) {
@@ -271,7 +272,9 @@ TEST(ShellBlock, ReportedStepIsStable) {
         ShellMesh m = m0;
         ShellSection sec;
         sec.thickness = t;
-        ShellBlock b(1, ShellMaterial{kRho, kE, kNu}, sec, 0.0, BulkViscosity{0.0, 0.0}, m.conn, m.ids);
+        sec.hourglass_coefficient = 0.0;
+        sec.bulk = BulkViscosity{0.0, 0.0};
+        ShellBlock b(1, ShellMaterial{kRho, kE, kNu}, sec, m.conn, m.ids);
         CornerBuffer c;
         test_support::prepare(b, m.nodes, c);
         const Real h = 1e-7;

@@ -148,6 +148,8 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
   d.list("damping_parts", ma.damping_parts, mb.damping_parts, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag);
   });
+  d.list("damping_stiffness", ma.damping_stiffness, mb.damping_stiffness,
+         [&](const std::string& w, const auto& a, const auto& b) { SL_EQ(pid); SL_EQ(coef); SL_EQ(set); });
   d.list("contacts", ma.contacts, mb.contacts, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(cid); SL_EQ(title); SL_EQ(type); SL_EQ(enforcement); SL_EQ(sliding_only_option);
     SL_EQ(automatic_general);

@@ -149,6 +149,13 @@ TEST(KeywordReader, ReadsEveryContactCard) {
   EXPECT_EQ(m.nodes.size(), 14u);
   EXPECT_EQ(m.shells.size(), 5u);
   EXPECT_EQ(m.damping_parts.size(), 1u);
+  ASSERT_EQ(m.damping_stiffness.size(), 2u);
+  EXPECT_EQ(m.damping_stiffness[0].pid, 1);
+  EXPECT_DOUBLE_EQ(m.damping_stiffness[0].coef, -2.5e-4);
+  EXPECT_FALSE(m.damping_stiffness[0].set);
+  EXPECT_EQ(m.damping_stiffness[1].pid, 2);  // a part set
+  EXPECT_DOUBLE_EQ(m.damping_stiffness[1].coef, -1e-5);
+  EXPECT_TRUE(m.damping_stiffness[1].set);
   const auto problems = check_references(m);
   EXPECT_TRUE(problems.empty()) << to_string(problems.front());
 }

@@ -48,6 +48,8 @@ model::Model full_model() {
   m.curves.push_back({2, "", 1, 2.0, 0.5, 0.01, -0.02, 0, {{0.0, 0.0}, {0.3, 0.0}, {0.4, 1.0}}, {}});
   m.damping_global = DampingGlobal{0, 15.0, {1, 1, 1, 0, 0, 0}, {}};
   m.damping_parts.push_back({1, 2, 0.5, 0, {}});
+  m.damping_stiffness.push_back({2, -1.0 / 3.0e4, false, {}});
+  m.damping_stiffness.push_back({1, -2.5e-5, true, {}});
   m.termination = {0.5, 100000};
   m.timestep = {1e-5, 0.6, 1, 1e-9, -1e-6, 2};
   m.control_contact = {0.2, 0.5, 0, 1, 2, 1, 0, 1};

@@ -156,3 +156,54 @@ TEST(Build, RigidPartsDoNotBoundTheStepOfDeformableModels) {
   sim->initialize();
   EXPECT_DOUBLE_EQ(sim->stable_dt(), ref->stable_dt());
 }
+
+// *DAMPING_PART_STIFFNESS with COEF = -beta: the shell part's step becomes the damped limit
+// (len / c)(sqrt(1 + xi^2) - xi), xi = beta c / len (3 x 3 squares of side 1/3: len = side / sqrt 2).
+TEST(Build, StiffnessDampingOfAPartShortensItsStep) {
+  const Real beta = 1e-3;
+  const Real c = std::sqrt(1000.0 / (0.1 * (1.0 - 0.1 * 0.1))), len = 1.0 / 3.0 / std::sqrt(2.0);
+  for (bool as_set : {false, true}) {
+    model::Model m = plate_model(false);
+    if (as_set) m.part_sets.push_back({5, "", {1}, {}});
+    m.damping_stiffness.push_back({as_set ? 5 : 1, -beta, as_set, {"deck.k", 9}});
+    auto sim = build_simulation(m);
+    sim->initialize();
+    const Real xi = beta * c / len;
+    const Real expected = len / c * (std::sqrt(1.0 + xi * xi) - xi);
+    EXPECT_NEAR(sim->stable_dt(), expected, 1e-12 * expected) << (as_set ? "_SET" : "PID");
+  }
+  model::Model m = plate_model(false);
+  m.damping_stiffness.push_back({1, 0.0, false, {"deck.k", 9}});  // COEF = 0: off
+  auto sim = build_simulation(m);
+  sim->initialize();
+  EXPECT_NEAR(sim->stable_dt(), len / c, 1e-12 * len / c);
+}
+
+TEST(Build, StiffnessDampingErrorsNameTheCard) {
+  const auto message = [](const model::DampingPartStiffness& d, bool not_implemented) {
+    model::Model m = plate_model(false);
+    m.damping_stiffness.push_back(d);
+    m.damping_stiffness.push_back({1, -1e-4, false, {"deck.k", 12}});
+    try {
+      build_simulation(m);
+    } catch (const NotImplementedError& e) {
+      EXPECT_TRUE(not_implemented) << e.what();
+      return std::string(e.what());
+    } catch (const InputError& e) {
+      EXPECT_FALSE(not_implemented) << e.what();
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "no error";
+    return std::string();
+  };
+  // COEF > 0 is LS-DYNA's unpublished formulation.
+  const std::string positive = message({1, 0.1, false, {"deck.k", 9}}, true);
+  EXPECT_NE(positive.find("deck.k:9"), std::string::npos) << positive;
+  EXPECT_NE(positive.find("COEF"), std::string::npos) << positive;
+  const std::string missing = message({77, -1e-4, false, {"deck.k", 9}}, false);
+  EXPECT_NE(missing.find("deck.k:9"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("part 77"), std::string::npos) << missing;
+  const std::string twice = message({1, -2e-4, false, {"deck.k", 9}}, false);
+  EXPECT_NE(twice.find("deck.k:12"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("two *DAMPING_PART_STIFFNESS"), std::string::npos) << twice;
+}

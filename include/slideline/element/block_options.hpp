@@ -1,0 +1,70 @@
+#pragma once
+/// The plain settings an element block is made from: hourglass control, bulk viscosity,
+/// stiffness-proportional damping, the shell material and section. Kept apart from the kernels
+/// (hex_block.hpp, shell_block.hpp) so that code which only builds blocks (block_factory.hpp,
+/// src/solver/build.cpp) does not compile them.
+#include <cmath>
+#include <cstdint>
+
+#include "slideline/core/types.hpp"
+
+namespace slideline {
+
+/// Hourglass control of a hexahedron block.
+struct HexHourglass {
+  enum class Kind : std::uint8_t {
+    viscous,            ///< Flanagan-Belytschko viscous (LS-DYNA/DYNA3D types 1-3)
+    physical_stiffness  ///< total-displacement stiffness scaled to the element's bending stiffness (type 10)
+  };
+  Kind kind = Kind::viscous;
+  Real coefficient = 0.1;
+};
+
+/// Linear and quadratic bulk viscosity coefficients.
+struct BulkViscosity {
+  Real quadratic = 1.5;
+  Real linear = 0.06;
+};
+
+/// Stiffness-proportional (Rayleigh) damping of a block: the damping stress
+/// beta (C : D) with C the material's small-strain elastic stiffness and D the rate of
+/// deformation, added to the stress that makes the internal forces but never stored
+/// (LS-DYNA *DAMPING_PART_STIFFNESS with COEF = -beta). A mode of circular frequency omega gets
+/// the fraction of critical damping beta omega / 2. 0 = off (the kernel then does not evaluate
+/// it at all).
+struct StiffnessDamping {
+  Real beta = 0.0;  ///< time
+};
+
+namespace shell_bt {
+/// Through-thickness integration rule kind (shell_bt::ThicknessRule::Kind).
+enum class ThicknessRuleKind : std::uint8_t {
+  gauss,   ///< Gauss-Legendre (LS-DYNA default): interior points only
+  lobatto  ///< Gauss-Lobatto: includes the two surfaces (2 points = trapezoid rule)
+};
+}  // namespace shell_bt
+
+/// Linear elastic, plane-stress material of a shell part.
+struct ShellMaterial {
+  Real density = 0.0;  ///< mass / length^3
+  Real youngs = 0.0;   ///< force / length^2
+  Real poisson = 0.0;
+  /// Plate (plane-stress) wave speed sqrt(E / (rho (1 - nu^2))), length / time.
+  Real wave_speed() const { return std::sqrt(youngs / (density * (1.0 - poisson * poisson))); }
+  Real shear_modulus() const { return youngs / (2.0 * (1.0 + poisson)); }
+};
+
+/// Shell section of a part: constant thickness, through-thickness rule, transverse shear factor,
+/// and the part's viscous hourglass coefficient and membrane bulk viscosity.
+struct ShellSection {
+  Real thickness = 0.0;  ///< length
+  int nip = 5;           ///< through-thickness points (Gauss 1..5, Lobatto 2..5)
+  shell_bt::ThicknessRuleKind rule = shell_bt::ThicknessRuleKind::gauss;
+  Real shear_factor = 5.0 / 6.0;  ///< SHRF: scales the transverse shear modulus
+  /// Viscous hourglass coefficient: fraction of the critical damping of each hourglass mode
+  /// (LS-DYNA QM); 0 = none.
+  Real hourglass_coefficient = 0.1;
+  BulkViscosity bulk;  ///< on the membrane dilatation rate
+};
+
+}  // namespace slideline
