@@ -12,7 +12,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "interrupt.hpp"
+#include "interrupt_guard.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/io/csv_writer.hpp"

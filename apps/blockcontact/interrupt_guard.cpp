@@ -1,5 +1,5 @@
-// SIGINT/SIGTERM -> a flag that the run checks once per cycle (see interrupt.hpp).
-#include "interrupt.hpp"
+// SIGINT/SIGTERM -> a flag that the run checks once per cycle (see interrupt_guard.hpp).
+#include "interrupt_guard.hpp"
 
 #include <signal.h>
 
