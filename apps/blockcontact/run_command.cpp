@@ -157,7 +157,8 @@ int run_deck(const RunOptions& o) {
     progress.finish();
     fmt::print(stderr, "{} at t = {:g} (cycle {}): stopped at the end of the cycle\n", e.what(), sim->time(),
                sim->cycle());
-    fmt::print(stderr, "the output recorded so far was kept in {} and {}\n", h5_path, h5.xdmf_path());
+    fmt::print(stderr, "the output recorded so far was kept in {} and {}{}\n", h5_path, h5.xdmf_path(),
+               o.csv ? fmt::format(" and {}", (std::filesystem::path(o.out_dir) / (stem + ".csv")).string()) : "");
     return kInterrupted;
   } catch (const slideline::InstabilityError& e) {
     progress.finish();
