@@ -11,8 +11,16 @@
 
 namespace blockcontact {
 
-/// Exit codes: 0 success, 1 other failure, 2 bad input, 3 not implemented, 4 instability.
-enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kNotImplemented = 3, kInstability = 4 };
+/// Exit codes: 0 success, 1 other failure, 2 bad input, 3 not implemented, 4 instability,
+/// 5 interrupted (SIGINT/SIGTERM; the output files are closed and hold the run up to the stop).
+enum ExitCode : int {
+  kOk = 0,
+  kFailure = 1,
+  kBadInput = 2,
+  kNotImplemented = 3,
+  kInstability = 4,
+  kInterrupted = 5
+};
 
 void register_run(CLI::App& app, int& exit_code);
 void register_check(CLI::App& app, int& exit_code);

@@ -1,4 +1,6 @@
 // blockcontact run <deck>: read, build and run a deck, writing DIR/<stem>.h5 (+ .xdmf, + .csv).
+// SIGINT/SIGTERM stop the run at the end of the cycle with the files closed (exit code 5); the
+// files are also flushed every few seconds of wall time, so that a killed run leaves them readable.
 #include <fmt/core.h>
 #include <unistd.h>
 
@@ -10,6 +12,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "interrupt_guard.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/io/csv_writer.hpp"
@@ -27,6 +30,7 @@ struct RunOptions {
   int threads = 0;
   double end_time = 0.0;
   bool ignore_unsupported = false;
+  double flush_every = 5.0;  ///< wall-clock seconds between flushes of the output files (0: none)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -78,6 +82,31 @@ class Progress {
   Clock::time_point last_ = Clock::time_point{};
 };
 
+/// Flushes the sinks (HDF5: buffered records, H5Fflush, the XDMF so far; CSV) every `every`
+/// seconds of wall time, so that a run killed without warning (SIGKILL, power loss) leaves files
+/// that open, holding everything up to the last flush.
+class PeriodicFlush {
+ public:
+  PeriodicFlush(const std::vector<slideline::OutputSink*>& sinks, double every) : sinks_(sinks), every_(every) {}
+
+  void update() {
+    if (!(every_ > 0.0)) return;
+    const auto now = Clock::now();
+    if (std::chrono::duration<double>(now - last_).count() < every_) return;
+    for (auto* s : sinks_) s->flush();
+    last_ = now;
+  }
+
+ private:
+  const std::vector<slideline::OutputSink*>& sinks_;
+  double every_;
+  Clock::time_point last_ = Clock::now();
+};
+
+/// Cycles between reads of the clock (progress line, periodic flush); the signal flag is checked
+/// every cycle.
+constexpr long kClockEvery = 16;
+
 int run_deck(const RunOptions& o) {
   std::size_t warning_count = 0;
   const auto model = read_deck(o.deck, o.ignore_unsupported, warning_count);
@@ -98,6 +127,8 @@ int run_deck(const RunOptions& o) {
   std::filesystem::create_directories(o.out_dir);
   const auto stem = std::filesystem::path(o.deck).stem().string();
   const auto h5_path = (std::filesystem::path(o.out_dir) / (stem + ".h5")).string();
+  // From here on SIGINT/SIGTERM stop the run at the end of a cycle (checked in the callback below).
+  const InterruptGuard interrupt_guard;
   slideline::Hdf5Writer h5(h5_path);
   std::unique_ptr<slideline::CsvWriter> csv;
   std::vector<slideline::OutputSink*> sinks{&h5};
@@ -111,8 +142,25 @@ int run_deck(const RunOptions& o) {
              slideline::max_threads());
   std::fflush(stdout);
   Progress progress(sim->controls.end_time);
+  PeriodicFlush periodic_flush(sinks, o.flush_every);
   try {
-    sim->run(sinks, [&](const slideline::Simulation& s) { progress.update(s); }, 100);
+    sim->run(
+        sinks,
+        [&](const slideline::Simulation& s) {
+          // Every cycle: a pending SIGINT/SIGTERM unwinds through run(), which flushes the sinks.
+          InterruptGuard::throw_if_pending();
+          if (s.cycle() % kClockEvery != 0) return;
+          progress.update(s);
+          periodic_flush.update();
+        },
+        1);
+  } catch (const RunInterrupted& e) {
+    progress.finish();
+    fmt::print(stderr, "{} at t = {:g} (cycle {}): stopped at the end of the cycle\n", e.what(), sim->time(),
+               sim->cycle());
+    fmt::print(stderr, "the output recorded so far was kept in {} and {}{}\n", h5_path, h5.xdmf_path(),
+               o.csv ? fmt::format(" and {}", (std::filesystem::path(o.out_dir) / (stem + ".csv")).string()) : "");
+    return kInterrupted;
   } catch (const slideline::InstabilityError& e) {
     progress.finish();
     fmt::print(stderr, "instability at t = {:g} (cycle {}): {}\n", e.time(), e.cycle(), e.what());
@@ -145,6 +193,10 @@ void register_run(CLI::App& app, int& exit_code) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--ignore-unsupported", o->ignore_unsupported,
                 "Run even though the deck holds unsupported physics cards: drop them and list them");
+  cmd->add_option("--flush-every", o->flush_every,
+                  "Seconds of wall time between flushes of the output files (0: only at the end)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([o, &exit_code] { exit_code = run_deck(*o); });
 }
 

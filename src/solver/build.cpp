@@ -241,8 +241,16 @@ struct Builder {
             "classical Rayleigh coefficient: fraction of critical damping beta * omega / 2)");
       if (!std::isfinite(d.coef))
         throw InputError(describe(d.src) + ": field COEF of *DAMPING_PART_STIFFNESS must be finite");
-      const std::vector<Id> pids =
-          d.set ? part_set(d.pid, d.src, "PSID") : std::vector<Id>{d.pid};
+      // Before build_sets (which needs the parts' nodes): the part set straight from the deck.
+      std::vector<Id> pids{d.pid};
+      if (d.set) {
+        const auto ps = std::find_if(m.part_sets.begin(), m.part_sets.end(),
+                                     [&](const model::PartSet& p) { return p.sid == d.pid; });
+        if (ps == m.part_sets.end())
+          throw InputError(describe(d.src) + ": PSID refers to part set " + std::to_string(d.pid) +
+                           ", which the deck does not define");
+        pids = ps->parts;
+      }
       for (Id pid : pids) {
         parts.at(pid, d.src, d.set ? "a part of PSID" : "PID");
         if (!out.emplace(pid, StiffnessDamping{-d.coef}).second)

@@ -7,6 +7,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
+#include "slideline/solver/step_control.hpp"
 
 namespace slideline {
 
@@ -299,7 +300,7 @@ StepPlan Simulation::plan_step() const {
   p.at_end = (end > 0.0 && t_ >= end - tol_t) ||
              (controls.max_cycles > 0 && cycle_ >= controls.max_cycles);
 
-  // The scaled stable step, shortened to land exactly on the next output time.
+  // The scaled stable step, divided so as to land exactly on the next output time.
   Real dt_new = controls.dt_scale * dt_crit_;
   if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
   Real target = end > 0.0 ? end : std::numeric_limits<Real>::infinity();
@@ -310,10 +311,13 @@ StepPlan Simulation::plan_step() const {
   // The last output multiple can fall an ulp short of the end time (50 x 2e-6 < 1e-4): land on
   // the end time itself, or the run would end there and record its last values at the wrong time.
   if (end > 0.0 && target >= end - tol_t) target = end;
+  // Equal steps up to the target: shortening only the last step before each output makes the
+  // central difference parametrically unstable (step_control.hpp).
   bool lands = false;
-  if (!p.at_end && target > t_ + tol_t && t_ + dt_new >= target - tol_t) {
-    dt_new = target - t_;
-    lands = true;
+  if (!p.at_end) {
+    const StepChoice s = step_towards(t_, target, dt_new, tol_t);
+    dt_new = s.dt;
+    lands = s.lands;
   }
   if (p.at_end) dt_new = dt_ > 0.0 ? dt_ : dt_new;
   p.dt_next = dt_new;

@@ -1,0 +1,41 @@
+#pragma once
+// Stopping a run cleanly on SIGINT (Ctrl-C) or SIGTERM (kill, timeout): the handler only records
+// the signal; the run checks it once per cycle and unwinds with RunInterrupted, so that the
+// simulation flushes its sinks and the HDF5 file is closed and the XDMF file written.
+#include <stdexcept>
+#include <string>
+
+namespace blockcontact {
+
+/// Thrown from the progress callback when a signal is pending; carries the signal number.
+class RunInterrupted final : public std::runtime_error {
+ public:
+  explicit RunInterrupted(int signal_number)
+      : std::runtime_error("interrupted by " + signal_name(signal_number)), signal_(signal_number) {}
+  int signal_number() const { return signal_; }
+  /// "SIGINT", "SIGTERM" or "signal <n>".
+  static std::string signal_name(int signal_number);
+
+ private:
+  int signal_;
+};
+
+/// While alive, SIGINT and SIGTERM set a flag instead of ending the process (the previous
+/// dispositions come back on destruction). The handler resets itself (SA_RESETHAND): a second
+/// Ctrl-C ends the process at once, as usual, if the run does not stop.
+class InterruptGuard {
+ public:
+  InterruptGuard();
+  ~InterruptGuard();
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+  /// The signal received since construction, or 0. Async-signal-safe flag read; no system call.
+  static int pending();
+  /// Throws RunInterrupted when a signal is pending.
+  static void throw_if_pending() {
+    if (const int s = pending(); s != 0) throw RunInterrupted(s);
+  }
+};
+
+}  // namespace blockcontact
