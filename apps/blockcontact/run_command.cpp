@@ -30,6 +30,7 @@ struct RunOptions {
   int threads = 0;
   double end_time = 0.0;
   bool ignore_unsupported = false;
+  double energy_limit = 0.05;  ///< stop when the energy balance error passes this fraction (0: never)
   double flush_every = 5.0;  ///< wall-clock seconds between flushes of the output files (0: none)
 };
 
@@ -121,6 +122,8 @@ int run_deck(const RunOptions& o) {
   slideline::BuildOptions build;
   build.end_time = o.end_time;
   auto sim = slideline::build_simulation(model, build);
+  sim->controls.energy_error_limit = o.energy_limit;
+  if (o.energy_limit > 0.0) sim->controls.energy_error_warning = std::min(0.01, 0.2 * o.energy_limit);
   if (o.threads > 0) slideline::set_threads(o.threads);
   sim->initialize();  // before any output file exists: a refused model leaves no stub .h5
 
@@ -168,6 +171,11 @@ int run_deck(const RunOptions& o) {
     return kInstability;
   }
   progress.finish();
+  if (const auto& w = sim->energy_warning())
+    fmt::print(stderr, "warning: the energy balance error passed {:.1f}% at t = {:g} (cycle {}); it ended at {:.2f}% "
+               "(the run stops at {:.1f}%, --energy-limit)\n",
+               100.0 * w->relative_error, w->time, w->cycle, 100.0 * sim->energy_error_fraction(),
+               100.0 * o.energy_limit);
 
   const double wall = progress.elapsed();
   const double element_cycles = double(sim->element_count()) * double(std::max(1L, sim->cycle()));
@@ -193,6 +201,11 @@ void register_run(CLI::App& app, int& exit_code) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--ignore-unsupported", o->ignore_unsupported,
                 "Run even though the deck holds unsupported physics cards: drop them and list them");
+  cmd->add_option("--energy-limit", o->energy_limit,
+                  "Stop (exit 4) when the energy balance error passes this fraction of the largest energy "
+                  "(0: never); a warning at a fifth of it, 1% at most")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--flush-every", o->flush_every,
                   "Seconds of wall time between flushes of the output files (0: only at the end)")
       ->capture_default_str()

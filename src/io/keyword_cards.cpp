@@ -485,6 +485,7 @@ const std::vector<Entry>& table() {
            m.termination.src = c.source(l.number);
            k.get(0, "ENDTIM", m.termination.endtim);
            k.get(1, "ENDCYC", m.termination.endcyc);
+           k.get(2, "DTMIN", m.termination.dtmin);
          });
        })},
       {"*CONTROL_TIMESTEP", nullptr, plain(read_control_timestep)},

@@ -153,8 +153,13 @@ std::string write_keyword_string(const model::Model& m) {
   std::string o = "*KEYWORD\n";
   if (!m.title.empty()) o += "*TITLE\n" + heading(m.title);
 
-  o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC\n";
-  o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).str();
+  if (m.termination.dtmin != 0.0) {
+    o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC     DTMIN\n";
+    o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).r(m.termination.dtmin).str();
+  } else {
+    o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC\n";
+    o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).str();
+  }
   const auto& ts = m.timestep;
   o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM\n";
   o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).str();

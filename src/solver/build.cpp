@@ -461,6 +461,8 @@ struct Builder {
       s.has_curve = true;
       s.curve = curve(pm.lcid, pm.src, "LCID");
       s.scale = pm.sf;
+      s.birth = pm.birth;
+      s.death = pm.death;
       g.supports.push_back(std::move(s));
       sim->supports.push_back(std::move(g));
     }
@@ -519,6 +521,10 @@ struct Builder {
     auto& c = sim->controls;
     c.end_time = opt.end_time > 0.0 ? opt.end_time : m.termination.endtim;
     c.max_cycles = m.termination.endcyc;
+    if (m.termination.dtmin < 0.0 || !std::isfinite(m.termination.dtmin))
+      throw InputError(describe(m.termination.src) + ": field DTMIN of *CONTROL_TERMINATION must be 0 or positive (got " +
+                       std::to_string(m.termination.dtmin) + ")");
+    c.dt_min_fraction = m.termination.dtmin > 0.0 ? m.termination.dtmin : 1e-4;
     if (!(c.end_time > 0.0) && c.max_cycles <= 0)
       throw InputError("*CONTROL_TERMINATION: ENDTIM must be positive (got " +
                        std::to_string(m.termination.endtim) + ")");

@@ -118,14 +118,16 @@ void Simulation::initialize() {
   }
 
   // Supports.
+  has_timed_supports_ = false;
+  for (const auto& g : supports)
+    for (const auto& s : g.supports) {
+      has_timed_supports_ = has_timed_supports_ || s.timed();
+      for (Index i : s.nodes)
+        if (i < 0 || i >= n) throw InputError("support " + g.name + " refers to a missing node");
+    }
   for (auto& f : fixed_) f.assign(n, 0);
   for (auto& f : fixed_rot_) f.assign(n, 0);
-  for (const auto& g : supports)
-    for (const auto& s : g.supports)
-      for (Index i : s.nodes) {
-        if (i < 0 || i >= n) throw InputError("support " + g.name + " refers to a missing node");
-        (s.rotational ? fixed_rot_ : fixed_)[static_cast<int>(s.axis)][i] = 1;
-      }
+  refresh_support_flags();
 
   // Damping.
   alpha_.assign(n, 0.0);
@@ -230,14 +232,26 @@ void Simulation::compute_internal_forces() {
   BlockEnergy be;
   try {
     Real dt_other = std::numeric_limits<Real>::max();  // steps of blocks that do not bound it
+    const ElementBlock* controlling = nullptr;
+    const ElementBlock* controlling_other = nullptr;
     for (auto& b : blocks) {
       const Real d = b->compute_forces(nodes, dt_, corners_, be);
-      if (b->bounds_time_step())
+      if (b->bounds_time_step()) {
+        if (d < dtc) controlling = b.get();
         dtc = std::min(dtc, d);
-      else
+      } else {
+        if (d < dt_other) controlling_other = b.get();
         dt_other = std::min(dt_other, d);
+      }
     }
-    if (dtc == std::numeric_limits<Real>::max()) dtc = dt_other;
+    if (dtc == std::numeric_limits<Real>::max()) {
+      dtc = dt_other;
+      controlling = controlling_other;
+    }
+    if (controlling != nullptr && (controlling->part_id() != dt_part_ || dt_kind_.empty())) {
+      dt_part_ = controlling->part_id();
+      dt_kind_ = controlling->kind();
+    }
   } catch (const InstabilityError& e) {
     throw InstabilityError(std::string(e.what()) + " at t = " + std::to_string(t_) +
                                ", cycle " + std::to_string(cycle_),
@@ -336,9 +350,25 @@ bool Simulation::step() {
     throw InstabilityError("time step collapsed to " + std::to_string(plan.dt_next) + " at t = " +
                                std::to_string(t_) + ", cycle " + std::to_string(cycle_),
                            t_, cycle_);
+  if (cycle_ == 0) dt_first_ = plan.dt_next;
+  if (controls.dt_min_fraction > 0.0 && !plan.at_end &&
+      plan.dt_next < controls.dt_min_fraction * dt_first_ && plan.t_next < controls.end_time)
+    throw InstabilityError("time step " + std::to_string(plan.dt_next) + " fell below " +
+                               std::to_string(controls.dt_min_fraction) + " x the first step (" +
+                               std::to_string(dt_first_) + ") at t = " + std::to_string(t_) + ", cycle " +
+                               std::to_string(cycle_) + "; the step is set by " +
+                               (dt_crit_ < dt_elements_ ? std::string("a contact interface")
+                                                        : "the " + dt_kind_ + " elements of part " +
+                                                              std::to_string(dt_part_)),
+                           t_, cycle_);
+  if (!plan.at_end && !(plan.t_next > t_))
+    throw InstabilityError("time no longer advances at t = " + std::to_string(t_) + " (step " +
+                               std::to_string(plan.dt_next) + "), cycle " + std::to_string(cycle_),
+                           t_, cycle_);
   form_accelerations();
   apply_constraints(plan);
   update_velocities(plan);
+  check_stability();
   record_outputs(plan.at_end);
   if (plan.at_end) {
     finished_ = true;
@@ -419,14 +449,27 @@ void Simulation::constrain_rigid_bodies() {
   for (auto& c : constraints) c->constrain_accelerations(loads, nodes, t_);
 }
 
+void Simulation::refresh_support_flags() {
+  // The components the active supports prescribe (all supports are active without BIRTH/DEATH).
+  if (has_timed_supports_)
+    for (const auto& g : supports)
+      for (const auto& s : g.supports)
+        for (Index i : s.nodes) (s.rotational ? fixed_rot_ : fixed_)[static_cast<int>(s.axis)][i] = 0;
+  for (const auto& g : supports)
+    for (const auto& s : g.supports)
+      if (s.active(t_))
+        for (Index i : s.nodes) (s.rotational ? fixed_rot_ : fixed_)[static_cast<int>(s.axis)][i] = 1;
+}
+
 void Simulation::prescribe_supports(const StepPlan& plan) {
   // The velocity each supported component must have over the coming step: zero unless the support
   // follows a displacement curve; then it lands the node exactly on u(t^{n+1}).
   const Real dt_new = plan.dt_next;
+  if (has_timed_supports_) refresh_support_flags();
   for (auto& g : supports)
     for (const auto& s : g.supports) {
       const int c = static_cast<int>(s.axis);
-      if (s.rotational) continue;  // the velocity update zeroes fixed rotations
+      if (s.rotational || !s.active(t_)) continue;  // the velocity update zeroes fixed rotations
       for (Index i : s.nodes) {
         Real vnew = 0.0;
         if (s.has_curve) {
@@ -446,7 +489,7 @@ void Simulation::compute_reactions() {
   for (auto& g : supports) {
     Vec3 r = Vec3::Zero();
     for (const auto& s : g.supports) {
-      if (s.rotational) continue;
+      if (s.rotational || !s.active(t_)) continue;
       const int c = static_cast<int>(s.axis);
       for (Index i : s.nodes) {
         const Real f = total ? f_total_[c][i] : nodes.f_int[c][i] + nodes.f_ext[c][i];
@@ -665,6 +708,75 @@ Real Simulation::constrained_kinetic_energy() const {
     if (nodes.has_rotation[i]) k += 0.5 * nodes.rot_inertia[i] * nodes.omega.get(i).squaredNorm();
   }
   return k;
+}
+
+// ---- Stability checks -----------------------------------------------------------------------
+
+Real Simulation::energy_error_fraction() const {
+  const Real peak = std::max(peak_energy_, std::numeric_limits<Real>::min());
+  return std::abs(ledger_.report().balance_error()) / peak;
+}
+
+std::string Simulation::describe_node(Index i) const {
+  std::string s = "node " + std::to_string(nodes.ids[i]);
+  for (const auto& b : blocks) {
+    const auto conn = b->connectivity();
+    const auto npe = static_cast<std::size_t>(b->nodes_per_element());
+    for (std::size_t k = 0; k < conn.size(); ++k)
+      if (conn[k] == i) {
+        return s + " (" + b->kind() + " element " + std::to_string(b->element_id(static_cast<Index>(k / npe))) +
+               " of part " + std::to_string(b->part_id()) + ")";
+      }
+  }
+  return s;
+}
+
+std::string Simulation::locate_non_finite() const {
+  // The rare path: the first node whose state is not finite.
+  const Index n = static_cast<Index>(nodes.size());
+  for (Index i = 0; i < n; ++i)
+    for (const Vec3Field* f : {&nodes.x, &nodes.v, &nodes.a, &nodes.f_int, &nodes.f_ext, &nodes.f_contact})
+      if (!f->get(i).allFinite()) {
+        const char* what = f == &nodes.x ? "position" : f == &nodes.v ? "velocity" : f == &nodes.a ? "acceleration"
+                           : f == &nodes.f_int ? "internal force" : f == &nodes.f_ext ? "external force"
+                                                                                        : "contact force";
+        return std::string("a non-finite ") + what + " at " + describe_node(i);
+      }
+  return "a non-finite energy (no nodal field is non-finite)";
+}
+
+void Simulation::check_stability() {
+  // A NaN or an infinity anywhere in the nodal state reaches the energy sums of this cycle.
+  const EnergyReport& e = ledger_.report();
+  const Real bal = e.balance_error();
+  if (!std::isfinite(bal) || !std::isfinite(e.kinetic))
+    throw InstabilityError(locate_non_finite() + " at t = " + std::to_string(t_) + ", cycle " +
+                               std::to_string(cycle_),
+                           t_, cycle_);
+  peak_energy_ = std::max({peak_energy_, std::abs(e.external) + std::abs(e.support) + std::abs(e.constraint) + e.kinetic0,
+                           e.kinetic, std::abs(e.internal) + e.hourglass + e.bulk_viscosity + e.damping +
+                                          std::abs(e.contact) + e.friction});
+  if (cycle_ < kEnergyCheckStart) return;
+  const Real err = energy_error_fraction();
+  if (controls.energy_error_warning > 0.0 && err > controls.energy_error_warning && !energy_warning_)
+    energy_warning_ = EnergyWarning{t_, cycle_, err};
+  if (controls.energy_error_limit > 0.0 && err > controls.energy_error_limit) {
+    // Where it started: the node with the largest kinetic energy.
+    Index worst = 0;
+    Real kmax = -1.0;
+    for (Index i = 0; i < static_cast<Index>(nodes.size()); ++i) {
+      const Real k = nodes.mass[i] * nodes.v.get(i).squaredNorm();
+      if (k > kmax) {
+        kmax = k;
+        worst = i;
+      }
+    }
+    throw InstabilityError("energy balance error " + std::to_string(100.0 * err) + "% exceeds the limit of " +
+                               std::to_string(100.0 * controls.energy_error_limit) + "% at t = " +
+                               std::to_string(t_) + ", cycle " + std::to_string(cycle_) +
+                               "; the fastest node is " + describe_node(worst),
+                           t_, cycle_);
+  }
 }
 
 // ---- Output ----------------------------------------------------------------------------------

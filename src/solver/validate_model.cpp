@@ -100,10 +100,14 @@ void check_controls(const model::Model& m, const BuildOptions& o, Problems& p) {
       p.bad({m.files.empty() ? std::string() : m.files.front(), 0},
             "no end time: the deck has no *CONTROL_TERMINATION with ENDTIM > 0");
   }
-  for (const auto& pm : m.prescribed_motions)
-    if (pm.vid != 0 || pm.birth != 0.0 || pm.death < 1e28)
-      p.todo(pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET: VID, BIRTH and DEATH are not implemented (got VID " +
-                         std::to_string(pm.vid) + ", BIRTH " + num(pm.birth) + ", DEATH " + num(pm.death) + ")");
+  for (const auto& pm : m.prescribed_motions) {
+    if (pm.vid != 0)
+      p.todo(pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET: VID (a motion along a vector) is not implemented (got VID " +
+                         std::to_string(pm.vid) + ")");
+    if (!(pm.death > pm.birth))
+      p.bad(pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET: DEATH (" + num(pm.death) + ") must be after BIRTH (" +
+                        num(pm.birth) + ")");
+  }
 }
 
 /// The kind of a degenerate hexahedron, or nullptr for eight distinct nodes.

@@ -247,6 +247,9 @@ struct DampingPartStiffness {
 struct ControlTermination {
   Real endtim = 0.0;
   int endcyc = 0;
+  /// Stop when the step falls below DTMIN x the first step. LS-DYNA's blank/0 means no limit;
+  /// slideline then uses 1e-4 (a collapsing step is an instability, not a reason to run forever).
+  Real dtmin = 0.0;
   Source src;
 };
 

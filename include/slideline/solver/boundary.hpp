@@ -1,5 +1,6 @@
 #pragma once
 /// Loads and supports in physical form (the builder converts deck semantics into these).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,12 @@ struct Support {
   bool has_curve = false;
   LoadCurve curve;
   Real scale = 1.0;
+  /// The support acts for birth <= t <= death (LS-DYNA BIRTH/DEATH of a prescribed motion); outside
+  /// that window its components are free. The curve gives the absolute displacement u(t).
+  Real birth = 0.0;
+  Real death = std::numeric_limits<Real>::infinity();
+  bool active(Real t) const { return t >= birth && t <= death; }
+  bool timed() const { return birth > 0.0 || death < 1e28; }
 };
 
 /// A group of supports reported together (one *BOUNDARY_SPC_SET fixing several directions is one

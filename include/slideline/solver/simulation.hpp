@@ -10,6 +10,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,6 +35,25 @@ struct SimulationControls {
   Real history_interval = 0.0;  ///< 0 = histories at every cycle
   Real state_interval = 0.0;    ///< 0 = no nodal states
   long max_cycles = 0;          ///< 0 = no limit
+  /// Stop with an InstabilityError when |energy balance error| exceeds this fraction of the
+  /// largest energy in play so far (0 = never). Checked from cycle kEnergyCheckStart on: before
+  /// that the energies are round-off and their ratio means nothing.
+  Real energy_error_limit = 0.05;
+  /// Record a warning (Simulation::energy_warning) the first time the error exceeds this fraction.
+  Real energy_error_warning = 0.01;
+  /// Stop when the step falls below this fraction of the first step (LS-DYNA's DTMIN of
+  /// *CONTROL_TERMINATION; 0 = never), naming the part whose elements control the step.
+  Real dt_min_fraction = 1e-4;
+};
+
+/// The first cycle at which the energy balance is checked against the limits above.
+inline constexpr long kEnergyCheckStart = 100;
+
+/// The first time the energy balance error passed SimulationControls::energy_error_warning.
+struct EnergyWarning {
+  Real time = 0.0;
+  long cycle = 0;
+  Real relative_error = 0.0;
 };
 
 /// The step plan_step() decides for the coming cycle.
@@ -87,6 +107,10 @@ class Simulation {
   /// Wall-clock seconds spent in element force evaluation and in contact, for the run summary.
   Real element_seconds() const { return element_seconds_; }
   Real contact_seconds() const { return contact_seconds_; }
+  /// Set once the energy balance error first passed controls.energy_error_warning.
+  const std::optional<EnergyWarning>& energy_warning() const { return energy_warning_; }
+  /// |balance error| over the largest energy in play so far (the quantity the limits apply to).
+  Real energy_error_fraction() const;
   /// Effective translational mass (own + condensed tied slaves) used in the last cycle.
   std::span<const Real> effective_mass() const {
     return contacts.condenses() ? std::span<const Real>(mass_eff_) : std::span<const Real>(nodes.mass);
@@ -108,6 +132,7 @@ class Simulation {
   void constrain_rigid_bodies();
   void prescribe_supports(const StepPlan& plan);
   void compute_reactions();
+  void refresh_support_flags();
   void book_dictated_nodes(const StepPlan& plan);
 
   void update_damping_coefficients();
@@ -115,6 +140,9 @@ class Simulation {
   void collect_history(std::vector<Real>& values) const;
   Real next_output_time(Real interval, Real last) const;
   ConstraintLoads constraint_loads() const;
+  void check_stability();
+  std::string locate_non_finite() const;
+  std::string describe_node(Index i) const;
 
   CornerBuffer corners_;
   std::vector<Real> alpha_;             // per-node mass-damping coefficient
@@ -157,7 +185,13 @@ class Simulation {
   bool finished_ = false;
   bool forces_current_ = false;  // the forces at t_ are evaluated
   bool has_damping_curves_ = false;
+  bool has_timed_supports_ = false;  // a support with BIRTH/DEATH: fixed_ is refreshed each cycle
   bool has_rotations_ = false;  // any node carries rotations (then moments are cleared each step)
+  Real dt_first_ = 0.0;           // the first step taken (for dt_min_fraction)
+  Real peak_energy_ = 0.0;         // largest energy in play so far
+  Id dt_part_ = 0;                 // part whose elements set dt_elements_
+  std::string dt_kind_;            // and their kind
+  std::optional<EnergyWarning> energy_warning_;
   Real element_seconds_ = 0.0;
   Real contact_seconds_ = 0.0;
 };
