@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the main job. Today: the demo run of the spec's two solid blocks merged
-# into one loaded body (examples/decks/merged_blocks.k) with the blockcontact CLI; results in out/.
-# (The 19-problem verification suite and its report replace this when the contact issues land.)
+# Sets up, builds and runs the main job: the 19 verification problems of the spec
+# (../shared/spec/, docs/verification.md) through `blockcontact verify --all`, which prints the
+# table of criteria (ours beside DYNA3D's) and writes out/verify/report.md with its plots.
+# Exit code: verify's (0 only when every criterion of every problem holds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-mkdir -p out
-if [ -x build/apps/blockcontact/blockcontact ]; then
-  build/apps/blockcontact/blockcontact run examples/decks/merged_blocks.k -o out --csv
-else
-  echo "blockcontact is not built; running the library example instead"
-  build/examples/loaded_block
-fi
+mkdir -p out/verify
+status=0
+build/apps/blockcontact/blockcontact verify --all -o out/verify || status=$?
+echo "verification report: $(pwd)/out/verify/report.md (exit code ${status})"
+exit "${status}"
