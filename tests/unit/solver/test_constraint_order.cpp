@@ -249,6 +249,8 @@ Real run_driven_tie(bool with_drive, Real& worst_energy, Vec3& slave_displacemen
   m.sim.damping = {d1, d2};
   m.sim.body_loads.push_back(body_load(Axis::y, 50.0, 2, 0.05));
   m.sim.body_loads.push_back(body_load(Axis::z, -20.0, 2, 0.05));
+  // The driven master's balance error is reported, not used to stop (see the note in the test).
+  m.sim.controls.energy_error_limit = 0.0;
   m.sim.initialize();
   Real worst = 0.0;
   worst_energy = 0.0;

@@ -118,10 +118,15 @@ TEST(ValidateModel, PrescribedMotionFieldsNotRunAreRefused) {
   model::PrescribedMotion pm;
   pm.nsid = 1;
   pm.lcid = 1;
-  pm.birth = 0.1;
+  pm.vid = 3;  // a motion along a vector
   pm.src = {"p.k", 12};
   m.prescribed_motions.push_back(pm);
   EXPECT_THROW(validate_model(m), NotImplementedError);
+  // BIRTH and DEATH are honoured (SupportWindow test); a window that closes before it opens is not.
+  m.prescribed_motions.back().vid = 0;
+  m.prescribed_motions.back().birth = 0.2;
+  m.prescribed_motions.back().death = 0.1;
+  EXPECT_THROW(validate_model(m), InputError);
 }
 
 TEST(ValidateModel, SeedDeckHexahedraAreValid) {
