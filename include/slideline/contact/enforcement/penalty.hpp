@@ -212,7 +212,9 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
   initial_count_ = 0;
   initial_max_ = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (gap_[i] < 0.0 && std::isfinite(gap_[i])) {
+    // Round-off of a seated start (|g| <= 1e-9 x the segment size) is not a penetration.
+    const Real tol = segment_[i] >= 0 ? 1e-9 * proj_[i].projection.size : 0.0;
+    if (gap_[i] < -tol && std::isfinite(gap_[i])) {
       g0_[i] = -gap_[i];
       ++initial_count_;
       initial_max_ = std::max(initial_max_, -gap_[i]);
