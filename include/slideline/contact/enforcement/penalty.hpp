@@ -80,6 +80,9 @@ class PenaltyPass {
   /// Stiffness per segment, search structures and state; detects initial penetrations (they
   /// become the spring's zero, see initial_penetrations()). Allocates.
   void initialize(const NodalFields& nodes, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
+  /// The same with the stiffness of each master segment given (force / length, one per segment,
+  /// already scaled: stiffness_scale is not applied), e.g. for surfaces without element blocks.
+  void initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness);
 
   /// Search or tracking, gaps, normal and friction forces for every slave at x^n, v^{n-1/2}
   /// (parallel over slaves; writes records()). No allocation in a steady state.
@@ -133,6 +136,7 @@ class PenaltyPass {
   std::vector<std::int8_t> side_;       ///< shell master: side of the slave, 0 unknown
   std::vector<std::uint8_t> touched_;   ///< sliding only: has been in contact
   std::vector<Vec3> ft_;                ///< tangential force history (force, on the slave)
+  std::vector<Real> slip_speed_;        ///< slip rate of the last step (length / time), 0 sticking
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
@@ -151,7 +155,6 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
                                     const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
   const Index ns = master_.segment_count();
   k_seg_.assign(static_cast<std::size_t>(ns), 0.0);
-  Real min_diag = std::numeric_limits<Real>::max();
   for (Index s = 0; s < ns; ++s) {
     const SegmentStiffnessData d = segment_stiffness_data(master_, s, blocks, nodes.x);
     const bool shell = master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell;
@@ -162,8 +165,17 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
       k = d.element_volume > 0.0 ? d.bulk_modulus * d.face_area * d.face_area / d.element_volume : 0.0;
     }
     k_seg_[static_cast<std::size_t>(s)] = opt_.stiffness_scale * k;
-    min_diag = std::min(min_diag, d.max_diagonal);
   }
+  initialize(nodes, std::move(k_seg_));
+}
+
+inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness) {
+  const Index ns = master_.segment_count();
+  if (static_cast<Index>(segment_stiffness.size()) != ns)
+    throw Error("PenaltyPass::initialize: one stiffness per master segment");
+  k_seg_ = std::move(segment_stiffness);
+  Real min_diag = std::numeric_limits<Real>::max();
+  for (Index s = 0; s < ns; ++s) min_diag = std::min(min_diag, segment_max_diagonal(master_, s, nodes.x));
   Real max_offset = 0.0;
   for (Index s = 0; s < ns; ++s) max_offset = std::max(max_offset, master_offset(s));
   Real max_slave_offset = 0.0;
@@ -185,6 +197,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
   side_.assign(n, 0);
   touched_.assign(n, 0);
   ft_.assign(n, Vec3::Zero());
+  slip_speed_.assign(n, 0.0);
   g0_.assign(n, 0.0);
   gap_.assign(n, std::numeric_limits<Real>::infinity());
   records_.assign(n, PenaltyRecord{});
@@ -222,6 +235,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
     }
     records_[i] = PenaltyRecord{};
     ft_[i] = Vec3::Zero();
+    slip_speed_[i] = 0.0;
     touched_[i] = 0;
   }
 }
@@ -333,6 +347,7 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   if (s < 0) {
     gap_[i] = std::numeric_limits<Real>::infinity();
     ft_[i] = Vec3::Zero();
+    slip_speed_[i] = 0.0;
     return;
   }
   const Projection& pr = proj_[i].projection;
@@ -373,6 +388,7 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   const bool engaged = !beside && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
   if (!engaged) {
     ft_[i] = Vec3::Zero();
+    slip_speed_[i] = 0.0;
     if (!beside && gap > 0.0 && !touched_[i]) side_[i] = 0;  // free: re-detect the side
     if (beside || too_deep) gap_[i] = std::numeric_limits<Real>::infinity();
     return;
@@ -391,9 +407,14 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
       const Vec3 vt = tangential_part(vrel, n);
       const Vec3 du = times.dt_prev * vt;
       const Vec3 trial = rotate_into_plane(ft_[i], n) - k * du;
-      const TangentialReturn r = coulomb_return_map(trial, fn, law.coefficient(vt.norm()));
+      const TangentialReturn r = coulomb_return_map(trial, fn, law.coefficient(slip_speed_[i]));
       ft = r.force;
-      if (r.slipping) rec.dissipation = r.force.norm() * (trial.norm() - r.force.norm()) / k;
+      slip_speed_[i] = 0.0;
+      if (r.slipping) {
+        const Real slip = (trial.norm() - r.force.norm()) / k;  // plastic slip of this step (length)
+        rec.dissipation = r.force.norm() * slip;
+        slip_speed_[i] = times.dt_prev > 0.0 ? slip / times.dt_prev : 0.0;
+      }
     }
     ft_[i] = ft;
     f += ft;
