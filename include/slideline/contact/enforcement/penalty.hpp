@@ -136,7 +136,6 @@ class PenaltyPass {
   std::vector<std::int8_t> side_;       ///< shell master: side of the slave, 0 unknown
   std::vector<std::uint8_t> touched_;   ///< sliding only: has been in contact
   std::vector<Vec3> ft_;                ///< tangential force history (force, on the slave)
-  std::vector<Real> slip_speed_;        ///< slip rate of the last step (length / time), 0 sticking
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
@@ -197,7 +196,6 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
   side_.assign(n, 0);
   touched_.assign(n, 0);
   ft_.assign(n, Vec3::Zero());
-  slip_speed_.assign(n, 0.0);
   g0_.assign(n, 0.0);
   gap_.assign(n, std::numeric_limits<Real>::infinity());
   records_.assign(n, PenaltyRecord{});
@@ -235,7 +233,6 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
     }
     records_[i] = PenaltyRecord{};
     ft_[i] = Vec3::Zero();
-    slip_speed_[i] = 0.0;
     touched_[i] = 0;
   }
 }
@@ -347,7 +344,6 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   if (s < 0) {
     gap_[i] = std::numeric_limits<Real>::infinity();
     ft_[i] = Vec3::Zero();
-    slip_speed_[i] = 0.0;
     return;
   }
   const Projection& pr = proj_[i].projection;
@@ -388,7 +384,6 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   const bool engaged = !beside && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
   if (!engaged) {
     ft_[i] = Vec3::Zero();
-    slip_speed_[i] = 0.0;
     if (!beside && gap > 0.0 && !touched_[i]) side_[i] = 0;  // free: re-detect the side
     if (beside || too_deep) gap_[i] = std::numeric_limits<Real>::infinity();
     return;
@@ -407,14 +402,14 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
       const Vec3 vt = tangential_part(vrel, n);
       const Vec3 du = times.dt_prev * vt;
       const Vec3 trial = rotate_into_plane(ft_[i], n) - k * du;
-      const TangentialReturn r = coulomb_return_map(trial, fn, law.coefficient(slip_speed_[i]));
+      // mu at the relative tangential speed (DYNA3D). Taking it at the last step's slip rate
+      // instead (mu_s while sticking) lags the coefficient one step: the map F_n -> F_{n+1} then
+      // oscillates with growth |a|, a = beta (mu_s - mu_k) N / (k_t dt), unstable for |a| > 1;
+      // a backward-Euler slip rate is worse (unstable for a < -1/2). The relative speed feeds
+      // back only through the masses.
+      const TangentialReturn r = coulomb_return_map(trial, fn, law.coefficient(vt.norm()));
       ft = r.force;
-      slip_speed_[i] = 0.0;
-      if (r.slipping) {
-        const Real slip = (trial.norm() - r.force.norm()) / k;  // plastic slip of this step (length)
-        rec.dissipation = r.force.norm() * slip;
-        slip_speed_[i] = times.dt_prev > 0.0 ? slip / times.dt_prev : 0.0;
-      }
+      if (r.slipping) rec.dissipation = r.force.norm() * (trial.norm() - r.force.norm()) / k;
     }
     ft_[i] = ft;
     f += ft;
