@@ -181,3 +181,30 @@ void BM_FclSearchAndNearest(benchmark::State& state) {
 BENCHMARK(BM_FclSearchAndNearest)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// Penalty contact per slave node and cycle: cadence check, search (amortised) or tracking,
+// gap, normal and friction forces, serial scatter. nx x nx segments, nx x nx slaves sliding.
+#include "../tests/unit/contact/penalty_scene.hpp"
+
+namespace {
+void BM_PenaltyPass(benchmark::State& state) {
+  const Index nx = static_cast<Index>(state.range(0));
+  auto s = test::make_penalty_scene(nx, 0.01, 100.0, ExponentialCoulomb{0.3, 0.25, 2.0});
+  Vec3Field f, m;
+  f.resize(s->nodes.x.size());
+  m.resize(s->nodes.x.size());
+  StepTimes t;
+  t.dt_prev = 1e-3;
+  long step = 0;
+  for (auto _ : state) {
+    test::move_slaves(*s, Vec3(((step++ / 8) % 2 ? -0.01 : 0.01), 0.0, 0.0), 1e-3);
+    s->pass->compute(s->nodes, t);
+    Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+    Real w = 0.0;
+    s->pass->scatter(ContactForceView{f, m}, a, b, w);
+    benchmark::DoNotOptimize(a);
+  }
+  set_rate(state, "ns_per_slave_cycle", static_cast<double>(nx * nx) * 1e-9);
+}
+}  // namespace
+BENCHMARK(BM_PenaltyPass)->Arg(10)->Arg(32)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond);

@@ -1,11 +1,34 @@
-// Stub until its issue lands: penalty sliding interfaces (types 3 and 10) land with issue 8.
+// Types 3 (surface to surface) and 10 (one way): penalty interfaces (issue 8).
+#include <memory>
+
 #include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/contact/penalty_contact.hpp"
+#include "slideline/contact/penalty_factory.hpp"
 
 namespace slideline {
 
-std::unique_ptr<ContactAlgorithm> make_sliding_contact(const model::Contact& card, const std::string& /*title*/,
-                                      const ContactBuildContext& /*ctx*/) {
-  throw_contact_not_implemented(card);
+std::unique_ptr<ContactAlgorithm> make_sliding_contact(const model::Contact& card, const std::string& title,
+                                                       const ContactBuildContext& ctx) {
+  if (card.enforcement != model::Enforcement::penalty) throw_contact_not_implemented(card);
+  if (card.sstyp == 4) throw_contact_not_implemented(card, "a node-set slave side (SSTYP 4) needs Type 5");
+  ContactSide slave = resolve_contact_side(card, true, ctx);
+  ContactSide master = resolve_contact_side(card, false, ctx);
+  const bool thk = ctx.model.control_contact.shlthk > 0;
+  std::vector<std::unique_ptr<PenaltyPass>> passes;
+  std::vector<bool> reversed;
+  // Pass 1: slave nodes on master segments (stiffness factor SLSFAC x SFS).
+  passes.push_back(std::make_unique<PenaltyPass>(
+      slave.nodes, shell_half_thickness(slave, thk, card.sst, card.sfst), master.surface,
+      std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt)));
+  reversed.push_back(false);
+  if (card.type == model::ContactType::surface_to_surface) {
+    // Pass 2 (Type 3 only): master nodes on slave segments (SLSFAC x SFM).
+    passes.push_back(std::make_unique<PenaltyPass>(
+        master.nodes, shell_half_thickness(master, thk, card.mst, card.sfmt), slave.surface,
+        std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfm, card.sst, card.sfst)));
+    reversed.push_back(true);
+  }
+  return std::make_unique<PenaltyContact>(title, std::move(passes), std::move(reversed));
 }
 
 }  // namespace slideline
