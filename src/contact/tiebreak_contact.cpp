@@ -184,6 +184,7 @@ void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& no
   const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
   const Real side = side_[k];
   const Real gap = side * best.gap - side * t.gap;  // penetration past the tie-time stand-off
+  // The tie spring's stiffness at tie time: continuous through the release (no kick).
   const Real kk = kappa_[k] * area0_[k];
   if (gap >= 0.0 || tangential > 1e-3 * best.size) {
     friction_force_[k] = Vec3::Zero();
