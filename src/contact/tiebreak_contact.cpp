@@ -64,6 +64,14 @@ void TiebreakContact::initialize(const ContactContext& c) {
       segment_area_[j] = a;
       segment_share_[j] = a / (tri ? 3.0 : 4.0);
       const Vec3 nj = segment_normal(slave_surface_, j, nodes.x);
+      // Only segments whose corners are all tied carry a tie (a side face of a slave block, with
+      // one edge on the interface, does not).
+      bool tied = true;
+      for (int q = 0; q < (tri ? 3 : 4); ++q) tied = tied && link_of[slave_surface_.conn[4 * static_cast<std::size_t>(j) + q]] >= 0;
+      if (!tied) {
+        segment_failed_[j] = 1;  // never evaluated
+        continue;
+      }
       for (int q = 0; q < (tri ? 3 : 4); ++q) {
         const Index l = link_of[slave_surface_.conn[4 * static_cast<std::size_t>(j) + q]];
         segment_links_[4 * static_cast<std::size_t>(j) + q] = l;
