@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "slideline/contact/make_tiebreak_contact.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/mesh/surface_builder.hpp"
 #include "slideline/solver/build.hpp"
@@ -98,8 +99,7 @@ std::unique_ptr<ContactAlgorithm> make_contact_interface(const model::Contact& c
                       : make_node_and_automatic_contact(card, title, ctx);
     case T::tiebreak_nodes:
     case T::tiebreak_surface:
-      if (lagrange) throw_contact_not_implemented(card, "tiebreak interfaces are penalty only");
-      return make_node_and_automatic_contact(card, title, ctx);
+      return make_tiebreak_contact(card, title, ctx);
   }
   throw_contact_not_implemented(card);
 }

@@ -1,0 +1,101 @@
+#pragma once
+/// The one-time search of tied interfaces (Types 2, 6, 7, 8, 9): each slave node is projected onto
+/// its nearest master segment at initialisation and keeps that point for good (tied interfaces
+/// never search again). Master segments are binned into a uniform grid of cells one largest
+/// segment diagonal wide, so the search costs O(slaves + segments), allocated once.
+///
+/// A slave is tied only when its closest point lies on the segment (within `parametric_tol` of
+/// the segment size along the surface) and within `normal_tol` x the segment size of it along the
+/// normal; other slaves are reported as untied, never silently attached to a far segment.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include "slideline/contact/search/closest_point.hpp"
+#include "slideline/core/types.hpp"
+#include "slideline/mesh/nodal_fields.hpp"
+#include "slideline/mesh/surface.hpp"
+
+namespace slideline {
+
+/// One slave node's master point.
+struct TiePoint {
+  Index slave = -1;
+  Index segment = -1;               ///< -1: no master segment within the tolerances (untied)
+  std::array<Index, 4> master{};    ///< the segment's 4 node indices (corner 3 repeats 2 on a triangle)
+  std::array<Real, 4> shape{};      ///< shape functions of the master point (sum 1)
+  Vec3 offset = Vec3::Zero();       ///< x_slave - x_point at tie time (length)
+  Vec3 normal = Vec3::Zero();       ///< master unit normal at tie time
+  Real gap = 0.0;                   ///< signed normal gap at tie time (length)
+  Real size = 0.0;                  ///< master segment diagonal (length)
+};
+
+struct TieSearchOptions {
+  Real parametric_tol = 1e-3;  ///< tangential distance off the segment / segment size
+  Real normal_tol = 0.3;       ///< |normal gap| / segment size
+};
+
+/// Projects each node of `slaves` (indices into x) onto `master` at coordinates `x`. Returns one
+/// TiePoint per slave, in the order of `slaves`; untied ones have segment = -1.
+inline std::vector<TiePoint> find_tie_points(std::span<const Index> slaves, const Surface& master,
+                                             const Vec3Field& x, const TieSearchOptions& opt = {}) {
+  std::vector<TiePoint> out(slaves.size());
+  const Index ns = master.segment_count();
+  Real cell = 0.0;
+  for (Index s = 0; s < ns; ++s) cell = std::max(cell, detail::segment_size(segment_corners(master, s, x)));
+  // The reach of a slave beyond a segment's box: the normal tolerance of the largest segment.
+  const Real reach = std::max(opt.normal_tol, opt.parametric_tol) * cell;
+  cell = cell > 0.0 ? cell : 1.0;
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+  };
+  std::unordered_map<std::int64_t, std::vector<Index>> grid;
+  auto cell_of = [&](Real v) { return static_cast<std::int64_t>(std::floor(v / cell)); };
+  for (Index s = 0; s < ns; ++s) {
+    const SegmentCorners c = segment_corners(master, s, x);
+    Vec3 lo = c[0], hi = c[0];
+    for (const Vec3& p : c) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    lo.array() -= reach;
+    hi.array() += reach;
+    for (auto i = cell_of(lo[0]); i <= cell_of(hi[0]); ++i)
+      for (auto j = cell_of(lo[1]); j <= cell_of(hi[1]); ++j)
+        for (auto k = cell_of(lo[2]); k <= cell_of(hi[2]); ++k) grid[key(i, j, k)].push_back(s);
+  }
+  for (std::size_t n = 0; n < slaves.size(); ++n) {
+    TiePoint& t = out[n];
+    t.slave = slaves[n];
+    const Vec3 p = x.get(t.slave);
+    const auto it = grid.find(key(cell_of(p[0]), cell_of(p[1]), cell_of(p[2])));
+    if (it == grid.end()) continue;
+    // Hash collisions only add candidates; ascending order keeps is_better_projection's tie rule.
+    Projection best;
+    Index best_s = -1;
+    for (Index s : it->second) {
+      const Projection pr = project_point_to_segment(p, master, s, x);
+      if (best_s < 0 || is_better_projection(pr, s, best, best_s)) best = pr, best_s = s;
+    }
+    if (best_s < 0) continue;
+    const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
+    if (tangential > opt.parametric_tol * best.size || std::abs(best.gap) > opt.normal_tol * best.size) continue;
+    t.segment = best_s;
+    for (int a = 0; a < 4; ++a) t.master[a] = master.conn[4 * static_cast<std::size_t>(best_s) + a];
+    t.shape = best.shape;
+    t.offset = p - best.point;
+    t.normal = best.normal;
+    t.gap = best.gap;
+    t.size = best.size;
+  }
+  return out;
+}
+
+/// x at the master point of t: sum_a N_a f(master_a).
+inline Vec3 tie_point_value(const TiePoint& t, const Vec3Field& f) {
+  return t.shape[0] * f.get(t.master[0]) + t.shape[1] * f.get(t.master[1]) + t.shape[2] * f.get(t.master[2]) +
+         t.shape[3] * f.get(t.master[3]);
+}
+
+}  // namespace slideline

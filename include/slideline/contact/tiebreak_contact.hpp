@@ -1,0 +1,129 @@
+#pragma once
+/// TiebreakContact: DYNA3D's penalty ties with failure, Type 8 (nodes spotwelded to a surface:
+/// failure per slave node) and Type 9 (tied surfaces with failure: failure per slave segment).
+/// One class serves both: they share the tie springs and the post-failure contact and differ only
+/// in the failure unit (FailureUnit).
+///
+/// Tie: each slave node s is held at its master point (found once, tie_search.hpp) by an
+/// isotropic penalty spring on delta = x_s - sum N_a x_a - d_s (d_s the offset at tie time):
+/// f_s = -k_s delta on the slave, -N_a f_s on each master node. The stiffness per unit area of the
+/// master segment is that of penalty contact with f = SLSFAC x SFS:
+///   solid face  kappa = f K A / V     (so kappa A = f K A^2 / V, LS-DYNA's segment stiffness)
+///   shell       kappa = f K / max diagonal
+/// Type 8: k_s = kappa A_master (the per-node spring of penalty contact).
+/// Type 9: k_s = kappa x (the slave node's tributary area over the slave segments not yet failed):
+///   each slave segment j contributes kappa_s A_j / 4 (A_j / 3 on a triangle) to each corner.
+///   A uniform traction then needs a uniform gap, so corner, edge and interior segments carry the
+///   same stress (DYNA3D uses the master segment stiffness for every node, which puts 21 % too much
+///   force on corner nodes at factor 10, report 6.8.1). The force of segment j is the sum of its
+///   corners' shares -kappa_s (A_j / 4) delta_s.
+///
+/// Failure: F_n = tensile normal part (0 in compression: a compressed tie does not fail in
+/// tension), F_s = |tangential part|, with n the master normal oriented towards the slave side.
+///   Type 8 (per node):    (F_n / NFLF)^NEN + (F_s / SFLF)^MES >= 1
+///   Type 9 (per segment): (F_n / (NFLF A_j))^2 + (F_s / (SFLF A_j))^2 >= 1
+/// A zero or negative failure force or stress disables its term. Failure is permanent; it takes
+/// effect from the next cycle. A Type 9 node is released when all of its slave segments failed.
+///
+/// After failure a node is in penalty node-on-segment contact with the master surface, with
+/// exponential Coulomb friction (Type 8 then behaves as Type 5, Type 9 as Type 3): the node tracks
+/// its segment through the master's edge neighbours, pushes out along the normal when it
+/// penetrates the surface through its tie point (gap below the tie-time gap) with the tie spring's
+/// stiffness, and carries a stick spring in the tangent plane capped at mu N.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/search/closest_point.hpp"
+#include "slideline/contact/search/tie_search.hpp"
+#include "slideline/mesh/segment_geometry.hpp"
+#include "slideline/mesh/segment_stiffness.hpp"
+#include "slideline/mesh/surface.hpp"
+
+namespace slideline {
+
+struct TiebreakParameters {
+  enum class FailureUnit : std::uint8_t { node, segment };
+  FailureUnit unit = FailureUnit::node;
+  Real penalty_factor = 1.0;  ///< f = SLSFAC x SFS
+  Real normal_failure = 0.0;  ///< NFLF: force (Type 8) or stress (Type 9); <= 0: no normal failure
+  Real shear_failure = 0.0;   ///< SFLF: likewise
+  Real normal_exponent = 2.0; ///< NEN (Type 8; Type 9 uses 2)
+  Real shear_exponent = 2.0;  ///< MES (Type 8; Type 9 uses 2)
+  ExponentialCoulomb friction;
+};
+
+class TiebreakContact final : public ContactAlgorithm {
+ public:
+  /// slaves: slave node indices (Type 8: a node set; Type 9: the slave surface's nodes);
+  /// slave_surface: the slave segments (Type 9; empty for Type 8); master: with adjacency built.
+  TiebreakContact(std::string name, std::vector<Index> slaves, Surface slave_surface, Surface master,
+                  TiebreakParameters p)
+      : name_(std::move(name)), candidates_(std::move(slaves)), slave_surface_(std::move(slave_surface)),
+        master_(std::move(master)), p_(p) {}
+
+  const std::string& name() const override { return name_; }
+
+  void initialize(const ContactContext& c) override;
+  void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override;
+  Real stable_dt() const override { return dt_; }
+  Vec3 slave_force() const override { return slave_; }
+  Vec3 master_force() const override { return master_total_; }
+  Real friction_work() const override { return friction_work_; }
+
+  /// Slave nodes tied at initialize (each with its master point).
+  const std::vector<TiePoint>& links() const { return links_; }
+  const std::vector<Index>& untied_nodes() const { return untied_nodes_; }
+  /// Per link: 1 once the node is released from its tie.
+  const std::vector<std::uint8_t>& released() const { return released_; }
+  /// Per slave segment (Type 9): 1 once it failed.
+  const std::vector<std::uint8_t>& failed_segments() const { return segment_failed_; }
+  /// Per link: the current tie spring stiffness (force / length).
+  Real stiffness(std::size_t k) const { return kappa_[k] * area_[k]; }
+  /// Per slave segment (Type 9): the force of the tie on it at the last cycle (on the slave side).
+  const std::vector<Vec3>& segment_forces() const { return segment_force_; }
+
+ private:
+  Real failure_index(const Vec3& f, const Vec3& n, Real fn_fail, Real fs_fail, Real en, Real es) const {
+    const Real fn = std::max(0.0, -f.dot(n));
+    const Real fs = (f - f.dot(n) * n).norm();
+    Real r = 0.0;
+    if (fn_fail > 0.0) r += std::pow(fn / fn_fail, en);
+    if (fs_fail > 0.0) r += std::pow(fs / fs_fail, es);
+    return r;
+  }
+  Vec3 oriented_normal(std::size_t k, const Vec3Field& x) const {
+    return side_[k] * segment_normal(master_, links_[k].segment, x);
+  }
+  void contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times, ContactForceView out);
+
+  std::string name_;
+  std::vector<Index> candidates_;
+  Surface slave_surface_, master_;
+  TiebreakParameters p_;
+  std::vector<TiePoint> links_;
+  std::vector<Index> untied_nodes_;
+  std::vector<Real> kappa_;          ///< per link: stiffness per unit area (force / length^3)
+  std::vector<Real> area_;           ///< per link: area its spring stands for (unfailed tributary area)
+  std::vector<Real> area0_;          ///< per link: the same at tie time
+  std::vector<Real> side_;           ///< per link: +1 / -1, orients the master normal towards the slave
+  std::vector<std::uint8_t> released_;
+  std::vector<Vec3> delta_;          ///< per link: tie stretch at the last cycle
+  std::vector<Index> segment_links_; ///< 4 per slave segment: link indices (-1 if untied/repeated)
+  std::vector<Real> segment_area_;   ///< per slave segment: area at tie time
+  std::vector<Real> segment_share_;  ///< per slave segment: area per corner (A/4, A/3 on triangles)
+  std::vector<std::uint8_t> segment_failed_;
+  std::vector<Vec3> segment_force_;
+  std::vector<Index> track_;         ///< per link: master segment tracked after release
+  std::vector<Vec3> friction_force_; ///< per link: tangential force after release (history)
+  Real dt_ = std::numeric_limits<Real>::max();
+  Real friction_work_ = 0.0;
+  Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
+};
+
+}  // namespace slideline

@@ -1,0 +1,144 @@
+#pragma once
+/// TiedContact: the kinematic tied interfaces of DYNA3D, Types 2 (tied surfaces: slave surface
+/// nodes), 6 (discrete nodes tied to a surface: a slave node set) and 7 (shell edge tied to a
+/// shell surface: rotations tied too). One class serves all three: they differ only in how the
+/// slave nodes are selected (the factory) and in whether rotations are tied (Type 7 requires
+/// them; Types 2 and 6 tie them where slave and masters both have rotational degrees of freedom,
+/// i.e. shell on shell, because the simulation does not integrate a dictated node's rotation:
+/// a shell slave on a solid master keeps its initial (zero) angular velocity).
+///
+/// Kinematics: x_s = sum N_a x_a + d_s (d_s, the offset at tie time, kept constant),
+/// v_s = sum N_a v_a, omega_s = sum N_a omega_a. Interface force on the slave side: the force the
+/// tie applies to the slaves, sum (m_s a_s - f_s) with a_s = sum N_a a_a; on the master side: the
+/// same per-slave force spread with N_a and negated (sum N_a = 1, so the two totals are equal and
+/// opposite to round-off).
+#include <algorithm>
+#include <cstdio>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/contact/enforcement/kinematic.hpp"
+#include "slideline/contact/search/tie_search.hpp"
+#include "slideline/core/error.hpp"
+#include "slideline/mesh/surface.hpp"
+
+namespace slideline {
+
+class TiedContact final : public ContactAlgorithm {
+ public:
+  /// slaves: candidate slave node indices; master: the master surface; tie_rotations: Type 7
+  /// (every tied slave must then have rotational degrees of freedom, as must its masters).
+  TiedContact(std::string name, std::vector<Index> slaves, Surface master, bool tie_rotations,
+              TieSearchOptions options = {})
+      : name_(std::move(name)), candidates_(std::move(slaves)), master_(std::move(master)),
+        require_rotations_(tie_rotations), options_(options) {}
+
+  const std::string& name() const override { return name_; }
+
+  void initialize(const ContactContext& context) override {
+    const NodalFields& nodes = context.nodes;
+    // A slave that is also a master node of this interface (a shared node) is not tied to itself.
+    std::vector<std::uint8_t> is_master(nodes.size(), 0);
+    for (Index m : master_.conn) is_master[m] = 1;
+    std::vector<Index> slaves;
+    for (Index s : candidates_)
+      if (!is_master[s]) slaves.push_back(s);
+    std::vector<TiePoint> found = find_tie_points(slaves, master_, nodes.x, options_);
+    links_.clear();
+    untied_nodes_.clear();
+    for (const TiePoint& t : found) {
+      if (t.segment >= 0) links_.push_back(t);
+      else untied_nodes_.push_back(t.slave);
+    }
+    if (!untied_nodes_.empty()) {
+      std::string ids;
+      for (std::size_t k = 0; k < untied_nodes_.size() && k < 10; ++k)
+        ids += (k ? ", " : "") + std::to_string(nodes.ids[untied_nodes_[k]]);
+      std::fprintf(stderr, "contact %s: %zu slave node(s) project outside every master segment and are left free "
+                   "(first ids: %s)\n", name_.c_str(), untied_nodes_.size(), ids.c_str());
+    }
+    rotation_.assign(links_.size(), 0);
+    slaves_.clear();
+    masters_.clear();
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+      rotation_[k] = kinematic::ties_rotation(links_[k], nodes) ? 1 : 0;
+      if (require_rotations_ && !rotation_[k])
+        throw InputError("contact " + name_ + " (shell edge tied to a shell surface): slave node " +
+                         std::to_string(nodes.ids[links_[k].slave]) +
+                         " or its master nodes have no rotational degrees of freedom (shells required)");
+      slaves_.push_back(links_[k].slave);
+      for (int a = 0; a < 4; ++a) masters_.push_back(links_[k].master[a]);
+    }
+    std::sort(masters_.begin(), masters_.end());
+    masters_.erase(std::unique(masters_.begin(), masters_.end()), masters_.end());
+    force_.assign(links_.size(), Vec3::Zero());
+    mass_.assign(links_.size(), 0.0);
+    slave_ = master_total_ = Vec3::Zero();
+  }
+
+  bool condenses() const override { return true; }
+
+  void condense(const NodalFields& /*nodes*/, CondenseView v) override {
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+      const TiePoint& t = links_[k];
+      const Real ms = v.mass[t.slave];
+      const Vec3 fs = v.force.get(t.slave);
+      mass_[k] = ms;
+      force_[k] = fs;
+      kinematic::scatter(t, v.mass, ms);
+      kinematic::scatter(t, v.force, fs);
+      if (rotation_[k]) {
+        kinematic::scatter(t, v.rot_inertia, v.rot_inertia[t.slave]);
+        kinematic::scatter(t, v.moment, v.moment.get(t.slave));
+      }
+    }
+  }
+
+  void follow_velocities(NodalFields& nodes) override {
+    // The tie force on each slave, from the masters' final accelerations (idempotent: the
+    // simulation may call this twice in a cycle when a rigid body resets its nodes).
+    Vec3 slave = Vec3::Zero(), master = Vec3::Zero();
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+      const TiePoint& t = links_[k];
+      const Vec3 tie = mass_[k] * tie_point_value(t, nodes.a) - force_[k];
+      slave += tie;
+      for (int a = 0; a < 4; ++a) master -= t.shape[a] * tie;
+      nodes.v.set(t.slave, tie_point_value(t, nodes.v));
+      if (rotation_[k]) nodes.omega.set(t.slave, tie_point_value(t, nodes.omega));
+    }
+    slave_ = slave;
+    master_total_ = master;
+  }
+
+  void follow_positions(NodalFields& nodes) override {
+    for (const TiePoint& t : links_) nodes.x.set(t.slave, tie_point_value(t, nodes.x) + t.offset);
+  }
+
+  std::span<const Index> dictated_nodes() const override { return slaves_; }
+  std::span<const Index> tie_master_nodes() const override { return masters_; }
+  Vec3 slave_force() const override { return slave_; }
+  Vec3 master_force() const override { return master_total_; }
+
+  /// The tied slaves' master points (after initialize).
+  const std::vector<TiePoint>& links() const { return links_; }
+  /// Slave nodes that projected outside every master segment and were left free.
+  const std::vector<Index>& untied_nodes() const { return untied_nodes_; }
+  const Surface& master_surface() const { return master_; }
+
+ private:
+  std::string name_;
+  std::vector<Index> candidates_;
+  Surface master_;
+  bool require_rotations_ = false;
+  TieSearchOptions options_;
+  std::vector<TiePoint> links_;
+  std::vector<Index> untied_nodes_, slaves_, masters_;
+  std::vector<std::uint8_t> rotation_;
+  std::vector<Vec3> force_;   ///< total force on each slave at the last condensation
+  std::vector<Real> mass_;    ///< effective mass of each slave at the last condensation
+  Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
+};
+
+}  // namespace slideline

@@ -1,0 +1,217 @@
+// TiebreakContact (DYNA3D Types 8 and 9): penalty ties with failure, then frictional penalty
+// contact. See include/slideline/contact/tiebreak_contact.hpp for the formulation.
+#include "slideline/contact/tiebreak_contact.hpp"
+
+#include <cstdio>
+
+#include "slideline/element/element_block.hpp"
+
+namespace slideline {
+
+namespace {
+
+/// Stiffness per unit master area of segment s (force / length^3), penalty-contact style.
+Real stiffness_per_area(const Surface& master, Index s, const ContactContext& c, Real factor) {
+  const SegmentStiffnessData d = segment_stiffness_data(master, s, c.blocks, c.nodes.x);
+  if (master.kind[s] == SegmentKind::shell)
+    return d.max_diagonal > 0.0 ? factor * d.bulk_modulus / d.max_diagonal : 0.0;
+  return d.element_volume > 0.0 ? factor * d.bulk_modulus * d.face_area / d.element_volume : 0.0;
+}
+
+}  // namespace
+
+void TiebreakContact::initialize(const ContactContext& c) {
+  const NodalFields& nodes = c.nodes;
+  std::vector<std::uint8_t> is_master(nodes.size(), 0);
+  for (Index m : master_.conn) is_master[m] = 1;
+  std::vector<Index> slaves;
+  for (Index s : candidates_)
+    if (!is_master[s]) slaves.push_back(s);
+  links_.clear();
+  untied_nodes_.clear();
+  for (const TiePoint& t : find_tie_points(slaves, master_, nodes.x)) {
+    if (t.segment >= 0) links_.push_back(t);
+    else untied_nodes_.push_back(t.slave);
+  }
+  if (!untied_nodes_.empty()) {
+    std::string ids;
+    for (std::size_t k = 0; k < untied_nodes_.size() && k < 10; ++k)
+      ids += (k ? ", " : "") + std::to_string(nodes.ids[untied_nodes_[k]]);
+    std::fprintf(stderr, "contact %s: %zu slave node(s) project outside every master segment and are left free "
+                 "(first ids: %s)\n", name_.c_str(), untied_nodes_.size(), ids.c_str());
+  }
+  const std::size_t n = links_.size();
+  std::vector<Index> link_of(nodes.size(), -1);
+  for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);
+
+  kappa_.assign(n, 0.0);
+  area_.assign(n, 0.0);
+  side_.assign(n, 1.0);
+  std::vector<Vec3> slave_side(n, Vec3::Zero());  // sum of the slave segments' outward normals
+  for (std::size_t k = 0; k < n; ++k) kappa_[k] = stiffness_per_area(master_, links_[k].segment, c, p_.penalty_factor);
+
+  const bool by_segment = p_.unit == TiebreakParameters::FailureUnit::segment;
+  const Index nseg = by_segment ? slave_surface_.segment_count() : 0;
+  segment_links_.assign(4 * static_cast<std::size_t>(nseg), -1);
+  segment_area_.assign(nseg, 0.0);
+  segment_share_.assign(nseg, 0.0);
+  segment_failed_.assign(nseg, 0);
+  segment_force_.assign(nseg, Vec3::Zero());
+  if (by_segment) {
+    for (Index j = 0; j < nseg; ++j) {
+      const Real a = segment_area(slave_surface_, j, nodes.x);
+      const bool tri = slave_surface_.is_triangle(j);
+      segment_area_[j] = a;
+      segment_share_[j] = a / (tri ? 3.0 : 4.0);
+      const Vec3 nj = segment_normal(slave_surface_, j, nodes.x);
+      // Only segments whose corners are all tied carry a tie (a side face of a slave block, with
+      // one edge on the interface, does not).
+      bool tied = true;
+      for (int q = 0; q < (tri ? 3 : 4); ++q) tied = tied && link_of[slave_surface_.conn[4 * static_cast<std::size_t>(j) + q]] >= 0;
+      if (!tied) {
+        segment_failed_[j] = 1;  // never evaluated
+        continue;
+      }
+      for (int q = 0; q < (tri ? 3 : 4); ++q) {
+        const Index l = link_of[slave_surface_.conn[4 * static_cast<std::size_t>(j) + q]];
+        segment_links_[4 * static_cast<std::size_t>(j) + q] = l;
+        if (l < 0) continue;
+        area_[l] += segment_share_[j];
+        slave_side[l] += nj;
+      }
+    }
+  } else {
+    for (std::size_t k = 0; k < n; ++k) area_[k] = segment_area(master_, links_[k].segment, nodes.x);
+  }
+  // The master normal oriented towards the slave: from the tie-time gap when the slave stands off
+  // the surface, else against the slave segments' outward normal, else the master's own normal.
+  for (std::size_t k = 0; k < n; ++k) {
+    const TiePoint& t = links_[k];
+    if (std::abs(t.gap) > 1e-6 * t.size) side_[k] = t.gap > 0.0 ? 1.0 : -1.0;
+    else if (slave_side[k].squaredNorm() > 0.0) side_[k] = slave_side[k].dot(t.normal) > 0.0 ? -1.0 : 1.0;
+  }
+  area0_ = area_;
+  released_.assign(n, 0);
+  delta_.assign(n, Vec3::Zero());
+  track_.assign(n, -1);
+  friction_force_.assign(n, Vec3::Zero());
+  for (std::size_t k = 0; k < n; ++k) track_[k] = links_[k].segment;
+  friction_work_ = 0.0;
+  slave_ = master_total_ = Vec3::Zero();
+  // Stable step of each spring between the slave mass and its lightest master (2 / omega).
+  dt_ = std::numeric_limits<Real>::max();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Real kk = kappa_[k] * area_[k];
+    if (!(kk > 0.0)) continue;
+    Real mm = std::numeric_limits<Real>::max();
+    for (int a = 0; a < 4; ++a)
+      if (links_[k].shape[a] != 0.0 && nodes.mass[links_[k].master[a]] > 0.0)
+        mm = std::min(mm, nodes.mass[links_[k].master[a]]);
+    const Real ms = nodes.mass[links_[k].slave];
+    const Real w2 = kk * ((ms > 0.0 ? 1.0 / ms : 0.0) + (mm < std::numeric_limits<Real>::max() ? 1.0 / mm : 0.0));
+    if (w2 > 0.0) dt_ = std::min(dt_, 2.0 / std::sqrt(w2));
+  }
+}
+
+void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
+  Vec3 slave = Vec3::Zero();
+  const std::size_t n = links_.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const TiePoint& t = links_[k];
+    if (released_[k]) {
+      const Vec3 before = out.force.get(t.slave);
+      contact_after_failure(k, nodes, times, out);
+      slave += out.force.get(t.slave) - before;
+      continue;
+    }
+    const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
+    delta_[k] = d;
+    const Vec3 f = -(kappa_[k] * area_[k]) * d;
+    out.force.add(t.slave, f);
+    for (int a = 0; a < 4; ++a)
+      if (t.shape[a] != 0.0) out.force.add(t.master[a], -t.shape[a] * f);
+    slave += f;
+  }
+  slave_ = slave;
+  master_total_ = -slave;  // every slave force is spread with shape functions that sum to 1
+
+  // Failure checks on this cycle's forces (effective from the next cycle).
+  if (p_.unit == TiebreakParameters::FailureUnit::node) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (released_[k]) continue;
+      const Vec3 f = -(kappa_[k] * area_[k]) * delta_[k];
+      if (failure_index(f, oriented_normal(k, nodes.x), p_.normal_failure, p_.shear_failure, p_.normal_exponent,
+                        p_.shear_exponent) >= 1.0)
+        released_[k] = 1;
+    }
+    return;
+  }
+  const Index nseg = slave_surface_.segment_count();
+  for (Index j = 0; j < nseg; ++j) {
+    if (segment_failed_[j]) continue;
+    Vec3 fj = Vec3::Zero(), nj = Vec3::Zero();
+    for (int q = 0; q < 4; ++q) {
+      const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
+      if (l < 0) continue;
+      fj -= kappa_[l] * segment_share_[j] * delta_[l];
+      nj += oriented_normal(static_cast<std::size_t>(l), nodes.x);
+    }
+    segment_force_[j] = fj;
+    const Real nn = nj.norm();
+    if (!(nn > 0.0)) continue;
+    const Real a = segment_area_[j];
+    if (failure_index(fj, nj / nn, p_.normal_failure * a, p_.shear_failure * a, 2.0, 2.0) < 1.0) continue;
+    segment_failed_[j] = 1;
+    segment_force_[j] = Vec3::Zero();
+    for (int q = 0; q < 4; ++q) {
+      const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
+      if (l < 0) continue;
+      area_[l] -= segment_share_[j];
+      if (area_[l] <= 1e-12 * area0_[l]) area_[l] = 0.0, released_[l] = 1;
+    }
+  }
+}
+
+void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times,
+                                            ContactForceView out) {
+  const TiePoint& t = links_[k];
+  const Vec3 p = nodes.x.get(t.slave);
+  // Track the segment: stay on the current one while the point projects inside it, else take the
+  // best of it and its edge neighbours (ascending order, is_better_projection's tie rule).
+  Index best_s = track_[k];
+  Projection best = project_point_to_segment(p, master_, best_s, nodes.x);
+  if (!best.interior() && master_.segment_neighbors.rows() > best_s) {
+    const Index s0 = best_s;
+    for (Index r = master_.segment_neighbors.begin(s0); r < master_.segment_neighbors.end(s0); ++r) {
+      const Index s = master_.segment_neighbors.value[r];
+      const Projection pr = project_point_to_segment(p, master_, s, nodes.x);
+      if (is_better_projection(pr, s, best, best_s)) best = pr, best_s = s;
+    }
+  }
+  track_[k] = best_s;
+  const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
+  const Real side = side_[k];
+  const Real gap = side * best.gap - side * t.gap;  // penetration past the tie-time stand-off
+  // The tie spring's stiffness at tie time: continuous through the release (no kick).
+  const Real kk = kappa_[k] * area0_[k];
+  if (gap >= 0.0 || tangential > 1e-3 * best.size) {
+    friction_force_[k] = Vec3::Zero();
+    return;
+  }
+  const Vec3 n = side * best.normal;
+  const Real fn = -kk * gap;  // > 0, pushes the slave out along n
+  const Index* m = &master_.conn[4 * static_cast<std::size_t>(best_s)];
+  Vec3 vm = Vec3::Zero();
+  for (int a = 0; a < 4; ++a) vm += best.shape[a] * nodes.v.get(m[a]);
+  const Vec3 vt = tangential_part(nodes.v.get(t.slave) - vm, n);
+  const Vec3 trial = rotate_into_plane(friction_force_[k], n) - kk * times.dt_prev * vt;
+  const TangentialReturn r = coulomb_return_map(trial, fn, p_.friction.coefficient(vt));
+  if (r.slipping) friction_work_ += (trial.norm() - r.force.norm()) / kk * r.force.norm();
+  friction_force_[k] = r.force;
+  const Vec3 f = fn * n + r.force;
+  out.force.add(t.slave, f);
+  for (int a = 0; a < 4; ++a)
+    if (best.shape[a] != 0.0) out.force.add(m[a], -best.shape[a] * f);
+}
+
+}  // namespace slideline
