@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -242,8 +243,9 @@ class LagrangeContact final : public ContactAlgorithm {
     } else if (side_[i] == 0 || std::abs(pr.gap) >= target) {
       side_[i] = pr.gap >= 0.0 ? 1 : -1;
     }
-    const Vec3 n = static_cast<Real>(side_[i]) * pr.normal;
-    const Real gap = static_cast<Real>(side_[i]) * pr.gap - target;
+    const Vec3 nseg = segment_normal(seg, x);
+    const Vec3 n = static_cast<Real>(side_[i]) * nseg;
+    const Real gap = static_cast<Real>(side_[i]) * (x.get(slave) - pr.point).dot(nseg) - target;
     const Vec3 d = x.get(slave) - pr.point;
     if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
     if (gap < -0.5 * pr.size) return false;                                // far behind it
@@ -266,12 +268,19 @@ class LagrangeContact final : public ContactAlgorithm {
     k.tau = k.mu > 0.0 ? rotate_into_plane(tau_[i], n) : Vec3::Zero();
     const Real limit = k.mu * std::max(k.lambda, Real(0));
     if (k.tau.norm() > limit) k.tau *= limit / k.tau.norm();
+    if (std::getenv("SL_DEBUG_GAP")) debug_gap_ = std::min(debug_gap_, gap);
     constraints_.push_back(k);
     owner_.push_back(static_cast<Index>(i));
     return true;
   }
 
+  Vec3 segment_normal(Index seg, const Vec3Field& x) const {
+    const auto c = segment_corners(master_, seg, x);
+    return (c[2] - c[0]).cross(c[3] - c[1]).normalized();
+  }
+
   void record(const LagrangeSolveResult& r) {
+    if (std::getenv("SL_DEBUG_GAP") && times_debug_++ % 100 == 0) std::fprintf(stderr, "%s min gap %.3e sweeps %d corr %.2e n %zu\n", s_.title.c_str(), debug_gap_, r.sweeps, r.correction, constraints_.size());
     ++stats_.solves;
     stats_.sweeps += r.sweeps;
     stats_.max_sweeps = std::max(stats_.max_sweeps, r.sweeps);
@@ -332,6 +341,10 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<Index> owner_;
   Vec3 slave_force_ = Vec3::Zero(), master_force_ = Vec3::Zero(), transmitted_ = Vec3::Zero();
   Real friction_work_ = 0.0;
+ public:
+  Real debug_gap_ = 0.0;
+  long times_debug_ = 0;
+ private:
   LagrangeSolveStats stats_;
 };
 
