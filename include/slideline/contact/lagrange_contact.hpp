@@ -25,7 +25,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -37,6 +36,7 @@
 #include "slideline/contact/search/fcl_broad_phase.hpp"
 #include "slideline/contact/search/narrow_phase.hpp"
 #include "slideline/contact/search/search_cadence.hpp"
+#include "slideline/mesh/mesh_sets.hpp"
 
 namespace slideline {
 
@@ -140,6 +140,7 @@ class LagrangeContact final : public ContactAlgorithm {
     owner_.clear();
     owner_.reserve(ns);
     candidates_.reserve(4 * ns);
+    setup_rigid_groups(c);
     in_first_.assign(c.nodes.size(), 0);
     for (Index n : first_part_nodes_) in_first_[static_cast<std::size_t>(n)] = 1;
   }
@@ -160,7 +161,9 @@ class LagrangeContact final : public ContactAlgorithm {
     }
     LagrangeSolveOptions opt = s_.solve;
     opt.tolerance = tolerance_;
-    const LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt);
+    update_rigid_groups(view, times);
+    const LagrangeSolveResult r =
+        solve_forward_increment(constraints_, view, times, opt, group_mass_.empty() ? nullptr : &groups_);
     record(r);
     finish(view, times);
   }
@@ -179,6 +182,9 @@ class LagrangeContact final : public ContactAlgorithm {
   }
 
   const LagrangeSolveStats& solve_stats() const { return stats_; }
+  /// Largest penetration (length) of a constrained slave at x^n over the run: -gap for contact,
+  /// |gap| for a bilateral (Type 1) constraint. It is what the previous cycle's solve left.
+  Real max_penetration() const { return max_penetration_; }
   /// The constraints of the last cycle (for tests and diagnostics).
   std::span<const LagrangeConstraint> constraints() const { return constraints_; }
   const LagrangeContactSettings& settings() const { return s_; }
@@ -268,10 +274,65 @@ class LagrangeContact final : public ContactAlgorithm {
     k.tau = k.mu > 0.0 ? rotate_into_plane(tau_[i], n) : Vec3::Zero();
     const Real limit = k.mu * std::max(k.lambda, Real(0));
     if (k.tau.norm() > limit) k.tau *= limit / k.tau.norm();
-    if (std::getenv("SL_DEBUG_GAP")) debug_gap_ = std::min(debug_gap_, gap);
+    if (!s_.bilateral) max_penetration_ = std::max(max_penetration_, -gap);
+    else max_penetration_ = std::max(max_penetration_, std::abs(gap));
     constraints_.push_back(k);
     owner_.push_back(static_cast<Index>(i));
     return true;
+  }
+
+  /// One group per rigid part on the master side: its nodes are the part's nodes (from the
+  /// context's sets when given, else the part's master-surface nodes).
+  void setup_rigid_groups(const ContactContext& c) {
+    group_of_.clear();
+    group_nodes_.clear();
+    group_mass_.clear();
+    if (c.rigid.empty()) return;
+    std::vector<Id> parts;
+    for (Index s = 0; s < master_.segment_count(); ++s) {
+      const Index* n = &master_.conn[4 * static_cast<std::size_t>(s)];
+      if (!c.rigid[static_cast<std::size_t>(n[0])]) continue;
+      const Id pid = master_.part[static_cast<std::size_t>(s)];
+      if (std::find(parts.begin(), parts.end(), pid) == parts.end()) parts.push_back(pid);
+    }
+    if (parts.empty()) return;
+    group_of_.assign(c.nodes.size(), -1);
+    for (std::size_t g = 0; g < parts.size(); ++g) {
+      std::vector<Index> nodes;
+      const auto f = c.sets ? c.sets->part_nodes.find(parts[g]) : decltype(c.sets->part_nodes.end()){};
+      if (c.sets && f != c.sets->part_nodes.end()) {
+        nodes = f->second;
+      } else {
+        for (Index s = 0; s < master_.segment_count(); ++s)
+          if (master_.part[static_cast<std::size_t>(s)] == parts[g])
+            for (int k = 0; k < 4; ++k) nodes.push_back(master_.conn[4 * static_cast<std::size_t>(s) + k]);
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      }
+      for (Index n : nodes)
+        if (c.rigid[static_cast<std::size_t>(n)] && group_of_[static_cast<std::size_t>(n)] < 0)
+          group_of_[static_cast<std::size_t>(n)] = static_cast<Index>(g);
+      group_nodes_.push_back(std::move(nodes));
+    }
+    group_mass_.assign(parts.size(), 0.0);
+    group_compliance_.assign(parts.size(), Vec3::Zero());
+    group_force_.assign(parts.size(), Vec3::Zero());
+    groups_ = {group_of_, group_compliance_, group_force_};
+  }
+
+  void update_rigid_groups(const ConstraintView& view, const StepTimes& times) {
+    for (std::size_t g = 0; g < group_mass_.size(); ++g) {
+      Real m = 0.0, h = 0.0;
+      std::array<bool, 3> fixed{false, false, false};
+      for (Index n : group_nodes_[g]) {
+        if (group_of_[static_cast<std::size_t>(n)] != static_cast<Index>(g)) continue;
+        m += view.nodes.mass[static_cast<std::size_t>(n)];
+        h = 0.5 * view.damping[static_cast<std::size_t>(n)] * times.dt_avg;
+        for (int c = 0; c < 3; ++c) fixed[c] = fixed[c] || view.fixed[c][static_cast<std::size_t>(n)];
+      }
+      const Real cg = m > 0.0 ? times.dt_next * times.dt_avg / ((1.0 + h) * m) : 0.0;
+      group_compliance_[g] = {fixed[0] ? 0.0 : cg, fixed[1] ? 0.0 : cg, fixed[2] ? 0.0 : cg};
+    }
   }
 
   Vec3 segment_normal(Index seg, const Vec3Field& x) const {
@@ -280,7 +341,6 @@ class LagrangeContact final : public ContactAlgorithm {
   }
 
   void record(const LagrangeSolveResult& r) {
-    if (std::getenv("SL_DEBUG_GAP") && times_debug_++ % 100 == 0) std::fprintf(stderr, "%s min gap %.3e sweeps %d corr %.2e n %zu\n", s_.title.c_str(), debug_gap_, r.sweeps, r.correction, constraints_.size());
     ++stats_.solves;
     stats_.sweeps += r.sweeps;
     stats_.max_sweeps = std::max(stats_.max_sweeps, r.sweeps);
@@ -341,11 +401,13 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<Index> owner_;
   Vec3 slave_force_ = Vec3::Zero(), master_force_ = Vec3::Zero(), transmitted_ = Vec3::Zero();
   Real friction_work_ = 0.0;
- public:
-  Real debug_gap_ = 0.0;
-  long times_debug_ = 0;
- private:
+  Real max_penetration_ = 0.0;
   LagrangeSolveStats stats_;
+  std::vector<Index> group_of_;
+  std::vector<std::vector<Index>> group_nodes_;
+  std::vector<Real> group_mass_;
+  std::vector<Vec3> group_compliance_, group_force_;
+  RigidGroups groups_;
 };
 
 }  // namespace slideline

@@ -25,6 +25,15 @@
 /// set lambda and tau (e.g. the previous step's); they are applied before the first sweep.
 /// Convergence: a sweep in which no block moves a predicted position by more than `tolerance`
 /// (length). No allocation.
+///
+/// Rigid bodies: ConstraintView makes rigid nodes immovable, and the simulation moves the rigid
+/// bodies with the contact load only after the solve. Against a light rigid master that lag makes
+/// the contact chatter (the master moves away, the slave falls, the master is hit again: forces
+/// alternating between 0 and twice the load). With `RigidGroups` the solve moves each rigid body
+/// as ONE translating mass (its total mass; components where any of its nodes is fixed stay
+/// immovable): a force df on a node of group g moves every node of g by c_g df,
+/// c_g = dt_next dt_avg / ((1 + h) M_g). Rotations of the rigid body are left to the simulation's
+/// update after the solve (a second-order lag for off-centre loads).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -60,12 +69,24 @@ struct LagrangeSolveResult {
   bool converged = true;
 };
 
+/// Rigid bodies taking part in a solve as translating masses (see the file comment).
+struct RigidGroups {
+  std::span<const Index> group;    ///< per node (global index): group, or -1
+  std::span<const Vec3> compliance;  ///< per group: c_g per component (length / force; 0 = immovable)
+  std::span<Vec3> force;             ///< per group: force accumulated by the solve (scratch)
+};
+
 namespace detail {
 
 /// The compliance and prediction of the nodes as ConstraintView describes them.
 struct Predictor {
   ConstraintView& view;
   Real dt_next, dt_avg;
+  const RigidGroups* rigid = nullptr;
+
+  Index group(Index i) const {
+    return rigid && !rigid->group.empty() ? rigid->group[static_cast<std::size_t>(i)] : Index(-1);
+  }
 
   Real h(Index i) const { return 0.5 * view.damping[static_cast<std::size_t>(i)] * dt_avg; }
   bool movable(Index i, int c) const {
@@ -79,11 +100,15 @@ struct Predictor {
   /// x^{n+1} - x^n (length).
   Vec3 increment(Index i) const {
     const Real hi = h(i);
-    return dt_next * ((1.0 - hi) * view.nodes.v.get(i) + dt_avg * view.a.get(i)) / (1.0 + hi);
+    Vec3 d = dt_next * ((1.0 - hi) * view.nodes.v.get(i) + dt_avg * view.a.get(i)) / (1.0 + hi);
+    if (const Index g = group(i); g >= 0)
+      d += rigid->compliance[static_cast<std::size_t>(g)].cwiseProduct(rigid->force[static_cast<std::size_t>(g)]);
+    return d;
   }
   void apply(Index i, const Vec3& df) const {
     view.f_contact.add(i, df);
     view.force.add(i, df);
+    if (const Index g = group(i); g >= 0) rigid->force[static_cast<std::size_t>(g)] += df;
     const Real m = view.mass[static_cast<std::size_t>(i)];
     for (int c = 0; c < 3; ++c)
       if (movable(i, c)) view.a[c][static_cast<std::size_t>(i)] += df[c] / m;
@@ -111,6 +136,27 @@ struct Predictor {
     Vec3 c = compliance(k.slave);
     for (int a = 0; a < 4; ++a)
       if (k.shape[a] != 0.0) c += k.shape[a] * k.shape[a] * compliance(k.master[a]);
+    if (rigid == nullptr || rigid->group.empty()) return c;
+    // A rigid group moves as one: its share is (sum of the weights on its nodes)^2 c_g, the
+    // slave counting +1 and the masters -N_a.
+    std::array<Index, 5> gs{};
+    std::array<Real, 5> ws{};
+    int ng = 0;
+    const auto add = [&](Index node, Real w) {
+      const Index g = group(node);
+      if (g < 0) return;
+      for (int j = 0; j < ng; ++j)
+        if (gs[j] == g) {
+          ws[j] += w;
+          return;
+        }
+      gs[ng] = g;
+      ws[ng++] = w;
+    };
+    add(k.slave, 1.0);
+    for (int a = 0; a < 4; ++a)
+      if (k.shape[a] != 0.0) add(k.master[a], -k.shape[a]);
+    for (int j = 0; j < ng; ++j) c += ws[j] * ws[j] * rigid->compliance[static_cast<std::size_t>(gs[j])];
     return c;
   }
 };
@@ -127,8 +173,11 @@ inline void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
 /// forces of the nodes involved). On entry lambda and tau hold the warm start (0 for none); on
 /// exit the converged multipliers and `slip`. Returns the sweep count and the last correction.
 inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint> cs, ConstraintView view,
-                                                   const StepTimes& times, const LagrangeSolveOptions& opt = {}) {
-  const detail::Predictor p{view, times.dt_next, times.dt_avg};
+                                                   const StepTimes& times, const LagrangeSolveOptions& opt = {},
+                                                   const RigidGroups* rigid = nullptr) {
+  if (rigid)
+    for (Vec3& f : rigid->force) f.setZero();
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
   LagrangeSolveResult result;
   for (auto& k : cs) {
     if (!k.bilateral) k.lambda = std::max(k.lambda, Real(0));
