@@ -1,5 +1,7 @@
 // Types 3, 5, 10 and 12 with Lagrange-multiplier enforcement (the _LAGRANGE keyword suffix):
 // the card's sides and options become a LagrangeContact (contact/lagrange_contact.hpp).
+#include <variant>
+
 #include "slideline/contact/lagrange_contact.hpp"
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/core/error.hpp"
@@ -17,6 +19,20 @@ ExponentialCoulomb friction_of(const model::Contact& card) {
   f.mu_k = card.fd > 0.0 ? card.fd : card.fs;  // FD = 0: constant coefficient FS
   f.beta = card.dc;
   return f;
+}
+
+/// Translations held by the *MAT_RIGID constraints (CMO = +1, CON1 coded as in LS-DYNA: 1 x,
+/// 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 xyz) of every rigid part; the builder has validated the codes.
+std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations(const model::Model& model) {
+  static constexpr std::array<std::array<int, 3>, 8> codes{
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}}};
+  std::vector<std::pair<Id, std::array<int, 3>>> out;
+  for (const auto& part : model.parts)
+    for (const auto& mat : model.materials)
+      if (const auto* r = std::get_if<model::MatRigid>(&mat); r && r->mid == part.mid && r->cmo == 1.0 &&
+                                                             r->con1 >= 0 && r->con1 <= 7)
+        out.emplace_back(part.pid, codes[static_cast<std::size_t>(r->con1)]);
+  return out;
 }
 
 }  // namespace
@@ -50,6 +66,7 @@ std::unique_ptr<ContactAlgorithm> make_lagrange_contact(const model::Contact& ca
   // Node-set slaves (Type 5) stand off by the nodal radius, else half the SST thickness.
   if (slave.surface.nodes.empty()) s.nodal_radius = card.radius > 0.0 ? card.radius : 0.5 * card.sst;
   s.skip_incident = automatic;
+  s.rigid_fixed_translations = rigid_fixed_translations(ctx.model);
   s.transmitted_output = automatic;
   s.birth = card.bt;
   s.death = card.dt;

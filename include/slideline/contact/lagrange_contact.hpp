@@ -28,6 +28,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slideline/contact/contact_algorithm.hpp"
@@ -53,6 +54,9 @@ struct LagrangeContactSettings {
   bool transmitted_output = false;  ///< write interfaces/<title>/transmitted_force
   Real birth = 0.0, death = 1e20;   ///< active for birth <= t <= death
   LagrangeSolveOptions solve;       ///< tolerance relative to the smallest master segment size
+  /// Translations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON1), by part id: the
+  /// solve keeps the body immovable in them. Rigid parts not listed translate freely.
+  std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations;
 };
 
 /// Totals of the Gauss-Seidel solves of a run.
@@ -314,6 +318,10 @@ class LagrangeContact final : public ContactAlgorithm {
           group_of_[static_cast<std::size_t>(n)] = static_cast<Index>(g);
       group_nodes_.push_back(std::move(nodes));
     }
+    group_held_.assign(parts.size(), {0, 0, 0});
+    for (std::size_t g = 0; g < parts.size(); ++g)
+      for (const auto& [pid, held] : s_.rigid_fixed_translations)
+        if (pid == parts[g]) group_held_[g] = held;
     group_mass_.assign(parts.size(), 0.0);
     group_compliance_.assign(parts.size(), Vec3::Zero());
     group_force_.assign(parts.size(), Vec3::Zero());
@@ -323,7 +331,7 @@ class LagrangeContact final : public ContactAlgorithm {
   void update_rigid_groups(const ConstraintView& view, const StepTimes& times) {
     for (std::size_t g = 0; g < group_mass_.size(); ++g) {
       Real m = 0.0, h = 0.0;
-      std::array<bool, 3> fixed{false, false, false};
+      std::array<bool, 3> fixed{group_held_[g][0] != 0, group_held_[g][1] != 0, group_held_[g][2] != 0};
       for (Index n : group_nodes_[g]) {
         if (group_of_[static_cast<std::size_t>(n)] != static_cast<Index>(g)) continue;
         m += view.nodes.mass[static_cast<std::size_t>(n)];
@@ -406,6 +414,7 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<Index> group_of_;
   std::vector<std::vector<Index>> group_nodes_;
   std::vector<Real> group_mass_;
+  std::vector<std::array<int, 3>> group_held_;
   std::vector<Vec3> group_compliance_, group_force_;
   RigidGroups groups_;
 };
