@@ -54,6 +54,11 @@ struct LagrangeContactSettings {
   bool transmitted_output = false;  ///< write interfaces/<title>/transmitted_force
   Real birth = 0.0, death = 1e20;   ///< active for birth <= t <= death
   LagrangeSolveOptions solve;       ///< tolerance relative to the smallest master segment size
+  /// Solves per cycle: after the first, each constrained slave is projected again at the
+  /// predicted positions x^{n+1} (its segment, shape functions and normal) and the system solved
+  /// once more, warm-started: the gap then holds on the surface as it will be, also where a
+  /// sliding node crosses onto a segment of another slope within the step.
+  int projection_passes = 2;
   /// Translations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON1), by part id: the
   /// solve keeps the body immovable in them. Rigid parts not listed translate freely.
   std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations;
@@ -145,6 +150,7 @@ class LagrangeContact final : public ContactAlgorithm {
     owner_.reserve(ns);
     candidates_.reserve(4 * ns);
     setup_rigid_groups(c);
+    predicted_.resize(c.nodes.size());
     in_first_.assign(c.nodes.size(), 0);
     for (Index n : first_part_nodes_) in_first_[static_cast<std::size_t>(n)] = 1;
   }
@@ -166,8 +172,15 @@ class LagrangeContact final : public ContactAlgorithm {
     LagrangeSolveOptions opt = s_.solve;
     opt.tolerance = tolerance_;
     update_rigid_groups(view, times);
-    const LagrangeSolveResult r =
-        solve_forward_increment(constraints_, view, times, opt, group_mass_.empty() ? nullptr : &groups_);
+    const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
+    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups);
+    for (int pass = 1; pass < s_.projection_passes; ++pass) {
+      reproject(view, times, groups);
+      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups);
+      r.sweeps += r2.sweeps;
+      r.correction = r2.correction;
+      r.converged = r2.converged;
+    }
     record(r);
     finish(view, times);
   }
@@ -283,6 +296,29 @@ class LagrangeContact final : public ContactAlgorithm {
     constraints_.push_back(k);
     owner_.push_back(static_cast<Index>(i));
     return true;
+  }
+
+  /// Moves every constraint to the closest point of the predicted slave position on the predicted
+  /// master surface (see LagrangeContactSettings::projection_passes), forces withdrawn first.
+  void reproject(const ConstraintView& view, const StepTimes& times, const RigidGroups* groups) {
+    for (Index n : master_.nodes) predicted_.set(n, predicted_position(view, times, groups, n));
+    for (Index n : slaves_) predicted_.set(n, predicted_position(view, times, groups, n));
+    withdraw_constraint_forces(constraints_, view, times, groups);
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+      LagrangeConstraint& c = constraints_[k];
+      const auto i = static_cast<std::size_t>(owner_[k]);
+      const SegmentProjection sp = track_segment(predicted_.get(c.slave), segment_[i], master_, predicted_);
+      const Index seg = sp.segment;
+      const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      if (conn[0] == c.slave || conn[1] == c.slave || conn[2] == c.slave || conn[3] == c.slave) continue;
+      segment_[i] = seg;
+      for (int a = 0; a < 4; ++a) c.master[static_cast<std::size_t>(a)] = conn[a];
+      c.shape = sp.projection.shape;
+      if (master_.is_triangle(seg)) c.shape[3] = 0.0;
+      c.normal = static_cast<Real>(side_[i]) * segment_normal(seg, predicted_);
+      c.target = slave_offset_[i] + master_offset_[static_cast<std::size_t>(seg)];
+      if (c.mu > 0.0) c.tau = rotate_into_plane(c.tau, c.normal);
+    }
   }
 
   /// One group per rigid part on the master side: its nodes are the part's nodes (from the
@@ -417,6 +453,7 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<std::array<int, 3>> group_held_;
   std::vector<Vec3> group_compliance_, group_force_;
   RigidGroups groups_;
+  Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
 };
 
 }  // namespace slideline

@@ -169,6 +169,22 @@ inline void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
 
 }  // namespace detail
 
+/// x^{n+1} of node i as the last solve left it (length): the damped update of ConstraintView
+/// plus, for a node of a rigid group, the group's translation (`rigid` as that solve had it).
+inline Vec3 predicted_position(ConstraintView view, const StepTimes& times, const RigidGroups* rigid, Index i) {
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+  return view.nodes.x.get(i) + p.increment(i);
+}
+
+/// Takes the forces lambda n + tau of `cs` out of `view` again (before the geometry of the
+/// constraints is changed and they are solved once more).
+inline void withdraw_constraint_forces(std::span<const LagrangeConstraint> cs, ConstraintView view,
+                                       const StepTimes& times, const RigidGroups* rigid = nullptr) {
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+  for (const auto& k : cs)
+    if (k.lambda != 0.0 || k.tau.squaredNorm() > 0.0) p.apply(k, -(k.lambda * k.normal + k.tau));
+}
+
 /// Solves the constraints `cs` at the step `times` into `view` (accelerations, total and contact
 /// forces of the nodes involved). On entry lambda and tau hold the warm start (0 for none); on
 /// exit the converged multipliers and `slip`. Returns the sweep count and the last correction.
