@@ -1,0 +1,257 @@
+#pragma once
+/// Forward-increment Lagrange multipliers (Carpenter, Taylor and Katona, IJNME 1991; Zywicz and
+/// Puso, IJNME 1999): the multipliers at t^n make the constraints hold at the PREDICTED positions
+/// x^{n+1}. The prediction is the simulation's damped central-difference update
+/// (contact_algorithm.hpp, ConstraintView):
+///   dx_i = x_i^{n+1} - x_i^n = dt_next ((1 - h_i) v_i^{n-1/2} + dt_avg a_i) / (1 + h_i),
+///   h_i = damping_i dt_avg / 2,
+/// so a force df on a movable component changes dx by c_i df with the compliance
+///   c_i = dt_next dt_avg / ((1 + h_i) m_i)   (length / force; 0 for fixed or rigid components).
+///
+/// One constraint joins a slave node s to the point sum_a N_a x_a of a master segment, with unit
+/// normal n (towards the slave) and target gap g0 (offsets: shell half thicknesses, nodal radius):
+///   normal:      g = n . (x_s - sum N_a x_a)^{n+1} - g0 >= 0, lambda >= 0, lambda g = 0
+///                (bilateral: g = 0, lambda free: Type 1 sliding only);
+///   tangential:  stick  P_t (dx_s - sum N_a dx_a) = 0 while |tau| <= mu lambda, else slip with
+///                |tau| = mu lambda (Coulomb; mu set per constraint by the caller).
+/// The force on the slave is lambda n + tau, on master node a -N_a (lambda n + tau): the slave and
+/// master totals are equal and opposite to round-off.
+///
+/// The coupled system (the constraints share master nodes, and in single-surface contact a node
+/// may be slave and master at once) is solved by projected Gauss-Seidel over the constraints in
+/// their given order: exact diagonal blocks (1 x 1 normal, 2 x 2 tangential from the component
+/// compliances), projection on lambda >= 0 and on the friction disc after each block. The sweep
+/// order is fixed, so the result does not depend on the thread count. Warm start: the caller may
+/// set lambda and tau (e.g. the previous step's); they are applied before the first sweep.
+/// Convergence: a sweep in which no block moves a predicted position by more than `tolerance`
+/// (length). No allocation.
+///
+/// Rigid bodies: ConstraintView makes rigid nodes immovable, and the simulation moves the rigid
+/// bodies with the contact load only after the solve. Against a light rigid master that lag makes
+/// the contact chatter (the master moves away, the slave falls, the master is hit again: forces
+/// alternating between 0 and twice the load). With `RigidGroups` the solve moves each rigid body
+/// as ONE translating mass (its total mass; components where any of its nodes is fixed stay
+/// immovable): a force df on a node of group g moves every node of g by c_g df,
+/// c_g = dt_next dt_avg / ((1 + h) M_g). Rotations of the rigid body are left to the simulation's
+/// update after the solve (a second-order lag for off-centre loads).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/core/types.hpp"
+
+namespace slideline {
+
+/// One slave-node / master-point constraint and its multipliers.
+struct LagrangeConstraint {
+  Index slave = -1;
+  std::array<Index, 4> master{};   ///< segment nodes (a triangle repeats one with weight 0)
+  std::array<Real, 4> shape{};     ///< master shape functions at the contact point (sum 1)
+  Vec3 normal = Vec3::UnitY();     ///< unit normal towards the slave
+  Real target = 0.0;               ///< gap the constraint keeps (length)
+  Real mu = 0.0;                   ///< Coulomb coefficient this step (0: frictionless)
+  bool bilateral = false;          ///< tension and compression (Type 1)
+  Real lambda = 0.0;               ///< normal force on the slave (force; > 0 compression)
+  Vec3 tau = Vec3::Zero();         ///< tangential (friction) force on the slave (force)
+  Vec3 slip = Vec3::Zero();        ///< after the solve: predicted tangential relative increment (length)
+};
+
+struct LagrangeSolveOptions {
+  Real tolerance = 1e-11;  ///< largest position correction in the last sweep (length)
+  int max_sweeps = 300;
+};
+
+struct LagrangeSolveResult {
+  int sweeps = 0;
+  Real correction = 0.0;  ///< largest position correction of the last sweep (length)
+  bool converged = true;
+};
+
+/// Rigid bodies taking part in a solve as translating masses (see the file comment).
+struct RigidGroups {
+  std::span<const Index> group;    ///< per node (global index): group, or -1
+  std::span<const Vec3> compliance;  ///< per group: c_g per component (length / force; 0 = immovable)
+  std::span<Vec3> force;             ///< per group: force accumulated by the solve (scratch)
+};
+
+namespace detail {
+
+/// The compliance and prediction of the nodes as ConstraintView describes them.
+struct Predictor {
+  ConstraintView& view;
+  Real dt_next, dt_avg;
+  const RigidGroups* rigid = nullptr;
+
+  Index group(Index i) const {
+    return rigid && !rigid->group.empty() ? rigid->group[static_cast<std::size_t>(i)] : Index(-1);
+  }
+
+  Real h(Index i) const { return 0.5 * view.damping[static_cast<std::size_t>(i)] * dt_avg; }
+  bool movable(Index i, int c) const {
+    return !view.rigid[static_cast<std::size_t>(i)] && !view.fixed[c][static_cast<std::size_t>(i)] &&
+           view.mass[static_cast<std::size_t>(i)] > 0.0;
+  }
+  Vec3 compliance(Index i) const {
+    const Real c = dt_next * dt_avg / ((1.0 + h(i)) * view.mass[static_cast<std::size_t>(i)]);
+    return {movable(i, 0) ? c : 0.0, movable(i, 1) ? c : 0.0, movable(i, 2) ? c : 0.0};
+  }
+  /// x^{n+1} - x^n (length).
+  Vec3 increment(Index i) const {
+    const Real hi = h(i);
+    Vec3 d = dt_next * ((1.0 - hi) * view.nodes.v.get(i) + dt_avg * view.a.get(i)) / (1.0 + hi);
+    if (const Index g = group(i); g >= 0)
+      d += rigid->compliance[static_cast<std::size_t>(g)].cwiseProduct(rigid->force[static_cast<std::size_t>(g)]);
+    return d;
+  }
+  void apply(Index i, const Vec3& df) const {
+    view.f_contact.add(i, df);
+    view.force.add(i, df);
+    if (const Index g = group(i); g >= 0) rigid->force[static_cast<std::size_t>(g)] += df;
+    const Real m = view.mass[static_cast<std::size_t>(i)];
+    for (int c = 0; c < 3; ++c)
+      if (movable(i, c)) view.a[c][static_cast<std::size_t>(i)] += df[c] / m;
+  }
+  void apply(const LagrangeConstraint& k, const Vec3& df) const {
+    apply(k.slave, df);
+    for (int a = 0; a < 4; ++a)
+      if (k.shape[a] != 0.0) apply(k.master[a], -k.shape[a] * df);
+  }
+  /// Relative predicted increment of the slave against its master point (length).
+  Vec3 relative_increment(const LagrangeConstraint& k) const {
+    Vec3 r = increment(k.slave);
+    for (int a = 0; a < 4; ++a)
+      if (k.shape[a] != 0.0) r -= k.shape[a] * increment(k.master[a]);
+    return r;
+  }
+  Vec3 relative_position(const LagrangeConstraint& k) const {
+    Vec3 r = view.nodes.x.get(k.slave);
+    for (int a = 0; a < 4; ++a)
+      if (k.shape[a] != 0.0) r -= k.shape[a] * view.nodes.x.get(k.master[a]);
+    return r;
+  }
+  /// Diagonal of the constraint's compliance (per component, length / force).
+  Vec3 pair_compliance(const LagrangeConstraint& k) const {
+    Vec3 c = compliance(k.slave);
+    for (int a = 0; a < 4; ++a)
+      if (k.shape[a] != 0.0) c += k.shape[a] * k.shape[a] * compliance(k.master[a]);
+    if (rigid == nullptr || rigid->group.empty()) return c;
+    // A rigid group moves as one: its share is (sum of the weights on its nodes)^2 c_g, the
+    // slave counting +1 and the masters -N_a.
+    std::array<Index, 5> gs{};
+    std::array<Real, 5> ws{};
+    int ng = 0;
+    const auto add = [&](Index node, Real w) {
+      const Index g = group(node);
+      if (g < 0) return;
+      for (int j = 0; j < ng; ++j)
+        if (gs[j] == g) {
+          ws[j] += w;
+          return;
+        }
+      gs[ng] = g;
+      ws[ng++] = w;
+    };
+    add(k.slave, 1.0);
+    for (int a = 0; a < 4; ++a)
+      if (k.shape[a] != 0.0) add(k.master[a], -k.shape[a]);
+    for (int j = 0; j < ng; ++j) c += ws[j] * ws[j] * rigid->compliance[static_cast<std::size_t>(gs[j])];
+    return c;
+  }
+};
+
+inline void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
+  const Vec3 e = std::abs(n[0]) < 0.6 ? Vec3::UnitX() : (std::abs(n[1]) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
+  t1 = (e - e.dot(n) * n).normalized();
+  t2 = n.cross(t1);
+}
+
+}  // namespace detail
+
+/// x^{n+1} of node i as the last solve left it (length): the damped update of ConstraintView
+/// plus, for a node of a rigid group, the group's translation (`rigid` as that solve had it).
+inline Vec3 predicted_position(ConstraintView view, const StepTimes& times, const RigidGroups* rigid, Index i) {
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+  return view.nodes.x.get(i) + p.increment(i);
+}
+
+/// Takes the forces lambda n + tau of `cs` out of `view` again (before the geometry of the
+/// constraints is changed and they are solved once more).
+inline void withdraw_constraint_forces(std::span<const LagrangeConstraint> cs, ConstraintView view,
+                                       const StepTimes& times, const RigidGroups* rigid = nullptr) {
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+  for (const auto& k : cs)
+    if (k.lambda != 0.0 || k.tau.squaredNorm() > 0.0) p.apply(k, -(k.lambda * k.normal + k.tau));
+}
+
+/// Solves the constraints `cs` at the step `times` into `view` (accelerations, total and contact
+/// forces of the nodes involved). On entry lambda and tau hold the warm start (0 for none); on
+/// exit the converged multipliers and `slip`. Returns the sweep count and the last correction.
+inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint> cs, ConstraintView view,
+                                                   const StepTimes& times, const LagrangeSolveOptions& opt = {},
+                                                   const RigidGroups* rigid = nullptr) {
+  if (rigid)
+    for (Vec3& f : rigid->force) f.setZero();
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+  LagrangeSolveResult result;
+  for (auto& k : cs) {
+    if (!k.bilateral) k.lambda = std::max(k.lambda, Real(0));
+    if (k.mu <= 0.0) k.tau.setZero();
+    if (k.lambda != 0.0 || k.tau.squaredNorm() > 0.0) p.apply(k, k.lambda * k.normal + k.tau);
+  }
+  if (cs.empty()) return result;
+  for (int sweep = 0; sweep < opt.max_sweeps; ++sweep) {
+    Real worst = 0.0;
+    for (auto& k : cs) {
+      const Vec3 c = p.pair_compliance(k);
+      const Vec3& n = k.normal;
+      const Real wn = n[0] * n[0] * c[0] + n[1] * n[1] * c[1] + n[2] * n[2] * c[2];
+      if (!(wn > 0.0)) continue;  // both sides immovable
+      Vec3 r = p.relative_increment(k);
+      const Real g = n.dot(p.relative_position(k) + r) - k.target;
+      Real lambda = k.lambda - g / wn;
+      if (!k.bilateral) lambda = std::max(lambda, Real(0));
+      const Real dl = lambda - k.lambda;
+      if (dl != 0.0) {
+        p.apply(k, dl * n);
+        r += dl * c.cwiseProduct(n);
+        k.lambda = lambda;
+        worst = std::max(worst, std::abs(dl) * wn);
+      }
+      if (k.mu <= 0.0) continue;
+      // Stick: the 2 x 2 block of the compliance in the tangent plane, solved exactly.
+      Vec3 t1, t2;
+      detail::tangent_basis(n, t1, t2);
+      const Real a11 = t1.dot(c.cwiseProduct(t1)), a12 = t1.dot(c.cwiseProduct(t2)), a22 = t2.dot(c.cwiseProduct(t2));
+      const Real det = a11 * a22 - a12 * a12;
+      if (!(det > 0.0)) continue;
+      const Real u1 = t1.dot(r), u2 = t2.dot(r);
+      const Real d1 = -(a22 * u1 - a12 * u2) / det, d2 = -(a11 * u2 - a12 * u1) / det;
+      Vec3 trial = k.tau - k.tau.dot(n) * n + d1 * t1 + d2 * t2;
+      const Real limit = k.mu * std::max(k.lambda, Real(0));
+      const Real tn = trial.norm();
+      if (tn > limit) trial *= (tn > 0.0 ? limit / tn : 0.0);
+      const Vec3 dt = trial - k.tau;
+      if (dt.squaredNorm() > 0.0) {
+        p.apply(k, dt);
+        k.tau = trial;
+        worst = std::max(worst, c.cwiseProduct(dt).norm());
+      }
+    }
+    result.sweeps = sweep + 1;
+    result.correction = worst;
+    if (worst <= opt.tolerance) {
+      result.converged = true;
+      break;
+    }
+    result.converged = false;
+  }
+  for (auto& k : cs) {
+    const Vec3 r = p.relative_increment(k);
+    k.slip = r - r.dot(k.normal) * k.normal;
+  }
+  return result;
+}
+
+}  // namespace slideline

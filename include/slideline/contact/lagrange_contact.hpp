@@ -1,0 +1,459 @@
+#pragma once
+/// LagrangeContact: contact enforced by forward-increment Lagrange multipliers
+/// (enforcement/lagrange.hpp) between slave nodes and a master surface. One final class serves
+///  - Types 3, 5, 10 and 12 with the _LAGRANGE option (unilateral: lambda >= 0, Coulomb friction
+///    with mu = mu_k + (mu_s - mu_k) exp(-beta |v_rel|)), and
+///  - Type 1 sliding only (bilateral normal constraint, no friction): the slave nodes keep their
+///    normal gap to the master surface in tension and compression and slide freely.
+/// They differ only in LagrangeContactSettings (the factories make_lagrange_contact and
+/// make_sliding_only_contact set them from the card).
+///
+/// Per cycle, in enforce() (t^n, accelerations formed, ties, rigid bodies and supports done):
+///  1. pairs: a broad-phase search (FCL tree) when SearchCadence says one is due, else local
+///     tracking from each slave's segment; the nearest segment by closest-point projection at x^n;
+///  2. a constraint for each slave whose projection is over the segment (lateral offset below
+///     2 % of the segment size), not deeper than half the segment size, within the search
+///     allowance of contact, and (for a slave surface) whose node normal opposes the master normal
+///     (n_s . n_m <= -0.5; |n_s . n_m| >= 0.5 for shells): the last rule keeps a block's edge from
+///     catching the nodes of the surface it slides on in single-surface (Type 12) contact;
+///  3. the multipliers, warm-started from the previous cycle, by projected Gauss-Seidel;
+///  4. friction work, forces and the history (multipliers, slip speed) for the next cycle.
+/// The interface imposes no time step. Immovable nodes (fixed components, rigid bodies) take the
+/// master forces into f_contact only; the simulation re-runs the rigid bodies afterwards.
+/// No allocation per cycle (storage is sized in initialize(); the broad phase's candidate list
+/// grows only when a search finds more candidates than any earlier one).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/contact/enforcement/lagrange.hpp"
+#include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/search/fcl_broad_phase.hpp"
+#include "slideline/contact/search/narrow_phase.hpp"
+#include "slideline/contact/search/search_cadence.hpp"
+#include "slideline/mesh/mesh_sets.hpp"
+
+namespace slideline {
+
+struct LagrangeContactSettings {
+  std::string title;
+  bool bilateral = false;         ///< Type 1: tension and compression, no friction
+  ExponentialCoulomb friction;    ///< mu_s = mu_k = 0: frictionless
+  bool shell_offsets = false;     ///< offset shell segments by half their thickness (both sides)
+  Real slave_thickness = 0.0;     ///< SST: overrides the slave shells' thickness (0: elements')
+  Real master_thickness = 0.0;    ///< MST
+  Real slave_thickness_scale = 1.0, master_thickness_scale = 1.0;  ///< SFST, SFMT
+  Real nodal_radius = 0.0;        ///< offset of node-set slaves (Type 5), length
+  bool skip_incident = false;     ///< single surface (Type 12): a node never meets its own segments
+  bool transmitted_output = false;  ///< write interfaces/<title>/transmitted_force
+  Real birth = 0.0, death = 1e20;   ///< active for birth <= t <= death
+  LagrangeSolveOptions solve;       ///< tolerance relative to the smallest master segment size
+  /// Solves per cycle: after the first, each constrained slave is projected again at the
+  /// predicted positions x^{n+1} (its segment, shape functions and normal) and the system solved
+  /// once more, warm-started: the gap then holds on the surface as it will be, also where a
+  /// sliding node crosses onto a segment of another slope within the step.
+  int projection_passes = 2;
+  /// Translations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON1), by part id: the
+  /// solve keeps the body immovable in them. Rigid parts not listed translate freely.
+  std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations;
+};
+
+/// Totals of the Gauss-Seidel solves of a run.
+struct LagrangeSolveStats {
+  long solves = 0;          ///< cycles with at least one constraint
+  long sweeps = 0;          ///< total sweeps
+  int max_sweeps = 0;
+  long unconverged = 0;     ///< cycles that hit the sweep cap
+  long constraints = 0;     ///< constraints summed over the solves
+};
+
+class LagrangeContact final : public ContactAlgorithm {
+ public:
+  /// master: the master surface; slaves: slave node indices; slave_surface: the surface the slaves
+  /// come from (empty for a node set); first_part_nodes: nodes of the first body, for the
+  /// transmitted force (any order).
+  LagrangeContact(LagrangeContactSettings settings, Surface master, std::vector<Index> slaves,
+                  Surface slave_surface, std::vector<Index> first_part_nodes = {})
+      : s_(std::move(settings)), master_(std::move(master)), slave_surface_(std::move(slave_surface)),
+        slaves_(std::move(slaves)), first_part_nodes_(std::move(first_part_nodes)) {
+    std::sort(slaves_.begin(), slaves_.end());
+    slaves_.erase(std::unique(slaves_.begin(), slaves_.end()), slaves_.end());
+  }
+
+  const std::string& name() const override { return s_.title; }
+
+  void initialize(const ContactContext& c) override {
+    const std::size_t ns = slaves_.size();
+    const Index nseg = master_.segment_count();
+    master_offset_.assign(static_cast<std::size_t>(nseg), 0.0);
+    Real min_size = std::numeric_limits<Real>::max(), max_master_offset = 0.0;
+    for (Index s = 0; s < nseg; ++s) {
+      const auto cs = segment_corners(master_, s, c.nodes.x);
+      min_size = std::min(min_size, std::max((cs[2] - cs[0]).norm(), (cs[3] - cs[1]).norm()));
+      if (s_.shell_offsets && master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell) {
+        const Real t = s_.master_thickness > 0.0 ? s_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
+        master_offset_[static_cast<std::size_t>(s)] = 0.5 * t * s_.master_thickness_scale;
+      }
+      max_master_offset = std::max(max_master_offset, master_offset_[static_cast<std::size_t>(s)]);
+    }
+    if (nseg == 0) min_size = 1.0;
+    allowance_ = 0.25 * min_size;
+    tolerance_ = s_.solve.tolerance * min_size;
+    slave_offset_.assign(ns, s_.nodal_radius);
+    slave_row_.assign(ns, -1);
+    slave_shell_.assign(ns, 0);
+    if (!slave_surface_.nodes.empty()) {
+      for (std::size_t i = 0; i < ns; ++i) {
+        const auto it = std::lower_bound(slave_surface_.nodes.begin(), slave_surface_.nodes.end(), slaves_[i]);
+        if (it == slave_surface_.nodes.end() || *it != slaves_[i]) continue;
+        const Index row = static_cast<Index>(it - slave_surface_.nodes.begin());
+        slave_row_[i] = row;
+        Real off = 0.0;
+        for (Index j = slave_surface_.node_segments.begin(row); j < slave_surface_.node_segments.end(row); ++j) {
+          const auto seg = static_cast<std::size_t>(slave_surface_.node_segments.value[static_cast<std::size_t>(j)]);
+          if (slave_surface_.kind[seg] != SegmentKind::shell) continue;
+          slave_shell_[i] = 1;
+          if (!s_.shell_offsets) continue;
+          const Real t = s_.slave_thickness > 0.0 ? s_.slave_thickness : slave_surface_.thickness[seg];
+          off = std::max(off, 0.5 * t * s_.slave_thickness_scale);
+        }
+        slave_offset_[i] = off;
+      }
+    }
+    BroadPhaseOptions bo;
+    bo.margin = allowance_ + max_master_offset;
+    bo.skip_incident = s_.skip_incident;
+    broad_ = std::make_unique<FclBroadPhase>();
+    broad_->build(master_, c.nodes.x, bo);
+    std::vector<Index> watched = slaves_;
+    watched.insert(watched.end(), master_.nodes.begin(), master_.nodes.end());
+    std::sort(watched.begin(), watched.end());
+    watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
+    cadence_ = SearchCadence(watched, allowance_);
+    found_.assign(ns, {});
+    tracked_.assign(ns, {});
+    segment_.assign(ns, -1);
+    side_.assign(ns, 0);
+    lambda_.assign(ns, 0.0);
+    tau_.assign(ns, Vec3::Zero());
+    slip_speed_.assign(ns, 0.0);
+    normal_.assign(ns, Vec3::Zero());
+    constraints_.clear();
+    constraints_.reserve(ns);
+    owner_.clear();
+    owner_.reserve(ns);
+    candidates_.reserve(4 * ns);
+    setup_rigid_groups(c);
+    predicted_.resize(c.nodes.size());
+    in_first_.assign(c.nodes.size(), 0);
+    for (Index n : first_part_nodes_) in_first_[static_cast<std::size_t>(n)] = 1;
+  }
+
+  void enforce(ConstraintView view, const StepTimes& times) override {
+    slave_force_.setZero();
+    master_force_.setZero();
+    transmitted_.setZero();
+    constraints_.clear();
+    owner_.clear();
+    if (times.t < s_.birth || times.t > s_.death || !(times.dt_next > 0.0)) return;
+    find_segments(view.nodes.x);
+    slave_normals(view.nodes.x);
+    form_constraints(view.nodes.x, times);
+    if (constraints_.empty()) {
+      std::fill(slip_speed_.begin(), slip_speed_.end(), 0.0);
+      return;
+    }
+    LagrangeSolveOptions opt = s_.solve;
+    opt.tolerance = tolerance_;
+    update_rigid_groups(view, times);
+    const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
+    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups);
+    for (int pass = 1; pass < s_.projection_passes; ++pass) {
+      reproject(view, times, groups);
+      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups);
+      r.sweeps += r2.sweeps;
+      r.correction = r2.correction;
+      r.converged = r2.converged;
+    }
+    record(r);
+    finish(view, times);
+  }
+
+  Vec3 slave_force() const override { return slave_force_; }
+  Vec3 master_force() const override { return master_force_; }
+  Real friction_work() const override { return friction_work_; }
+  void append_output_names(std::vector<std::string>& names) const override {
+    if (s_.transmitted_output) names.push_back("transmitted_force");
+  }
+  void write_output_values(std::span<Real> out) const override {
+    if (!s_.transmitted_output) return;
+    out[0] = transmitted_[0];
+    out[1] = transmitted_[1];
+    out[2] = transmitted_[2];
+  }
+
+  const LagrangeSolveStats& solve_stats() const { return stats_; }
+  /// Largest penetration (length) of a constrained slave at x^n over the run: -gap for contact,
+  /// |gap| for a bilateral (Type 1) constraint. It is what the previous cycle's solve left.
+  Real max_penetration() const { return max_penetration_; }
+  /// The constraints of the last cycle (for tests and diagnostics).
+  std::span<const LagrangeConstraint> constraints() const { return constraints_; }
+  const LagrangeContactSettings& settings() const { return s_; }
+  std::size_t slave_count() const { return slaves_.size(); }
+
+ private:
+  void find_segments(const Vec3Field& x) {
+    if (cadence_.is_due(x)) {
+      broad_->update(x);
+      broad_->query(slaves_, x, slave_offset_, candidates_);
+      assign_nearest_segments(slaves_, candidates_, master_, x, found_);
+      cadence_.mark_searched(x);
+    } else {
+      track_segments(slaves_, segment_, master_, x, tracked_);
+      std::swap(found_, tracked_);
+    }
+    for (std::size_t i = 0; i < slaves_.size(); ++i) {
+      segment_[i] = found_[i].segment;  // the shell side (side_) is kept across segments
+    }
+  }
+
+  /// Mean normal of each slave node's segments (outward for solid faces), zero for node sets.
+  void slave_normals(const Vec3Field& x) {
+    if (slave_surface_.nodes.empty()) return;
+    for (std::size_t i = 0; i < slaves_.size(); ++i) {
+      const Index row = slave_row_[i];
+      Vec3 n = Vec3::Zero();
+      if (row >= 0) {
+        for (Index j = slave_surface_.node_segments.begin(row); j < slave_surface_.node_segments.end(row); ++j) {
+          const auto c = segment_corners(slave_surface_, slave_surface_.node_segments.value[static_cast<std::size_t>(j)], x);
+          const Vec3 d = (c[2] - c[0]).cross(c[3] - c[1]);
+          if (d.norm() > 0.0) n += d.normalized();
+        }
+      }
+      normal_[i] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
+    }
+  }
+
+  void form_constraints(const Vec3Field& x, const StepTimes& /*times*/) {
+    for (std::size_t i = 0; i < slaves_.size(); ++i) {
+      const SegmentProjection& sp = found_[i];
+      bool formed = false;
+      if (sp.segment >= 0) formed = try_constraint(i, sp, x);
+      if (!formed) {
+        lambda_[i] = 0.0;
+        tau_[i].setZero();
+        slip_speed_[i] = 0.0;
+      }
+    }
+  }
+
+  bool try_constraint(std::size_t i, const SegmentProjection& sp, const Vec3Field& x) {
+    const Index seg = sp.segment;
+    const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
+    const Index slave = slaves_[i];
+    if (conn[0] == slave || conn[1] == slave || conn[2] == slave || conn[3] == slave) return false;
+    const Projection& pr = sp.projection;
+    const bool shell = master_.kind[static_cast<std::size_t>(seg)] == SegmentKind::shell;
+    const Real target = slave_offset_[i] + master_offset_[static_cast<std::size_t>(seg)];
+    if (!shell) {
+      side_[i] = 1;
+    } else if (side_[i] == 0 || std::abs(pr.gap) >= target) {
+      side_[i] = pr.gap >= 0.0 ? 1 : -1;
+    }
+    const Vec3 nseg = segment_normal(seg, x);
+    const Vec3 n = static_cast<Real>(side_[i]) * nseg;
+    const Real gap = static_cast<Real>(side_[i]) * (x.get(slave) - pr.point).dot(nseg) - target;
+    const Vec3 d = x.get(slave) - pr.point;
+    if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
+    if (gap < -0.5 * pr.size) return false;                                // far behind it
+    if (s_.bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
+    if (normal_[i].squaredNorm() > 0.0) {
+      const Real c = normal_[i].dot(n);
+      if (slave_shell_[i] ? std::abs(c) < 0.5 : c > -0.5) return false;
+    }
+    LagrangeConstraint k;
+    k.slave = slave;
+    for (int a = 0; a < 4; ++a) k.master[static_cast<std::size_t>(a)] = conn[a];
+    k.shape = pr.shape;
+    if (master_.is_triangle(seg)) k.shape[3] = 0.0;
+    k.normal = n;
+    k.target = target;
+    k.bilateral = s_.bilateral;
+    k.mu = s_.bilateral ? 0.0 : s_.friction.coefficient(slip_speed_[i]);
+    // Warm start from the previous cycle's multipliers, turned into the current tangent plane.
+    k.lambda = lambda_[i];
+    k.tau = k.mu > 0.0 ? rotate_into_plane(tau_[i], n) : Vec3::Zero();
+    const Real limit = k.mu * std::max(k.lambda, Real(0));
+    if (k.tau.norm() > limit) k.tau *= limit / k.tau.norm();
+    if (!s_.bilateral) max_penetration_ = std::max(max_penetration_, -gap);
+    else max_penetration_ = std::max(max_penetration_, std::abs(gap));
+    constraints_.push_back(k);
+    owner_.push_back(static_cast<Index>(i));
+    return true;
+  }
+
+  /// Moves every constraint to the closest point of the predicted slave position on the predicted
+  /// master surface (see LagrangeContactSettings::projection_passes), forces withdrawn first.
+  void reproject(const ConstraintView& view, const StepTimes& times, const RigidGroups* groups) {
+    for (Index n : master_.nodes) predicted_.set(n, predicted_position(view, times, groups, n));
+    for (Index n : slaves_) predicted_.set(n, predicted_position(view, times, groups, n));
+    withdraw_constraint_forces(constraints_, view, times, groups);
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+      LagrangeConstraint& c = constraints_[k];
+      const auto i = static_cast<std::size_t>(owner_[k]);
+      const SegmentProjection sp = track_segment(predicted_.get(c.slave), segment_[i], master_, predicted_);
+      const Index seg = sp.segment;
+      const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      if (conn[0] == c.slave || conn[1] == c.slave || conn[2] == c.slave || conn[3] == c.slave) continue;
+      segment_[i] = seg;
+      for (int a = 0; a < 4; ++a) c.master[static_cast<std::size_t>(a)] = conn[a];
+      c.shape = sp.projection.shape;
+      if (master_.is_triangle(seg)) c.shape[3] = 0.0;
+      c.normal = static_cast<Real>(side_[i]) * segment_normal(seg, predicted_);
+      c.target = slave_offset_[i] + master_offset_[static_cast<std::size_t>(seg)];
+      if (c.mu > 0.0) c.tau = rotate_into_plane(c.tau, c.normal);
+    }
+  }
+
+  /// One group per rigid part on the master side: its nodes are the part's nodes (from the
+  /// context's sets when given, else the part's master-surface nodes).
+  void setup_rigid_groups(const ContactContext& c) {
+    group_of_.clear();
+    group_nodes_.clear();
+    group_mass_.clear();
+    if (c.rigid.empty()) return;
+    std::vector<Id> parts;
+    for (Index s = 0; s < master_.segment_count(); ++s) {
+      const Index* n = &master_.conn[4 * static_cast<std::size_t>(s)];
+      if (!c.rigid[static_cast<std::size_t>(n[0])]) continue;
+      const Id pid = master_.part[static_cast<std::size_t>(s)];
+      if (std::find(parts.begin(), parts.end(), pid) == parts.end()) parts.push_back(pid);
+    }
+    if (parts.empty()) return;
+    group_of_.assign(c.nodes.size(), -1);
+    for (std::size_t g = 0; g < parts.size(); ++g) {
+      std::vector<Index> nodes;
+      const auto f = c.sets ? c.sets->part_nodes.find(parts[g]) : decltype(c.sets->part_nodes.end()){};
+      if (c.sets && f != c.sets->part_nodes.end()) {
+        nodes = f->second;
+      } else {
+        for (Index s = 0; s < master_.segment_count(); ++s)
+          if (master_.part[static_cast<std::size_t>(s)] == parts[g])
+            for (int k = 0; k < 4; ++k) nodes.push_back(master_.conn[4 * static_cast<std::size_t>(s) + k]);
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      }
+      for (Index n : nodes)
+        if (c.rigid[static_cast<std::size_t>(n)] && group_of_[static_cast<std::size_t>(n)] < 0)
+          group_of_[static_cast<std::size_t>(n)] = static_cast<Index>(g);
+      group_nodes_.push_back(std::move(nodes));
+    }
+    group_held_.assign(parts.size(), {0, 0, 0});
+    for (std::size_t g = 0; g < parts.size(); ++g)
+      for (const auto& [pid, held] : s_.rigid_fixed_translations)
+        if (pid == parts[g]) group_held_[g] = held;
+    group_mass_.assign(parts.size(), 0.0);
+    group_compliance_.assign(parts.size(), Vec3::Zero());
+    group_force_.assign(parts.size(), Vec3::Zero());
+    groups_ = {group_of_, group_compliance_, group_force_};
+  }
+
+  void update_rigid_groups(const ConstraintView& view, const StepTimes& times) {
+    for (std::size_t g = 0; g < group_mass_.size(); ++g) {
+      Real m = 0.0, h = 0.0;
+      std::array<bool, 3> fixed{group_held_[g][0] != 0, group_held_[g][1] != 0, group_held_[g][2] != 0};
+      for (Index n : group_nodes_[g]) {
+        if (group_of_[static_cast<std::size_t>(n)] != static_cast<Index>(g)) continue;
+        m += view.nodes.mass[static_cast<std::size_t>(n)];
+        h = 0.5 * view.damping[static_cast<std::size_t>(n)] * times.dt_avg;
+        for (int c = 0; c < 3; ++c) fixed[c] = fixed[c] || view.fixed[c][static_cast<std::size_t>(n)];
+      }
+      const Real cg = m > 0.0 ? times.dt_next * times.dt_avg / ((1.0 + h) * m) : 0.0;
+      group_compliance_[g] = {fixed[0] ? 0.0 : cg, fixed[1] ? 0.0 : cg, fixed[2] ? 0.0 : cg};
+    }
+  }
+
+  Vec3 segment_normal(Index seg, const Vec3Field& x) const {
+    const auto c = segment_corners(master_, seg, x);
+    return (c[2] - c[0]).cross(c[3] - c[1]).normalized();
+  }
+
+  void record(const LagrangeSolveResult& r) {
+    ++stats_.solves;
+    stats_.sweeps += r.sweeps;
+    stats_.max_sweeps = std::max(stats_.max_sweeps, r.sweeps);
+    stats_.constraints += static_cast<long>(constraints_.size());
+    if (r.converged) return;
+    if (stats_.unconverged++ == 0)
+      std::fprintf(stderr,
+                   "slideline: warning: contact interface '%s': the Lagrange-multiplier solve did not reach "
+                   "its tolerance %.3g in %d sweeps (correction %.3g); later occurrences are counted, not "
+                   "reported\n",
+                   s_.title.c_str(), tolerance_, r.sweeps, r.correction);
+  }
+
+  void finish(const ConstraintView& view, const StepTimes& times) {
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+      const LagrangeConstraint& c = constraints_[k];
+      const auto i = static_cast<std::size_t>(owner_[k]);
+      const Vec3 f = c.lambda * c.normal + c.tau;
+      slave_force_ += f;
+      if (s_.transmitted_output && in_first_[static_cast<std::size_t>(c.slave)]) transmitted_ += f;
+      Vec3 v_rel = view.nodes.v.get(c.slave);
+      for (int a = 0; a < 4; ++a) {
+        if (c.shape[static_cast<std::size_t>(a)] == 0.0) continue;
+        const Vec3 fm = -c.shape[static_cast<std::size_t>(a)] * f;
+        master_force_ += fm;
+        if (s_.transmitted_output && in_first_[static_cast<std::size_t>(c.master[static_cast<std::size_t>(a)])])
+          transmitted_ += fm;
+        v_rel -= c.shape[static_cast<std::size_t>(a)] * view.nodes.v.get(c.master[static_cast<std::size_t>(a)]);
+      }
+      // Trapezoidal work of the friction force on the relative sliding, as the energy ledger
+      // books the contact forces: half with v^{n-1/2} over dt_prev, half with v^{n+1/2} over dt_next.
+      if (c.mu > 0.0) {
+        const Vec3 before = tangential_part(v_rel, c.normal) * times.dt_prev;
+        friction_work_ -= 0.5 * c.tau.dot(before + c.slip);
+      }
+      lambda_[i] = c.lambda;
+      tau_[i] = c.tau;
+      slip_speed_[i] = c.slip.norm() / times.dt_next;
+    }
+  }
+
+  LagrangeContactSettings s_;
+  Surface master_, slave_surface_;
+  std::vector<Index> slaves_, first_part_nodes_;
+  std::vector<Real> master_offset_, slave_offset_;
+  std::vector<Index> slave_row_;
+  std::vector<std::uint8_t> slave_shell_, in_first_;
+  Real allowance_ = 0.0, tolerance_ = 0.0;
+  std::unique_ptr<BroadPhase> broad_;
+  SearchCadence cadence_;
+  std::vector<Candidate> candidates_;
+  std::vector<SegmentProjection> found_, tracked_;
+  std::vector<Index> segment_;
+  std::vector<signed char> side_;
+  std::vector<Real> lambda_, slip_speed_;
+  std::vector<Vec3> tau_, normal_;
+  std::vector<LagrangeConstraint> constraints_;
+  std::vector<Index> owner_;
+  Vec3 slave_force_ = Vec3::Zero(), master_force_ = Vec3::Zero(), transmitted_ = Vec3::Zero();
+  Real friction_work_ = 0.0;
+  Real max_penetration_ = 0.0;
+  LagrangeSolveStats stats_;
+  std::vector<Index> group_of_;
+  std::vector<std::vector<Index>> group_nodes_;
+  std::vector<Real> group_mass_;
+  std::vector<std::array<int, 3>> group_held_;
+  std::vector<Vec3> group_compliance_, group_force_;
+  RigidGroups groups_;
+  Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
+};
+
+}  // namespace slideline
