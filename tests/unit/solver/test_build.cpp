@@ -105,12 +105,13 @@ TEST(Build, ErrorsNameTheCardAndField) {
     c.keyword = "*CONTACT_SURFACE_TO_SURFACE";
     c.src = {"deck.k", 7};
     m.contacts.push_back(c);
+    // Contact now builds: a contact whose slave set is missing names the card, line and field.
     try {
       build_simulation(m);
-      FAIL() << "expected NotImplementedError";
-    } catch (const NotImplementedError& e) {
+      FAIL() << "expected InputError";
+    } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("deck.k:7"), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("*CONTACT_SURFACE_TO_SURFACE"), std::string::npos);
+      EXPECT_NE(std::string(e.what()).find("SSID of *CONTACT_SURFACE_TO_SURFACE"), std::string::npos) << e.what();
     }
   }
 }
