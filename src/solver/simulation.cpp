@@ -385,6 +385,23 @@ bool Simulation::step() {
 void Simulation::form_accelerations() {
   const Index n = static_cast<Index>(nodes.size());
   const bool rotations = has_rotations_;
+  if (contacts.empty()) {  // no contact forces to read (f_contact stays zero)
+    parallel_for(n, [&](Index i) {
+      const Real m = nodes.mass[i];
+      const Real inv = m > 0.0 ? 1.0 / m : 0.0;
+      nodes.a.x[i] = (nodes.f_int.x[i] + nodes.f_ext.x[i]) * inv;
+      nodes.a.y[i] = (nodes.f_int.y[i] + nodes.f_ext.y[i]) * inv;
+      nodes.a.z[i] = (nodes.f_int.z[i] + nodes.f_ext.z[i]) * inv;
+      if (rotations && nodes.has_rotation[i]) {
+        const Real ri = nodes.rot_inertia[i];
+        const Real rinv = ri > 0.0 ? 1.0 / ri : 0.0;
+        nodes.alpha.x[i] = (nodes.m_int.x[i] + nodes.m_ext.x[i]) * rinv;
+        nodes.alpha.y[i] = (nodes.m_int.y[i] + nodes.m_ext.y[i]) * rinv;
+        nodes.alpha.z[i] = (nodes.m_int.z[i] + nodes.m_ext.z[i]) * rinv;
+      }
+    });
+    return;
+  }
   parallel_for(n, [&](Index i) {
     const Real m = nodes.mass[i];
     const Real inv = m > 0.0 ? 1.0 / m : 0.0;
@@ -544,6 +561,7 @@ void Simulation::update_velocities(const StepPlan& plan) {
   // there the initial velocity is v(0) itself (the first step is a half step from it), and the
   // mean would put an O(dt) offset into the balance that never goes away.
   const bool first = cycle_ == 0;
+  const bool with_contact = !contacts.empty();
   parallel_for_chunks(n, [&](Index b, Index end, Index chunk) {
     NodalEnergySums e;
     for (Index i = b; i < end; ++i) {
@@ -567,13 +585,13 @@ void Simulation::update_velocities(const StepPlan& plan) {
         const Real dnext = 0.5 * dt_new * vnew;  // half of x^{n+1} - x^n
         const Real fi = nodes.f_int[c][i];
         const Real fe = nodes.f_ext[c][i];
-        const Real fk = nodes.f_contact[c][i];
+        const Real fk = with_contact ? nodes.f_contact[c][i] : 0.0;
         const Real fd = fixed ? 0.0 : -al * m * vbar;
         const Real vk = first ? vold : vbar;
         e.kinetic += 0.5 * m * vk * vk;
         e.stress.add(-fi, dprev, dnext);
         e.external.add(fe, dprev, dnext);
-        e.contact.add(fk, dprev, dnext);
+        if (with_contact) e.contact.add(fk, dprev, dnext);
         e.damping.add(-fd, dprev, dnext);
         if (fixed) {
           e.support.add(m * (vnew - vold) / dt_avg - fi - fe - fk, dprev, dnext);
@@ -591,7 +609,7 @@ void Simulation::update_velocities(const StepPlan& plan) {
           const Real wold = nodes.omega[c][i];
           const Real mi = nodes.m_int[c][i];
           const Real me = nodes.m_ext[c][i];
-          const Real mk = nodes.m_contact[c][i];
+          const Real mk = with_contact ? nodes.m_contact[c][i] : 0.0;
           const bool fixed = fixed_rot_[c][i] != 0;
           const Real wnew = fixed ? 0.0 : ((1.0 - h) * wold + dt_avg * nodes.alpha[c][i]) / (1.0 + h);
           nodes.omega[c][i] = wnew;
