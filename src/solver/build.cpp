@@ -525,6 +525,13 @@ struct Builder {
       throw InputError(describe(m.termination.src) + ": field DTMIN of *CONTROL_TERMINATION must be 0 or positive (got " +
                        std::to_string(m.termination.dtmin) + ")");
     c.dt_min_fraction = m.termination.dtmin > 0.0 ? m.termination.dtmin : 1e-4;
+    if (m.termination.endeng < 0.0 || !std::isfinite(m.termination.endeng))
+      throw InputError(describe(m.termination.src) + ": field ENDENG of *CONTROL_TERMINATION must be 0 or a positive "
+                       "percentage (got " + std::to_string(m.termination.endeng) + ")");
+    if (m.termination.endeng > 0.0) {
+      c.energy_error_limit = m.termination.endeng / 100.0;
+      c.energy_error_warning = std::min(0.01, 0.2 * c.energy_error_limit);
+    }
     if (!(c.end_time > 0.0) && c.max_cycles <= 0)
       throw InputError("*CONTROL_TERMINATION: ENDTIM must be positive (got " +
                        std::to_string(m.termination.endtim) + ")");

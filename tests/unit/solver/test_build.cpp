@@ -116,6 +116,29 @@ TEST(Build, ErrorsNameTheCardAndField) {
   }
 }
 
+TEST(Build, TerminationSetsTheStepAndEnergyLimits) {
+  model::Model m = plate_model(false);
+  m.termination.dtmin = 1e-3;
+  m.termination.endeng = 2.0;  // percent
+  const auto sim = build_simulation(m);
+  EXPECT_DOUBLE_EQ(sim->controls.dt_min_fraction, 1e-3);
+  EXPECT_DOUBLE_EQ(sim->controls.energy_error_limit, 0.02);
+  EXPECT_DOUBLE_EQ(sim->controls.energy_error_warning, 0.004);
+  m.termination = {0.01, 0, 0.0, 0.0, {}};  // blank: the defaults
+  const auto dflt = build_simulation(m);
+  EXPECT_DOUBLE_EQ(dflt->controls.dt_min_fraction, 1e-4);
+  EXPECT_DOUBLE_EQ(dflt->controls.energy_error_limit, 0.05);
+  m.termination.endeng = -1.0;
+  m.termination.src = {"deck.k", 3};
+  try {
+    build_simulation(m);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.k:3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ENDENG"), std::string::npos) << e.what();
+  }
+}
+
 // A model of one rigid part alone: the step comes from the rigid material's E and PR (the
 // hexahedron's V / A_max over the dilatational wave speed), so it runs instead of failing with
 // "no stable time step"; under a base acceleration it falls as a body.
