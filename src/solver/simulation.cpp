@@ -662,38 +662,22 @@ void Simulation::book_dictated_nodes(const StepPlan& plan) {
   const bool first = cycle_ == 0;
   for (std::size_t k = 0; k < dictated_nodes_.size(); ++k) {
     const Index i = dictated_nodes_[k];
-    const Real m = nodes.mass[i];
-    for (int c = 0; c < 3; ++c) {
-      const Real vold = dictated_v_old_[k][c];
-      const Real vnew = nodes.v[c][i];
+    // One dof of mass (or rotary inertia) m: velocity before and after, internal and external load.
+    const auto book = [&](Real m, Real vold, Real vnew, Real fi, Real fe) {
       const Real vbar = 0.5 * (vold + vnew);
       const Real dprev = 0.5 * dt_ * vold;
       const Real dnext = 0.5 * plan.dt_next * vnew;
-      const Real fi = nodes.f_int[c][i];
-      const Real fe = nodes.f_ext[c][i];
       const Real vk = first ? vold : vbar;
       e.kinetic += 0.5 * m * vk * vk;
       e.stress.add(-fi, dprev, dnext);
       e.external.add(fe, dprev, dnext);
       e.contact.add(m * (vnew - vold) / plan.dt_avg - fi - fe, dprev, dnext);
-    }
-    if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0) {
-      const Real inertia = nodes.rot_inertia[i];
-      for (int c = 0; c < 3; ++c) {
-        const Real wold = dictated_w_old_[k][c];
-        const Real wnew = nodes.omega[c][i];
-        const Real wbar = 0.5 * (wold + wnew);
-        const Real dprev = 0.5 * dt_ * wold;
-        const Real dnext = 0.5 * plan.dt_next * wnew;
-        const Real mi = nodes.m_int[c][i];
-        const Real me = nodes.m_ext[c][i];
-        const Real wk = first ? wold : wbar;
-        e.kinetic += 0.5 * inertia * wk * wk;
-        e.stress.add(-mi, dprev, dnext);
-        e.external.add(me, dprev, dnext);
-        e.contact.add(inertia * (wnew - wold) / plan.dt_avg - mi - me, dprev, dnext);
-      }
-    }
+    };
+    for (int c = 0; c < 3; ++c)
+      book(nodes.mass[i], dictated_v_old_[k][c], nodes.v[c][i], nodes.f_int[c][i], nodes.f_ext[c][i]);
+    if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0)
+      for (int c = 0; c < 3; ++c)
+        book(nodes.rot_inertia[i], dictated_w_old_[k][c], nodes.omega[c][i], nodes.m_int[c][i], nodes.m_ext[c][i]);
   }
   dictated_sums_ = e;
 }
