@@ -73,6 +73,28 @@ TEST(Build, RigidPartWithFixedTranslationsStaysPutUnderLoad) {
   EXPECT_EQ(sim->constraints.size(), 0u);
 }
 
+TEST(Build, SupportOnARigidPartNodeIsRefused) {
+  model::Model m = plate_model(true);
+  m.materials.push_back(model::MatRigid{2, 0.01, 1000.0, 0.3, 0.0, 0, 0, "", {}});
+  m.node_sets.push_back({5, "", {3, 19}, {}});
+  model::BoundarySpc spc;
+  spc.nsid = 5;
+  spc.dof = {1, 1, 1, 0, 0, 0};
+  spc.src = {"deck.k", 12};
+  m.spcs.push_back(spc);
+  try {
+    build_simulation(m);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("deck.k:12"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("node 19 of rigid part 2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("CON1"), std::string::npos) << msg;
+  }
+  m.node_sets.back().nodes = {3};  // the elastic plate's node alone: fine
+  EXPECT_NO_THROW(build_simulation(m));
+}
+
 TEST(Build, ErrorsNameTheCardAndField) {
   {
     model::Model m = plate_model(true, 99);  // the block's part refers to a missing material
