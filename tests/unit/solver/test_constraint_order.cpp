@@ -194,7 +194,16 @@ Real run_driven_tie(bool with_drive, Real& worst_energy, Vec3& slave_displacemen
   s.axis = Axis::x;
   s.nodes = m.lower.layer(1);
   s.has_curve = true;
-  s.curve = LoadCurve({{0.0, 0.0}, {0.4, 0.02}}, "drive");
+  // u = 0.02 (t / 0.4)^2: a drive that starts at rest. A prescribed velocity that jumps at t = 0
+  // is an impulse the central-difference balance books as m v^2 of work against m v^2 / 2 of
+  // kinetic energy (2.5% of this model's energy, independent of dt); that is the start-up, not
+  // the tie.
+  std::vector<std::pair<Real, Real>> pts;
+  for (int k = 0; k <= 40; ++k) {
+    const Real t = 0.01 * k;
+    pts.push_back({t, 0.02 * (t / 0.4) * (t / 0.4)});
+  }
+  s.curve = LoadCurve(pts, "drive");
   drive.supports.push_back(s);
   m.sim.supports.push_back(fixed_group("bottom", m.lower.layer(0), {1, 1, 1}));
   if (with_drive) m.sim.supports.push_back(drive);
@@ -207,8 +216,6 @@ Real run_driven_tie(bool with_drive, Real& worst_energy, Vec3& slave_displacemen
   m.sim.damping = {d1, d2};
   m.sim.body_loads.push_back(body_load(Axis::y, 50.0, 2, 0.05));
   m.sim.body_loads.push_back(body_load(Axis::z, -20.0, 2, 0.05));
-  // The driven master's balance error is reported, not used to stop (see the note in the test).
-  m.sim.controls.energy_error_limit = 0.0;
   m.sim.initialize();
   Real worst = 0.0;
   worst_energy = 0.0;
@@ -231,6 +238,7 @@ TEST(ConstraintOrder, TiedSlaveFollowsASupportedDampedMasterExactly) {
   EXPECT_NEAR(u[0], 0.02, 2e-3);
   EXPECT_GT(u[1], 1e-5);
   std::printf("tie, driven + damped master: max relative balance error %.3e\n", energy);
+  EXPECT_LT(energy, 1e-3);
 }
 
 TEST(ConstraintOrder, TieWithDifferentlyDampedPartsBalancesEnergy) {
