@@ -151,6 +151,9 @@ class LagrangeContact final : public ContactAlgorithm {
     candidates_.reserve(4 * ns);
     setup_rigid_groups(c);
     predicted_.resize(c.nodes.size());
+    workspace_.dx.assign(c.nodes.size(), Vec3::Zero());
+    workspace_.rows.clear();
+    workspace_.rows.reserve(ns);
     in_first_.assign(c.nodes.size(), 0);
     for (Index n : first_part_nodes_) in_first_[static_cast<std::size_t>(n)] = 1;
   }
@@ -173,10 +176,10 @@ class LagrangeContact final : public ContactAlgorithm {
     opt.tolerance = tolerance_;
     update_rigid_groups(view, times);
     const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
-    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups);
+    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_);
     for (int pass = 1; pass < s_.projection_passes; ++pass) {
       reproject(view, times, groups);
-      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups);
+      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_);
       r.sweeps += r2.sweeps;
       r.correction = r2.correction;
       r.converged = r2.converged;
@@ -454,6 +457,7 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<Vec3> group_compliance_, group_force_;
   RigidGroups groups_;
   Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
+  LagrangeWorkspace workspace_;  ///< scratch of the solve, sized in initialize()
 };
 
 }  // namespace slideline
