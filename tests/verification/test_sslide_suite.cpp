@@ -49,6 +49,7 @@ constexpr Shortfall kKnownShortfalls[] = {
     {"sslide9ps", "solid_on_solid", "time of peak |F_x|"},
     {"sslide9ps", "solid_on_solid", "peak |R_x| [0.3,0.45]"},
     {"sslide9ps", "solid_on_solid", "no slip: max |rel x| t<0.37"},
+    {"sslide9ps", "solid_on_solid", "interpenetration max(-rel y)"},
     {"sslide10psl", "shell_on_shell", "no slip: max |rel x| t<0.37"},
     {"sslide10pv", "shell_on_shell", "no slip: max |rel x| t<0.37"},
     {"sslide12p", "shell_on_shell", "no slip: max |rel x| t<0.37"},
