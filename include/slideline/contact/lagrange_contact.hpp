@@ -1,12 +1,14 @@
 #pragma once
-/// LagrangeContact: contact enforced by forward-increment Lagrange multipliers
-/// (enforcement/lagrange.hpp) between slave nodes and a master surface. One final class serves
-///  - Types 3, 5, 10 and 12 with the _LAGRANGE option (unilateral: lambda >= 0, Coulomb friction
-///    with mu = mu_k + (mu_s - mu_k) exp(-beta |v_rel|)), and
-///  - Type 1 sliding only (bilateral normal constraint, no friction): the slave nodes keep their
-///    normal gap to the master surface in tension and compression and slide freely.
-/// They differ only in LagrangeContactSettings (the factories make_lagrange_contact and
-/// make_sliding_only_contact set them from the card).
+/// LagrangeInterface<Kind>: contact enforced by forward-increment Lagrange multipliers
+/// (enforcement/lagrange.hpp) between slave nodes and a master surface. The kind is a
+/// compile-time policy, one final class per interface type:
+///  - LagrangeContact (Types 3, 5, 10 and 12 with the _LAGRANGE option): unilateral,
+///    lambda >= 0, Coulomb friction with mu = mu_k + (mu_s - mu_k) exp(-beta |v_rel|);
+///  - SlidingOnlyContact (Type 1): a bilateral normal constraint, no friction: the slave nodes
+///    keep their normal gap to the master surface in tension and compression and slide freely.
+/// Everything else (sides, offsets, friction coefficients, Type 12's single-surface options) is
+/// in LagrangeContactSettings, which the factories make_lagrange_contact and
+/// make_sliding_only_contact set from the card.
 ///
 /// Per cycle, in enforce() (t^n, accelerations formed, ties, rigid bodies and supports done):
 ///  1. pairs: a broad-phase search (FCL tree) when SearchCadence says one is due, else local
@@ -43,7 +45,6 @@ namespace slideline {
 
 struct LagrangeContactSettings {
   std::string title;
-  bool bilateral = false;         ///< Type 1: tension and compression, no friction
   ExponentialCoulomb friction;    ///< mu_s = mu_k = 0: frictionless
   bool shell_offsets = false;     ///< offset shell segments by half their thickness (both sides)
   Real slave_thickness = 0.0;     ///< SST: overrides the slave shells' thickness (0: elements')
@@ -80,13 +81,22 @@ struct LagrangeSolveStats {
   long constraints = 0;     ///< constraints summed over the solves
 };
 
-class LagrangeContact final : public ContactAlgorithm {
+/// Kinds (compile-time policies) of LagrangeInterface.
+struct LagrangeContactKind {
+  static constexpr bool bilateral = false;  ///< contact: lambda >= 0, friction per the settings
+};
+struct SlidingOnlyKind {
+  static constexpr bool bilateral = true;  ///< Type 1: tension and compression, never friction
+};
+
+template <class Kind>
+class LagrangeInterface final : public ContactAlgorithm {
  public:
   /// master: the master surface; slaves: slave node indices; slave_surface: the surface the slaves
   /// come from (empty for a node set); first_part_nodes: nodes of the first body, for the
   /// transmitted force (any order).
-  LagrangeContact(LagrangeContactSettings settings, Surface master, std::vector<Index> slaves,
-                  Surface slave_surface, std::vector<Index> first_part_nodes = {})
+  LagrangeInterface(LagrangeContactSettings settings, Surface master, std::vector<Index> slaves,
+                    Surface slave_surface, std::vector<Index> first_part_nodes = {})
       : s_(std::move(settings)), master_(std::move(master)), slave_surface_(std::move(slave_surface)),
         slaves_(std::move(slaves)), first_part_nodes_(std::move(first_part_nodes)) {
     std::sort(slaves_.begin(), slaves_.end());
@@ -286,7 +296,7 @@ class LagrangeContact final : public ContactAlgorithm {
     const Vec3 d = x.get(slave) - pr.point;
     if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
     if (gap < -0.5 * pr.size) return false;                                // far behind it
-    if (s_.bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
+    if (Kind::bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
     if (normal_[i].squaredNorm() > 0.0) {
       const Real c = normal_[i].dot(n);
       if (slave_shell_[i] ? std::abs(c) < 0.5 : c > -0.5) return false;
@@ -298,14 +308,14 @@ class LagrangeContact final : public ContactAlgorithm {
     if (master_.is_triangle(seg)) k.shape[3] = 0.0;
     k.normal = n;
     k.target = target;
-    k.bilateral = s_.bilateral;
-    k.mu = s_.bilateral ? 0.0 : s_.friction.coefficient(slip_speed_[i]);
+    k.bilateral = Kind::bilateral;
+    k.mu = Kind::bilateral ? 0.0 : s_.friction.coefficient(slip_speed_[i]);
     // Warm start from the previous cycle's multipliers, turned into the current tangent plane.
     k.lambda = lambda_[i];
     k.tau = k.mu > 0.0 ? rotate_into_plane(tau_[i], n) : Vec3::Zero();
     const Real limit = k.mu * std::max(k.lambda, Real(0));
     if (k.tau.norm() > limit) k.tau *= limit / k.tau.norm();
-    if (!s_.bilateral) max_penetration_ = std::max(max_penetration_, -gap);
+    if (!Kind::bilateral) max_penetration_ = std::max(max_penetration_, -gap);
     else max_penetration_ = std::max(max_penetration_, std::abs(gap));
     constraints_.push_back(k);
     owner_.push_back(static_cast<Index>(i));
@@ -516,5 +526,10 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<Real> master_size_;
   LagrangeWorkspace workspace_;  ///< scratch of the solve, sized in initialize()
 };
+
+/// Types 3, 5, 10 and 12 with the _LAGRANGE option.
+using LagrangeContact = LagrangeInterface<LagrangeContactKind>;
+/// Type 1 sliding only.
+using SlidingOnlyContact = LagrangeInterface<SlidingOnlyKind>;
 
 }  // namespace slideline

@@ -20,17 +20,22 @@ using test::TwoBlocks;
 
 namespace {
 
-LagrangeContact* add_contact(TwoBlocks& m, bool bilateral, ExponentialCoulomb friction = {},
-                             std::array<int, 3> rigid_held = {0, 0, 0}) {
+/// Type 1 sliding only (bilateral) or Lagrange contact between the blocks.
+template <class Kind>
+LagrangeInterface<Kind>* add_interface(TwoBlocks& m, ExponentialCoulomb friction = {},
+                                       std::array<int, 3> rigid_held = {0, 0, 0}) {
   LagrangeContactSettings s;
   s.rigid_fixed_translations = {{1, rigid_held}};
-  s.title = bilateral ? "sliding_only" : "lagrange";
-  s.bilateral = bilateral;
+  s.title = Kind::bilateral ? "sliding_only" : "lagrange";
   s.friction = friction;
-  auto c = std::make_unique<LagrangeContact>(s, m.lower.face(1, true), m.upper.layer(0), m.upper.face(0, false));
-  LagrangeContact* p = c.get();
+  auto c = std::make_unique<LagrangeInterface<Kind>>(s, m.lower.face(1, true), m.upper.layer(0), m.upper.face(0, false));
+  LagrangeInterface<Kind>* p = c.get();
   m.sim.contacts.add(std::move(c));
   return p;
+}
+SlidingOnlyContact* add_sliding_only(TwoBlocks& m) { return add_interface<SlidingOnlyKind>(m); }
+LagrangeContact* add_contact(TwoBlocks& m, ExponentialCoulomb friction = {}, std::array<int, 3> rigid_held = {0, 0, 0}) {
+  return add_interface<LagrangeContactKind>(m, friction, rigid_held);
 }
 
 MassDamping damping(Real alpha) {
@@ -56,7 +61,7 @@ TEST(SlidingOnly, FrictionlessSlideFollowsConstantAcceleration) {
   TwoBlocks m;
   const Real a = 5.0;
   m.sim.body_loads.push_back(ramped_body_load(Axis::x, a, 2, 0.0));
-  auto* c = add_contact(m, true);
+  auto* c = add_sliding_only(m);
   m.sim.controls.end_time = 0.3;
   Real worst_balance = 0.0;
   const Real energy = run(m, 0.05, [&] {
@@ -80,7 +85,7 @@ TEST(SlidingOnly, HoldsTheSlaveInTension) {
   const Real g = 20.0;  // pulls the upper block away from the lower one
   m.sim.body_loads.push_back(ramped_body_load(Axis::y, g, 2, 0.05));
   m.sim.damping = {damping(40.0)};
-  auto* c = add_contact(m, true);
+  auto* c = add_sliding_only(m);
   m.sim.controls.end_time = 0.8;
   const Real energy = run(m, 0.05);
   const Real load = m.upper_mass() * g;
@@ -97,7 +102,7 @@ TEST(LagrangeContact, BlockRestsWithoutInterpenetration) {
   const Real g = 30.0;
   m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
   m.sim.damping = {damping(40.0)};
-  auto* c = add_contact(m, false, ExponentialCoulomb{0.3, 0.3, 0.0});
+  auto* c = add_contact(m, ExponentialCoulomb{0.3, 0.3, 0.0});
   m.sim.controls.end_time = 0.8;
   const Real energy = run(m, 0.05);
   const Real load = m.upper_mass() * g;
@@ -129,7 +134,7 @@ StickSlip run_stick_slip(const ExponentialCoulomb& f) {
   m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
   m.sim.body_loads.push_back(ramped_body_load(Axis::x, 1.3 * f.mu_s * g, 2, 0.2, 0.1));
   m.sim.damping = {damping(20.0)};
-  auto* c = add_contact(m, false, f);
+  auto* c = add_contact(m, f);
   m.sim.controls.end_time = 0.45;
   StickSlip r;
   r.energy = run(m, 0.05, [&] {
@@ -185,7 +190,7 @@ TEST(LagrangeContact, RigidMasterCarriesTheLoad) {
   const Real g = 30.0;
   m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
   m.sim.damping = {damping(40.0)};
-  auto* c = add_contact(m, false, {}, {1, 1, 1});
+  auto* c = add_contact(m, {}, {1, 1, 1});
   m.sim.controls.end_time = 0.4;
   const Real energy = run(m, 0.05);
   const Real load = m.upper_mass() * g;
@@ -204,7 +209,7 @@ TEST(LagrangeContact, FreeRigidMasterIsPushedWithoutLag) {
   TwoBlocks m(&free, 0.5);
   const Real g = 30.0;
   m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.0));
-  auto* c = add_contact(m, false);
+  auto* c = add_contact(m);
   m.sim.controls.end_time = 0.2;
   run(m, 0.0);
   // Only the body load acts on the pair: total momentum = its impulse; no interpenetration
@@ -234,7 +239,7 @@ TEST(LagrangeContact, RotatingRigidMasterLagIsSecondOrderInTheStep) {
     TwoBlocks m(&free, 0.0);
     m.sim.controls.dt_max = dt_max;
     m.sim.body_loads.push_back(ramped_body_load(Axis::y, -30.0, 2, 0.0));
-    auto* c = add_contact(m, false);
+    auto* c = add_contact(m);
     m.sim.controls.end_time = 0.2;
     run(m, 0.0);
     return Lag{c->max_penetration(), m.rigid->angular_velocity().norm(), m.sim.dt()};
