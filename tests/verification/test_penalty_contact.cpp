@@ -131,10 +131,11 @@ TEST(PenaltyFriction, CoulombPeakThenKineticType3) {
   for (std::size_t k = 0; k < r.peak.size(); ++k) {
     std::printf("sslide3p contact %zu: peak |F_x| %.4f (mu_s N = 3), mean F_x [0.45,0.5] %.4f, slide %.3f\n", k,
                 r.peak[k], r.mean_fx[k], r.slide[k]);
-    // 2 % for the solid and shell-on-solid blocks. The shell-on-shell plate reaches 2.93 (2.4 %
-    // low; DYNA3D 2.90): its nodes slip progressively, and those that slip first carry
-    // mu(v) < mu_s. That pairing is held to the product's acceptance bar [0.97, 1.03] f_s.
-    EXPECT_NEAR(r.peak[k], 3.0, k < 2 ? 0.06 : 0.09);
+    // 2 % for every pairing. With a stick stiffness k_t = k (DYNA3D) the shell-on-shell plate
+    // reached only 2.93: the tangential load is shared by stiffness, not by normal load, so its
+    // lightly loaded edge and corner nodes slipped first (at mu(v) < mu_s) while the centre still
+    // stuck. k_t = mu_s N / gamma brings every node to its limit at the same elastic slip.
+    EXPECT_NEAR(r.peak[k], 3.0, 0.06);
     EXPECT_NEAR(r.mean_fx[k], -2.5, 0.05);
     EXPECT_GT(r.slide[k], 0.1);
   }
@@ -262,8 +263,13 @@ TEST(PenaltyStableStep, ScalesWithTheFactor) {
     std::printf("sslide3p factor %5.1f: contact step %.3e, analysis step (x TSSFAC, min over t <= 0.15) %.3e\n",
                 factors[f], dt, step_min);
   }
-  EXPECT_NEAR(contact_dt[0] / contact_dt[1], std::sqrt(10.0), 0.05 * std::sqrt(10.0));
+  // Factors 10 and 100: the normal spring k sets the step (the stick spring k_t = mu_s N / gamma
+  // is below it), which scales as 1 / sqrt(factor).
   EXPECT_NEAR(contact_dt[1] / contact_dt[2], std::sqrt(10.0), 0.05 * std::sqrt(10.0));
+  // Factor 1: k is ten times softer but k_t does not scale with the factor; it is capped at 4 k,
+  // so the step lies between 1/2 and 1 of the factor-10 step times sqrt(10).
+  EXPECT_GE(contact_dt[0], 0.5 * std::sqrt(10.0) * contact_dt[1] * (1.0 - 1e-9));
+  EXPECT_LE(contact_dt[0], std::sqrt(10.0) * contact_dt[1] * (1.0 + 0.05));
 }
 
 }  // namespace

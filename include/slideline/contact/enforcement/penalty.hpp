@@ -55,6 +55,11 @@ struct PenaltyPassOptions {
   bool automatic = false;            ///< Type 12: skip own segments and faces not facing the node
   ExponentialCoulomb friction;       ///< mu_s = mu_k = 0: frictionless
   Real margin_fraction = 0.5;        ///< broad-phase margin = fraction x smallest segment diagonal
+  /// Stick law: elastic slip at the static limit, gamma = fraction x the master segment's largest
+  /// diagonal (dimensionless); the stick stiffness is k_t = mu_s N / gamma, capped at
+  /// stick_stiffness_cap x k (docs/contact.md, "Penalty contact", Friction).
+  Real elastic_slip_fraction = 1e-3;
+  Real stick_stiffness_cap = 4.0;    ///< k_t <= cap x k: the pair's stable step at most halved
 };
 
 /// The per-slave result of one cycle, kept for the serial scatter.
@@ -135,7 +140,8 @@ class PenaltyPass {
   std::vector<SegmentProjection> proj_;
   std::vector<std::int8_t> side_;       ///< shell master: side of the slave, 0 unknown
   std::vector<std::uint8_t> touched_;   ///< sliding only: has been in contact
-  std::vector<Vec3> ft_;                ///< tangential force history (force, on the slave)
+  std::vector<Vec3> ue_;                ///< elastic slip: contact point - sticking point (length)
+  std::vector<Real> slip_seg_;          ///< per master segment: gamma (length)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
@@ -174,7 +180,12 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
     throw Error("PenaltyPass::initialize: one stiffness per master segment");
   k_seg_ = std::move(segment_stiffness);
   Real min_diag = std::numeric_limits<Real>::max();
-  for (Index s = 0; s < ns; ++s) min_diag = std::min(min_diag, segment_max_diagonal(master_, s, nodes.x));
+  slip_seg_.assign(static_cast<std::size_t>(ns), 0.0);
+  for (Index s = 0; s < ns; ++s) {
+    const Real d = segment_max_diagonal(master_, s, nodes.x);
+    min_diag = std::min(min_diag, d);
+    slip_seg_[static_cast<std::size_t>(s)] = opt_.elastic_slip_fraction * d;
+  }
   Real max_offset = 0.0;
   for (Index s = 0; s < ns; ++s) max_offset = std::max(max_offset, master_offset(s));
   Real max_slave_offset = 0.0;
@@ -195,7 +206,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
   proj_.assign(n, SegmentProjection{});
   side_.assign(n, 0);
   touched_.assign(n, 0);
-  ft_.assign(n, Vec3::Zero());
+  ue_.assign(n, Vec3::Zero());
   g0_.assign(n, 0.0);
   gap_.assign(n, std::numeric_limits<Real>::infinity());
   records_.assign(n, PenaltyRecord{});
@@ -232,7 +243,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
       gap_[i] = 0.0;
     }
     records_[i] = PenaltyRecord{};
-    ft_[i] = Vec3::Zero();
+    ue_[i] = Vec3::Zero();
     touched_[i] = 0;
   }
 }
@@ -343,7 +354,7 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   const Index s = segment_[i];
   if (s < 0) {
     gap_[i] = std::numeric_limits<Real>::infinity();
-    ft_[i] = Vec3::Zero();
+    ue_[i] = Vec3::Zero();
     return;
   }
   const Projection& pr = proj_[i].projection;
@@ -356,7 +367,7 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   for (int a = 0; a < 4; ++a) {
     if (pr.shape[a] != 0.0) inv_m += pr.shape[a] * pr.shape[a] / nodes.mass[static_cast<std::size_t>(c[a])];
   }
-  rec.dt_inv2 = 0.25 * k * inv_m;
+  rec.dt_inv2 = 0.25 * k * inv_m;  // raised below by a stiffer stick spring
 
   const bool shell = master_.kind[su] == SegmentKind::shell;
   Vec3 n = pr.normal;
@@ -383,7 +394,7 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   const bool too_deep = raw < -0.5 * pr.size;
   const bool engaged = !beside && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
   if (!engaged) {
-    ft_[i] = Vec3::Zero();
+    ue_[i] = Vec3::Zero();
     if (!beside && gap > 0.0 && !touched_[i]) side_[i] = 0;  // free: re-detect the side
     if (beside || too_deep) gap_[i] = std::numeric_limits<Real>::infinity();
     return;
@@ -392,26 +403,34 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   const Real fn = -k * gap;  // > 0 compressive
   Vec3 f = fn * n;
   const ExponentialCoulomb& law = opt_.friction;
-  if (law.mu_s > 0.0 || law.mu_k > 0.0) {
+  const Real mu_ref = std::max(law.mu_s, law.mu_k);
+  if (mu_ref > 0.0) {
     Vec3 ft = Vec3::Zero();
+    Vec3 ue = Vec3::Zero();
     if (fn > 0.0) {
       Vec3 vrel = nodes.v.get(node);
       for (int a = 0; a < 4; ++a) {
         if (pr.shape[a] != 0.0) vrel -= pr.shape[a] * nodes.v.get(c[a]);
       }
       const Vec3 vt = tangential_part(vrel, n);
-      const Vec3 du = times.dt_prev * vt;
-      const Vec3 trial = rotate_into_plane(ft_[i], n) - k * du;
+      // Stick spring k_t = mu_s N / gamma: every node reaches mu_s N at the same elastic slip
+      // gamma whatever its share of the load (no progressive slip from a load shared by
+      // stiffness), the stick phase moves at most gamma, and the sticking point (not the force)
+      // is the history, so a dip of N lowers the force without dragging the point (no creep).
+      const Real kt = std::min(mu_ref * fn / slip_seg_[su], opt_.stick_stiffness_cap * k);
+      rec.dt_inv2 = 0.25 * std::max(k, kt) * inv_m;
+      ue = rotate_into_plane(ue_[i], n) + times.dt_prev * vt;
       // mu at the relative tangential speed (DYNA3D). Taking it at the last step's slip rate
       // instead (mu_s while sticking) lags the coefficient one step: the map F_n -> F_{n+1} then
       // oscillates with growth |a|, a = beta (mu_s - mu_k) N / (k_t dt), unstable for |a| > 1;
       // a backward-Euler slip rate is worse (unstable for a < -1/2). The relative speed feeds
       // back only through the masses.
-      const TangentialReturn r = coulomb_return_map(trial, fn, law.coefficient(vt.norm()));
-      ft = r.force;
-      if (r.slipping) rec.dissipation = r.force.norm() * (trial.norm() - r.force.norm()) / k;
+      const StickSpringUpdate u = stick_spring_update(ue, kt, fn, law.coefficient(vt.norm()));
+      ft = u.force;
+      if (u.slipping) rec.dissipation = u.force.norm() * (ue.norm() - u.elastic_displacement.norm());
+      ue = u.elastic_displacement;
     }
-    ft_[i] = ft;
+    ue_[i] = ue;
     f += ft;
   }
   rec.segment = s;
