@@ -221,8 +221,8 @@ TEST(PenaltyAutomatic, SingleBlockHasNoSelfContact) {
   }
 }
 
-// A block started 2e-3 inside the lower block: the penetration is found and reported, it becomes
-// the springs' zero, and the first steps do not explode.
+// A block started 2e-3 inside the lower block: the penetration is found and reported, the slave
+// nodes are moved out to the surface before the first step, and the first steps do not explode.
 TEST(PenaltyInitialPenetration, FoundReportedAndHarmless) {
   SslideProblem p = make_sslide_problem("sslide10pv");
   const Id upper = p.pairings[0].upper_part;
@@ -237,6 +237,8 @@ TEST(PenaltyInitialPenetration, FoundReportedAndHarmless) {
   const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[0]);
   EXPECT_EQ(pc.initial_penetration_count(), 16);
   EXPECT_NEAR(pc.largest_initial_penetration(), 2e-3, 1e-9);
+  EXPECT_EQ(pc.moved_node_count(), 16);
+  EXPECT_NEAR(pc.largest_move(), 2e-3, 1e-9);
   Real fmax = 0.0;
   while (sim->step()) fmax = std::max(fmax, sim->contacts[0].slave_force().norm());
   std::printf("initial penetration 2e-3: max |F| over t <= 0.02: %.4f (load 2.0 at 0.02)\n", fmax);

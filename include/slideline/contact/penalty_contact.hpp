@@ -38,16 +38,32 @@ class PenaltyContact final : public ContactAlgorithm {
 
   const std::string& name() const override { return name_; }
 
-  /// Builds the passes' stiffness and search structures (needs lumped masses) and logs initial
-  /// penetrations to stderr with the interface title.
+  /// Builds the passes' stiffness and search structures (needs lumped masses) and finds the
+  /// initial penetrations (initial_penetration_count()).
   void initialize(const ContactContext& context) override {
     for (auto& p : passes_) p->initialize(context.nodes, context.blocks);
+  }
+
+  /// Moves the slaves found below their master surface out to it, pass by pass (a pass after one
+  /// that moved nodes re-reads its gaps first: Type 3's reverse pass sees the moved slave
+  /// surface), and logs the count and the largest move to stderr with the interface title.
+  void resolve_initial_penetrations(NodalFields& nodes) override {
+    Index moved = 0;
+    Real largest = 0.0;
+    for (auto& p : passes_) {
+      if (moved > 0) p->redetect_initial_penetrations(nodes);
+      Real l = 0.0;
+      moved += p->resolve_initial_penetrations(nodes, l);
+      largest = std::max(largest, l);
+    }
+    moved_ = moved;
+    largest_move_ = largest;
     if (initial_penetration_count() > 0) {
       std::fprintf(stderr,
-                   "contact '%s': %ld initial penetration(s), largest %.6g: taken as the springs' zero "
-                   "(released as the bodies separate)\n",
-                   name_.c_str(), static_cast<long>(initial_penetration_count()),
-                   largest_initial_penetration());
+                   "contact '%s': %ld initial penetration(s), largest %.6g: %ld node(s) moved out to the "
+                   "surface, largest move %.6g\n",
+                   name_.c_str(), static_cast<long>(initial_penetration_count()), largest_initial_penetration(),
+                   static_cast<long>(moved), largest);
     }
   }
 
@@ -100,6 +116,9 @@ class PenaltyContact final : public ContactAlgorithm {
     for (const auto& p : passes_) m = std::max(m, p->largest_initial_penetration());
     return m;
   }
+  /// Nodes moved out by resolve_initial_penetrations() and the largest move (length).
+  Index moved_node_count() const { return moved_; }
+  Real largest_move() const { return largest_move_; }
   /// Force that parts_[b] exerts on parts_[a] for the k-th pair (a < b) at the last cycle.
   const std::vector<Vec3>& transmitted_forces() const { return transmitted_; }
   const PenaltyPass& pass(std::size_t k) const { return *passes_[k]; }
@@ -143,6 +162,8 @@ class PenaltyContact final : public ContactAlgorithm {
   Vec3 slave_ = Vec3::Zero(), master_ = Vec3::Zero();
   Real friction_work_ = 0.0;
   Real dt_ = std::numeric_limits<Real>::max();
+  Index moved_ = 0;
+  Real largest_move_ = 0.0;
 };
 
 }  // namespace slideline

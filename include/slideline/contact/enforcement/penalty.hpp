@@ -89,6 +89,15 @@ class PenaltyPass {
   /// already scaled: stiffness_scale is not applied), e.g. for surfaces without element blocks.
   void initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness);
 
+  /// Moves every slave found below the master surface (by initialize(), or by the last call of
+  /// this function) out to it along the master normal at its closest point, x and x0 together
+  /// (LS-DYNA IGNORE = 0: no element starts strained), then re-reads the gaps at the new
+  /// positions; a slave still below (a curved master) keeps its depth as the spring's zero.
+  /// Returns the number of nodes moved; `largest` gets the largest move (length). Allocates nothing.
+  Index resolve_initial_penetrations(NodalFields& nodes, Real& largest);
+  /// Re-reads the initial penetrations at the current positions (after another pass moved nodes).
+  void redetect_initial_penetrations(const NodalFields& nodes);
+
   /// Search or tracking, gaps, normal and friction forces for every slave at x^n, v^{n-1/2}
   /// (parallel over slaves; writes records()). No allocation in a steady state.
   void compute(const NodalFields& nodes, const StepTimes& times);
@@ -125,6 +134,9 @@ class PenaltyPass {
     return 0.5 * t * opt_.master_thickness_scale;
   }
   void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times);
+  /// Search and gaps at t = 0; each slave below the surface (beyond round-off) keeps its depth as
+  /// the spring's zero (g0_). Returns the count; `deepest` gets the largest depth.
+  Index detect_initial_penetrations(const NodalFields& nodes, Real& deepest);
 
   std::vector<Index> slaves_;
   std::vector<Real> slave_offset_;
@@ -227,25 +239,54 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
       }
     }
   }
-  // Initial penetrations: the first compute() at t = 0 records them as the springs' zero.
+  initial_count_ = detect_initial_penetrations(nodes, initial_max_);
+}
+
+inline Index PenaltyPass::detect_initial_penetrations(const NodalFields& nodes, Real& deepest) {
+  const std::size_t n = slaves_.size();
+  std::fill(g0_.begin(), g0_.end(), 0.0);
   first_ = true;
   StepTimes t0;
   compute(nodes, t0);
-  initial_count_ = 0;
-  initial_max_ = 0.0;
+  Index count = 0;
+  deepest = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     // Round-off of a seated start (|g| <= 1e-9 x the segment size) is not a penetration.
     const Real tol = segment_[i] >= 0 ? 1e-9 * proj_[i].projection.size : 0.0;
     if (gap_[i] < -tol && std::isfinite(gap_[i])) {
       g0_[i] = -gap_[i];
-      ++initial_count_;
-      initial_max_ = std::max(initial_max_, -gap_[i]);
+      ++count;
+      deepest = std::max(deepest, -gap_[i]);
       gap_[i] = 0.0;
     }
     records_[i] = PenaltyRecord{};
     ue_[i] = Vec3::Zero();
     touched_[i] = 0;
   }
+  return count;
+}
+
+inline void PenaltyPass::redetect_initial_penetrations(const NodalFields& nodes) {
+  Real deepest = 0.0;
+  detect_initial_penetrations(nodes, deepest);
+}
+
+inline Index PenaltyPass::resolve_initial_penetrations(NodalFields& nodes, Real& largest) {
+  Index moved = 0;
+  largest = 0.0;
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    if (!(g0_[i] > 0.0)) continue;
+    const Index s = segment_[i];
+    Vec3 n = proj_[i].projection.normal;  // the direction the spring would push the slave
+    if (master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell && side_[i] < 0) n = -n;
+    const Vec3 d = g0_[i] * n;
+    nodes.x.add(slaves_[i], d);
+    nodes.x0.add(slaves_[i], d);
+    largest = std::max(largest, g0_[i]);
+    ++moved;
+  }
+  if (moved > 0) redetect_initial_penetrations(nodes);
+  return moved;
 }
 
 inline Vec3 PenaltyPass::node_normal(std::size_t i, const Vec3Field& x) const {
