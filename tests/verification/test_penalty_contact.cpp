@@ -21,8 +21,7 @@ using scenarios::SslideProblem;
 
 /// Force on the upper body: the slave force, or Type 12's transmitted force.
 Vec3 upper_force(const ContactAlgorithm& c) {
-  if (const auto* p = dynamic_cast<const PenaltyContact*>(&c); p && !p->transmitted_forces().empty())
-    return p->transmitted_forces()[0];
+  if (const auto* t = transmitted_forces_of(c); t && !t->empty()) return (*t)[0];
   return c.slave_force();
 }
 
@@ -117,7 +116,7 @@ SlidingRun run_sliding(SslideProblem& p, Real mu_k) {
   }
   for (std::size_t k = 0; k < nc; ++k) {
     r.mean_fx[k] /= std::max(samples[k], 1);
-    const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[k]);
+    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[k]);
     for (Index n : pc.pass(0).slaves()) r.slide[k] = std::max(r.slide[k], sim->nodes.displacement(n)[0]);
   }
   r.friction = sim->energy().friction;
@@ -174,7 +173,7 @@ TEST(PenaltyNodes, NodalRadiusAndMasterThicknessSetTheRestGap) {
   ASSERT_EQ(sim->contacts.size(), 2u);
   const Real expected[2] = {0.05, 0.10};  // node_on_solid, node_on_shell
   for (std::size_t k = 0; k < 2; ++k) {
-    const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[k]);
+    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[k]);
     const PenaltyPass& pass = pc.pass(0);
     Real top = 0.0;
     for (Index n : pass.master().nodes) top += sim->nodes.x.y[n];
@@ -234,7 +233,8 @@ TEST(PenaltyInitialPenetration, FoundReportedAndHarmless) {
   p.model.termination.endtim = 0.02;
   auto sim = build_simulation(p.model);
   sim->initialize();
-  const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[0]);
+  ASSERT_NE(penalty_passes_of(sim->contacts[0]), nullptr);
+  const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[0]);
   EXPECT_EQ(pc.initial_penetration_count(), 16);
   EXPECT_NEAR(pc.largest_initial_penetration(), 2e-3, 1e-9);
   EXPECT_EQ(pc.moved_node_count(), 16);

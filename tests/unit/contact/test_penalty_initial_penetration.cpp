@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "unit/contact/two_blocks.hpp"
-#include "slideline/contact/penalty_contact.hpp"
+#include "slideline/contact/surface_to_surface_contact.hpp"
 #include "slideline/contact/search/fcl_broad_phase.hpp"
 
 using namespace slideline;
@@ -17,8 +17,10 @@ using test::TwoBlocks;
 
 namespace {
 
+using Type3 = SurfaceToSurfaceContact<ExponentialCoulomb>;
+
 /// Type 3 between the upper block's bottom (slaves, block 1) and the lower block's top (block 0).
-PenaltyContact* add_type3(TwoBlocks& m) {
+const PenaltyPasses* add_type3(TwoBlocks& m) {
   Surface lower_top = m.lower.face(1, true);
   Surface upper_bottom = m.upper.face(0, false);
   upper_bottom.block.assign(upper_bottom.block.size(), 1);  // the upper block's elements
@@ -28,14 +30,14 @@ PenaltyContact* add_type3(TwoBlocks& m) {
   std::sort(masters.begin(), masters.end());
   PenaltyPassOptions o;
   o.stiffness_scale = 1.0;
-  o.friction = ExponentialCoulomb{0.3, 0.3, 0.0};
-  std::vector<std::unique_ptr<PenaltyPass>> passes;
-  passes.push_back(std::make_unique<PenaltyPass>(slaves, std::vector<Real>(slaves.size(), 0.0), lower_top,
-                                                 std::make_unique<FclBroadPhase>(), o));
-  passes.push_back(std::make_unique<PenaltyPass>(masters, std::vector<Real>(masters.size(), 0.0), upper_bottom,
-                                                 std::make_unique<FclBroadPhase>(), o));
-  auto c = std::make_unique<PenaltyContact>("type3", std::move(passes), std::vector<bool>{false, true});
-  PenaltyContact* p = c.get();
+  auto c = std::make_unique<Type3>(
+      "type3",
+      std::make_unique<PenaltyPass>(slaves, std::vector<Real>(slaves.size(), 0.0), lower_top,
+                                    std::make_unique<FclBroadPhase>(), o),
+      std::make_unique<PenaltyPass>(masters, std::vector<Real>(masters.size(), 0.0), upper_bottom,
+                                    std::make_unique<FclBroadPhase>(), o),
+      ExponentialCoulomb{0.3, 0.3, 0.0});
+  const PenaltyPasses* p = &c->passes();
   m.sim.contacts.add(std::move(c));
   return p;
 }
@@ -60,7 +62,7 @@ TEST(PenaltyInitialPenetration, SlaveBlockMovedOutThenRunsStable) {
   m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
   m.sim.damping = {damping(40.0)};
   m.sim.controls.end_time = 0.4;
-  PenaltyContact* c = add_type3(m);
+  const PenaltyPasses* c = add_type3(m);
   m.sim.initialize();
 
   // Found: the 16 bottom nodes of the upper block below the lower top face (pass 1) and the 2
@@ -86,19 +88,20 @@ TEST(PenaltyInitialPenetration, SlaveBlockMovedOutThenRunsStable) {
 
   // Runs: no force on the first step, the load carried at the end, energy balance within 1 %.
   ASSERT_TRUE(m.sim.step());
-  const Real first = c->slave_force().norm();
+  const ContactAlgorithm& contact = m.sim.contacts[0];
+  const Real first = contact.slave_force().norm();
   Real worst = 0.0, fmax = 0.0;
   while (m.sim.step()) {
-    fmax = std::max(fmax, c->slave_force().norm());
+    fmax = std::max(fmax, contact.slave_force().norm());
     if (m.sim.time() > 0.05) worst = std::max(worst, std::abs(m.sim.energy().relative_balance_error()));
   }
   const Real load = m.upper_mass() * g;
   std::printf("moved %ld node(s), largest move %.3e; first-step |F| %.3e, max |F| %.4f (load %.3f), "
               "final F_y %.6f, energy balance error max %.3e\n",
-              static_cast<long>(c->moved_node_count()), c->largest_move(), first, fmax, load, c->slave_force()[1],
+              static_cast<long>(c->moved_node_count()), c->largest_move(), first, fmax, load, contact.slave_force()[1],
               worst);
   EXPECT_LT(first, 1e-9 * load);
   EXPECT_LT(fmax, 2.0 * load);
-  EXPECT_NEAR(c->slave_force()[1], load, 0.01 * load);
+  EXPECT_NEAR(contact.slave_force()[1], load, 0.01 * load);
   EXPECT_LT(worst, 0.01);
 }

@@ -25,7 +25,7 @@ struct Totals {
 Totals step(test::PenaltyScene& s, Real dt, Vec3Field* forces = nullptr) {
   StepTimes t;
   t.dt_prev = dt;
-  s.pass->compute(s.nodes, t);
+  s.pass->compute(s.nodes, t, s.friction);
   Vec3Field f = zero_forces(s.nodes.x.size());
   Vec3Field m = zero_forces(s.nodes.x.size());
   Totals r;

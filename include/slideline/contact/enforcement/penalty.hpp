@@ -34,6 +34,7 @@
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/friction/frictionless.hpp"
 #include "slideline/contact/search/broad_phase.hpp"
 #include "slideline/contact/search/narrow_phase.hpp"
 #include "slideline/contact/search/search_cadence.hpp"
@@ -53,7 +54,6 @@ struct PenaltyPassOptions {
   Real master_thickness_scale = 1.0; ///< SFMT/SFST (dimensionless)
   bool sliding_only = false;         ///< Type 10 "sliding only": no separation once in contact
   bool automatic = false;            ///< Type 12: skip own segments and faces not facing the node
-  ExponentialCoulomb friction;       ///< mu_s = mu_k = 0: frictionless
   Real margin_fraction = 0.5;        ///< broad-phase margin = fraction x smallest segment diagonal
   /// Stick law: elastic slip at the static limit, gamma = fraction x the master segment's largest
   /// diagonal (dimensionless); the stick stiffness is k_t = mu_s N / gamma, capped at
@@ -99,8 +99,10 @@ class PenaltyPass {
   void redetect_initial_penetrations(const NodalFields& nodes);
 
   /// Search or tracking, gaps, normal and friction forces for every slave at x^n, v^{n-1/2}
-  /// (parallel over slaves; writes records()). No allocation in a steady state.
-  void compute(const NodalFields& nodes, const StepTimes& times);
+  /// (parallel over slaves; writes records()). No allocation in a steady state. Friction: the
+  /// interface's compile-time friction policy (Frictionless or ExponentialCoulomb).
+  template <class Friction = Frictionless>
+  void compute(const NodalFields& nodes, const StepTimes& times, const Friction& friction = {});
 
   /// Adds the forces of the last compute() into out (serial, slave order), and accumulates the
   /// slave and master totals (force) and the friction work (energy).
@@ -133,7 +135,9 @@ class PenaltyPass {
     const Real t = opt_.master_thickness > 0.0 ? opt_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
     return 0.5 * t * opt_.master_thickness_scale;
   }
-  void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times);
+  void locate(const Vec3Field& x);
+  template <class Friction>
+  void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times, const Friction& friction);
   /// Search and gaps at t = 0; each slave below the surface (beyond round-off) keeps its depth as
   /// the spring's zero (g0_). Returns the count; `deepest` gets the largest depth.
   Index detect_initial_penetrations(const NodalFields& nodes, Real& deepest);
@@ -341,8 +345,18 @@ inline void PenaltyPass::search(const Vec3Field& x) {
   });
 }
 
-inline void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& times) {
-  const Vec3Field& x = nodes.x;
+template <class Friction>
+void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& times, const Friction& friction) {
+  locate(nodes.x);
+  parallel_for(static_cast<Index>(slaves_.size()),
+               [&](Index i) { evaluate(static_cast<std::size_t>(i), nodes, times, friction); });
+  Real w2 = 0.0;
+  for (const PenaltyRecord& r : records_) w2 = std::max(w2, r.dt_inv2);
+  dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
+}
+
+/// Search (when due) or local tracking: the segment and closest point of every slave.
+inline void PenaltyPass::locate(const Vec3Field& x) {
   const bool due = first_ || cadence_->is_due(x);
   if (due || opt_.automatic) {
     if (due) {
@@ -380,14 +394,11 @@ inline void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& time
       }
     });
   }
-  parallel_for(static_cast<Index>(slaves_.size()),
-               [&](Index i) { evaluate(static_cast<std::size_t>(i), nodes, times); });
-  Real w2 = 0.0;
-  for (const PenaltyRecord& r : records_) w2 = std::max(w2, r.dt_inv2);
-  dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }
 
-inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times) {
+template <class Friction>
+void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times,
+                           [[maybe_unused]] const Friction& friction) {
   PenaltyRecord& rec = records_[i];
   rec.segment = -1;
   rec.dissipation = 0.0;
@@ -443,36 +454,38 @@ inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const
   touched_[i] = 1;
   const Real fn = -k * gap;  // > 0 compressive
   Vec3 f = fn * n;
-  const ExponentialCoulomb& law = opt_.friction;
-  const Real mu_ref = std::max(law.mu_s, law.mu_k);
-  if (mu_ref > 0.0) {
-    Vec3 ft = Vec3::Zero();
-    Vec3 ue = Vec3::Zero();
-    if (fn > 0.0) {
-      Vec3 vrel = nodes.v.get(node);
-      for (int a = 0; a < 4; ++a) {
-        if (pr.shape[a] != 0.0) vrel -= pr.shape[a] * nodes.v.get(c[a]);
+  if constexpr (Friction::enabled) {
+    const Friction& law = friction;
+    const Real mu_ref = std::max(law.mu_s, law.mu_k);
+    if (mu_ref > 0.0) {
+      Vec3 ft = Vec3::Zero();
+      Vec3 ue = Vec3::Zero();
+      if (fn > 0.0) {
+        Vec3 vrel = nodes.v.get(node);
+        for (int a = 0; a < 4; ++a) {
+          if (pr.shape[a] != 0.0) vrel -= pr.shape[a] * nodes.v.get(c[a]);
+        }
+        const Vec3 vt = tangential_part(vrel, n);
+        // Stick spring k_t = mu_s N / gamma: every node reaches mu_s N at the same elastic slip
+        // gamma whatever its share of the load (no progressive slip from a load shared by
+        // stiffness), the stick phase moves at most gamma, and the sticking point (not the force)
+        // is the history, so a dip of N lowers the force without dragging the point (no creep).
+        const Real kt = std::min(mu_ref * fn / slip_seg_[su], opt_.stick_stiffness_cap * k);
+        rec.dt_inv2 = 0.25 * std::max(k, kt) * inv_m;
+        ue = rotate_into_plane(ue_[i], n) + times.dt_prev * vt;
+        // mu at the relative tangential speed (DYNA3D). Taking it at the last step's slip rate
+        // instead (mu_s while sticking) lags the coefficient one step: the map F_n -> F_{n+1} then
+        // oscillates with growth |a|, a = beta (mu_s - mu_k) N / (k_t dt), unstable for |a| > 1;
+        // a backward-Euler slip rate is worse (unstable for a < -1/2). The relative speed feeds
+        // back only through the masses.
+        const StickSpringUpdate u = stick_spring_update(ue, kt, fn, law.coefficient(vt.norm()));
+        ft = u.force;
+        if (u.slipping) rec.dissipation = u.force.norm() * (ue.norm() - u.elastic_displacement.norm());
+        ue = u.elastic_displacement;
       }
-      const Vec3 vt = tangential_part(vrel, n);
-      // Stick spring k_t = mu_s N / gamma: every node reaches mu_s N at the same elastic slip
-      // gamma whatever its share of the load (no progressive slip from a load shared by
-      // stiffness), the stick phase moves at most gamma, and the sticking point (not the force)
-      // is the history, so a dip of N lowers the force without dragging the point (no creep).
-      const Real kt = std::min(mu_ref * fn / slip_seg_[su], opt_.stick_stiffness_cap * k);
-      rec.dt_inv2 = 0.25 * std::max(k, kt) * inv_m;
-      ue = rotate_into_plane(ue_[i], n) + times.dt_prev * vt;
-      // mu at the relative tangential speed (DYNA3D). Taking it at the last step's slip rate
-      // instead (mu_s while sticking) lags the coefficient one step: the map F_n -> F_{n+1} then
-      // oscillates with growth |a|, a = beta (mu_s - mu_k) N / (k_t dt), unstable for |a| > 1;
-      // a backward-Euler slip rate is worse (unstable for a < -1/2). The relative speed feeds
-      // back only through the masses.
-      const StickSpringUpdate u = stick_spring_update(ue, kt, fn, law.coefficient(vt.norm()));
-      ft = u.force;
-      if (u.slipping) rec.dissipation = u.force.norm() * (ue.norm() - u.elastic_displacement.norm());
-      ue = u.elastic_displacement;
+      ue_[i] = ue;
+      f += ft;
     }
-    ue_[i] = ue;
-    f += ft;
   }
   rec.segment = s;
   rec.force = f;
