@@ -14,6 +14,7 @@
 #include "slideline/material/elastic.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/hex_grid.hpp"
 
 using namespace slideline;
 
@@ -21,51 +22,8 @@ namespace {
 
 constexpr Real kE = 1000.0, kNu = 0.3, kRho = 1.0;
 
-/// Appends an nx x ny x nz box of hexahedra [x0, x0 + size] to a node list; returns its
-/// connectivity and fills `index(i, j, k)` lookups through `first`.
-struct Box {
-  Index first = 0;
-  int nx = 1, ny = 1, nz = 1;
-  Index node(int i, int j, int k) const { return first + i + (nx + 1) * (j + (ny + 1) * k); }
-  std::vector<Index> conn() const {
-    std::vector<Index> c;
-    for (int k = 0; k < nz; ++k)
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-          // Bottom face (y = j) counter-clockwise seen from +y, then the top face above it.
-          c.insert(c.end(), {node(i, j, k), node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j, k),
-                             node(i, j + 1, k), node(i, j + 1, k + 1), node(i + 1, j + 1, k + 1),
-                             node(i + 1, j + 1, k)});
-    return c;
-  }
-  /// Nodes of the layer j.
-  std::vector<Index> layer(int j) const {
-    std::vector<Index> out;
-    for (int k = 0; k <= nz; ++k)
-      for (int i = 0; i <= nx; ++i) out.push_back(node(i, j, k));
-    return out;
-  }
-};
-
-struct Mesh {
-  std::vector<Vec3> x;
-  Box add_box(const Vec3& origin, const Vec3& size, int nx, int ny, int nz) {
-    Box b{static_cast<Index>(x.size()), nx, ny, nz};
-    for (int k = 0; k <= nz; ++k)
-      for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i)
-          x.push_back(origin + Vec3(size[0] * i / nx, size[1] * j / ny, size[2] * k / nz));
-    return b;
-  }
-  void fill(NodalFields& nodes) const {
-    nodes.resize(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      nodes.ids[i] = static_cast<Id>(i + 1);
-      nodes.x0.set(static_cast<Index>(i), x[i]);
-      nodes.x.set(static_cast<Index>(i), x[i]);
-    }
-  }
-};
+using Box = test_support::HexGrid;
+using Mesh = test_support::GridMesh;
 
 std::unique_ptr<ElementBlock> elastic_block(Id pid, const Box& b) {
   HexHourglass hg;
