@@ -55,9 +55,9 @@ struct PenaltyPassOptions {
   bool sliding_only = false;         ///< Type 10 "sliding only": no separation once in contact
   bool automatic = false;            ///< Type 12: skip own segments and faces not facing the node
   Real margin_fraction = 0.5;        ///< broad-phase margin = fraction x smallest segment diagonal
-  /// Stick law: elastic slip at the static limit, gamma = fraction x the master segment's largest
-  /// diagonal (dimensionless); the stick stiffness is k_t = mu_s N / gamma, capped at
-  /// stick_stiffness_cap x k (docs/contact.md, "Penalty contact", Friction).
+  /// Stick law: largest elastic slip at the static limit, gamma = fraction x the master segment's
+  /// largest diagonal (dimensionless); the stick stiffness is k_t = max(k, mu_s N / gamma),
+  /// capped at stick_stiffness_cap x k (docs/contact.md, "Penalty contact", Friction).
   Real elastic_slip_fraction = 1e-3;
   Real stick_stiffness_cap = 4.0;    ///< k_t <= cap x k: the pair's stable step at most halved
 };
@@ -466,11 +466,13 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
           if (pr.shape[a] != 0.0) vrel -= pr.shape[a] * nodes.v.get(c[a]);
         }
         const Vec3 vt = tangential_part(vrel, n);
-        // Stick spring k_t = mu_s N / gamma: every node reaches mu_s N at the same elastic slip
-        // gamma whatever its share of the load (no progressive slip from a load shared by
-        // stiffness), the stick phase moves at most gamma, and the sticking point (not the force)
-        // is the history, so a dip of N lowers the force without dragging the point (no creep).
-        const Real kt = std::min(mu_ref * fn / slip_seg_[su], opt_.stick_stiffness_cap * k);
+        // Stick spring: DYNA3D's k_t = k, unless that lets the stick phase stretch more than
+        // gamma before mu_s N (soft masters: shells); then k_t = mu_s N / gamma, so that every
+        // node reaches its limit at the same elastic slip gamma whatever its share of the load
+        // (no progressive slip of lightly loaded nodes), capped at 4 k (stable step at most
+        // halved). The sticking point (not the force) is the history: in the N-proportional
+        // range a dip of N lowers the force without dragging the point (no creep).
+        const Real kt = std::min(std::max(k, mu_ref * fn / slip_seg_[su]), opt_.stick_stiffness_cap * k);
         rec.dt_inv2 = 0.25 * std::max(k, kt) * inv_m;
         ue = rotate_into_plane(ue_[i], n) + times.dt_prev * vt;
         // mu at the relative tangential speed (DYNA3D). Taking it at the last step's slip rate
