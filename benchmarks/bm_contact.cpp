@@ -198,7 +198,7 @@ void BM_PenaltyPass(benchmark::State& state) {
   long step = 0;
   for (auto _ : state) {
     test::move_slaves(*s, Vec3(((step++ / 8) % 2 ? -0.01 : 0.01), 0.0, 0.0), 1e-3);
-    s->pass->compute(s->nodes, t);
+    s->pass->compute(s->nodes, t, s->friction);
     Vec3 a = Vec3::Zero(), b = Vec3::Zero();
     Real w = 0.0;
     s->pass->scatter(ContactForceView{f, m}, a, b, w);

@@ -3,7 +3,8 @@
 #include <memory>
 
 #include "slideline/contact/make_contact_interface.hpp"
-#include "slideline/contact/penalty_contact.hpp"
+#include "slideline/contact/automatic_contact.hpp"
+#include "slideline/contact/nodes_to_surface_contact.hpp"
 #include "slideline/contact/penalty_factory.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/solver/build.hpp"
@@ -24,11 +25,10 @@ std::unique_ptr<ContactAlgorithm> make_nodes_to_surface(const model::Contact& ca
     const auto half = shell_half_thickness(slave, ctx.model.control_contact.shlthk > 0, card.sst, card.sfst);
     for (std::size_t i = 0; i < offsets.size(); ++i) offsets[i] = std::max(offsets[i], half[i]);
   }
-  std::vector<std::unique_ptr<PenaltyPass>> passes;
-  passes.push_back(std::make_unique<PenaltyPass>(slave.nodes, std::move(offsets), master.surface,
-                                                 std::make_unique<FclBroadPhase>(),
-                                                 penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt)));
-  return std::make_unique<PenaltyContact>(title, std::move(passes), std::vector<bool>{false});
+  auto pass = std::make_unique<PenaltyPass>(slave.nodes, std::move(offsets), master.surface,
+                                            std::make_unique<FclBroadPhase>(),
+                                            penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  return make_penalty_interface<NodesToSurfaceContact>(card, title, std::move(pass));
 }
 
 std::unique_ptr<ContactAlgorithm> make_automatic(const model::Contact& card, const std::string& title,
@@ -41,9 +41,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic(const model::Contact& card, con
                                             penalty_pass_options(card, ctx, card.sfs, card.sst, card.sfst));
   pass->slave_part() = node_parts(side);
   std::vector<Id> parts = side.parts;
-  std::vector<std::unique_ptr<PenaltyPass>> passes;
-  passes.push_back(std::move(pass));
-  return std::make_unique<PenaltyContact>(title, std::move(passes), std::vector<bool>{false}, std::move(parts));
+  return make_penalty_interface<AutomaticContact>(card, title, std::move(pass), std::move(parts));
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 #include <memory>
 
 #include "slideline/contact/make_contact_interface.hpp"
-#include "slideline/contact/penalty_contact.hpp"
+#include "slideline/contact/one_way_contact.hpp"
+#include "slideline/contact/surface_to_surface_contact.hpp"
 #include "slideline/contact/penalty_factory.hpp"
 
 namespace slideline {
@@ -14,21 +15,17 @@ std::unique_ptr<ContactAlgorithm> make_sliding_contact(const model::Contact& car
   ContactSide slave = resolve_contact_side(card, true, ctx);
   ContactSide master = resolve_contact_side(card, false, ctx);
   const bool thk = ctx.model.control_contact.shlthk > 0;
-  std::vector<std::unique_ptr<PenaltyPass>> passes;
-  std::vector<bool> reversed;
-  // Pass 1: slave nodes on master segments (stiffness factor SLSFAC x SFS).
-  passes.push_back(std::make_unique<PenaltyPass>(
+  // Slave nodes on master segments (stiffness factor SLSFAC x SFS).
+  auto slave_pass = std::make_unique<PenaltyPass>(
       slave.nodes, shell_half_thickness(slave, thk, card.sst, card.sfst), master.surface,
-      std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt)));
-  reversed.push_back(false);
-  if (card.type == model::ContactType::surface_to_surface) {
-    // Pass 2 (Type 3 only): master nodes on slave segments (SLSFAC x SFM).
-    passes.push_back(std::make_unique<PenaltyPass>(
-        master.nodes, shell_half_thickness(master, thk, card.mst, card.sfmt), slave.surface,
-        std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfm, card.sst, card.sfst)));
-    reversed.push_back(true);
-  }
-  return std::make_unique<PenaltyContact>(title, std::move(passes), std::move(reversed));
+      std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  if (card.type != model::ContactType::surface_to_surface)
+    return make_penalty_interface<OneWayContact>(card, title, std::move(slave_pass));
+  // Type 3's second pass: master nodes on slave segments (SLSFAC x SFM).
+  auto master_pass = std::make_unique<PenaltyPass>(
+      master.nodes, shell_half_thickness(master, thk, card.mst, card.sfmt), slave.surface,
+      std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfm, card.sst, card.sfst));
+  return make_penalty_interface<SurfaceToSurfaceContact>(card, title, std::move(slave_pass), std::move(master_pass));
 }
 
 }  // namespace slideline

@@ -141,6 +141,7 @@ void Simulation::initialize() {
   dt_ = 0.0;
   cycle_ = 0;
   contacts.initialize(ContactContext{nodes, blocks, &sets, rigid_});
+  contacts.resolve_initial_penetrations(nodes);
   dictated_nodes_.clear();
   for (const auto& c : contacts) {
     for (Index i : c->dictated_nodes()) {

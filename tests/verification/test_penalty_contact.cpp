@@ -21,8 +21,7 @@ using scenarios::SslideProblem;
 
 /// Force on the upper body: the slave force, or Type 12's transmitted force.
 Vec3 upper_force(const ContactAlgorithm& c) {
-  if (const auto* p = dynamic_cast<const PenaltyContact*>(&c); p && !p->transmitted_forces().empty())
-    return p->transmitted_forces()[0];
+  if (const auto* t = transmitted_forces_of(c); t && !t->empty()) return (*t)[0];
   return c.slave_force();
 }
 
@@ -118,7 +117,7 @@ SlidingRun run_sliding(SslideProblem& p, Real mu_k) {
   }
   for (std::size_t k = 0; k < nc; ++k) {
     r.mean_fx[k] /= std::max(samples[k], 1);
-    const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[k]);
+    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[k]);
     for (Index n : pc.pass(0).slaves()) r.slide[k] = std::max(r.slide[k], sim->nodes.displacement(n)[0]);
   }
   r.friction = sim->energy().friction;
@@ -132,10 +131,11 @@ TEST(PenaltyFriction, CoulombPeakThenKineticType3) {
   for (std::size_t k = 0; k < r.peak.size(); ++k) {
     std::printf("sslide3p contact %zu: peak |F_x| %.4f (mu_s N = 3), mean F_x [0.45,0.5] %.4f, slide %.3f\n", k,
                 r.peak[k], r.mean_fx[k], r.slide[k]);
-    // 2 % for the solid and shell-on-solid blocks. The shell-on-shell plate reaches 2.93 (2.4 %
-    // low; DYNA3D 2.90): its nodes slip progressively, and those that slip first carry
-    // mu(v) < mu_s. That pairing is held to the product's acceptance bar [0.97, 1.03] f_s.
-    EXPECT_NEAR(r.peak[k], 3.0, k < 2 ? 0.06 : 0.09);
+    // 2 % for every pairing. With a stick stiffness k_t = k (DYNA3D) the shell-on-shell plate
+    // reached only 2.925: the tangential load is shared by stiffness, not by normal load, so its
+    // lightly loaded edge and corner nodes slipped first (at mu(v) < mu_s) while the centre still
+    // stuck. On that soft master k_t = mu_s N / gamma brings every node to its limit together.
+    EXPECT_NEAR(r.peak[k], 3.0, 0.06);
     EXPECT_NEAR(r.mean_fx[k], -2.5, 0.05);
     EXPECT_GT(r.slide[k], 0.1);
   }
@@ -174,7 +174,7 @@ TEST(PenaltyNodes, NodalRadiusAndMasterThicknessSetTheRestGap) {
   ASSERT_EQ(sim->contacts.size(), 2u);
   const Real expected[2] = {0.05, 0.10};  // node_on_solid, node_on_shell
   for (std::size_t k = 0; k < 2; ++k) {
-    const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[k]);
+    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[k]);
     const PenaltyPass& pass = pc.pass(0);
     Real top = 0.0;
     for (Index n : pass.master().nodes) top += sim->nodes.x.y[n];
@@ -221,8 +221,8 @@ TEST(PenaltyAutomatic, SingleBlockHasNoSelfContact) {
   }
 }
 
-// A block started 2e-3 inside the lower block: the penetration is found and reported, it becomes
-// the springs' zero, and the first steps do not explode.
+// A block started 2e-3 inside the lower block: the penetration is found and reported, the slave
+// nodes are moved out to the surface before the first step, and the first steps do not explode.
 TEST(PenaltyInitialPenetration, FoundReportedAndHarmless) {
   SslideProblem p = make_sslide_problem("sslide10pv");
   const Id upper = p.pairings[0].upper_part;
@@ -234,9 +234,12 @@ TEST(PenaltyInitialPenetration, FoundReportedAndHarmless) {
   p.model.termination.endtim = 0.02;
   auto sim = build_simulation(p.model);
   sim->initialize();
-  const auto& pc = dynamic_cast<const PenaltyContact&>(sim->contacts[0]);
+  ASSERT_NE(penalty_passes_of(sim->contacts[0]), nullptr);
+  const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[0]);
   EXPECT_EQ(pc.initial_penetration_count(), 16);
   EXPECT_NEAR(pc.largest_initial_penetration(), 2e-3, 1e-9);
+  EXPECT_EQ(pc.moved_node_count(), 16);
+  EXPECT_NEAR(pc.largest_move(), 2e-3, 1e-9);
   Real fmax = 0.0;
   while (sim->step()) fmax = std::max(fmax, sim->contacts[0].slave_force().norm());
   std::printf("initial penetration 2e-3: max |F| over t <= 0.02: %.4f (load 2.0 at 0.02)\n", fmax);
@@ -263,8 +266,13 @@ TEST(PenaltyStableStep, ScalesWithTheFactor) {
     std::printf("sslide3p factor %5.1f: contact step %.3e, analysis step (x TSSFAC, min over t <= 0.15) %.3e\n",
                 factors[f], dt, step_min);
   }
-  EXPECT_NEAR(contact_dt[0] / contact_dt[1], std::sqrt(10.0), 0.05 * std::sqrt(10.0));
+  // Factors 10 and 100: the normal spring k sets the step (the stick spring k_t = mu_s N / gamma
+  // is below it), which scales as 1 / sqrt(factor).
   EXPECT_NEAR(contact_dt[1] / contact_dt[2], std::sqrt(10.0), 0.05 * std::sqrt(10.0));
+  // Factor 1: k is ten times softer but k_t does not scale with the factor; it is capped at 4 k,
+  // so the step lies between 1/2 and 1 of the factor-10 step times sqrt(10).
+  EXPECT_GE(contact_dt[0], 0.5 * std::sqrt(10.0) * contact_dt[1] * (1.0 - 1e-9));
+  EXPECT_LE(contact_dt[0], std::sqrt(10.0) * contact_dt[1] * (1.0 + 0.05));
 }
 
 }  // namespace

@@ -42,9 +42,7 @@ constexpr Shortfall kKnownShortfalls[] = {
     {"sslide1k", "shell_on_shell", "max |R_x|"},
     {"sslide3p", "solid_on_solid", "interpenetration max(-rel y)"},
     {"sslide3p", "shell_on_solid", "interpenetration max(-rel y)"},
-    {"sslide3p", "shell_on_shell", "no slip: max |rel x| t<0.37"},
     {"sslide5p", "node_on_solid", "interpenetration max(-rel y)"},
-    {"sslide5p", "node_on_shell", "no slip: max |rel x| t<0.37"},
     {"sslide8p", "node_on_shell", "time of peak |F_y|"},
     {"sslide9pt", "solid_on_solid", "peak |F_y| (tensile failure)"},
     {"sslide9ps", "solid_on_solid", "peak |F_x| (shear failure)"},
@@ -52,10 +50,6 @@ constexpr Shortfall kKnownShortfalls[] = {
     {"sslide9ps", "solid_on_solid", "peak |R_x| [0.3,0.45]"},
     {"sslide9ps", "solid_on_solid", "no slip: max |rel x| t<0.37"},
     {"sslide9ps", "solid_on_solid", "interpenetration max(-rel y)"},
-    {"sslide10psl", "shell_on_shell", "no slip: max |rel x| t<0.37"},
-    {"sslide10pv", "shell_on_shell", "no slip: max |rel x| t<0.37"},
-    {"sslide12p", "shell_on_shell", "no slip: max |rel x| t<0.37"},
-    {"sslide12p_vec", "shell_on_shell", "no slip: max |rel x| t<0.37"},
 };
 
 bool known_shortfall(const std::string& problem, const std::string& pairing, const std::string& criterion) {

@@ -86,6 +86,10 @@ class ContactAlgorithm {
   virtual const std::string& name() const = 0;
   /// Once, after masses are lumped and before the first force evaluation.
   virtual void initialize(const ContactContext& context) = 0;
+  /// Once, right after initialize() and before the first step: move the nodes the interface found
+  /// below its surface at t = 0 out to it (LS-DYNA's IGNORE = 0), x and x0 together so that no
+  /// element starts strained. Default: nothing (penetrations, if any, stay the interface's business).
+  virtual void resolve_initial_penetrations(NodalFields& /*nodes*/) {}
 
   /// Penalty and friction forces at t^n (x^n, v^{n-1/2}) added into `out`.
   virtual void apply_forces(const NodalFields& /*nodes*/, const StepTimes& /*times*/,

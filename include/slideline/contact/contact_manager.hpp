@@ -37,6 +37,11 @@ class ContactManager {
     }
   }
 
+  /// Once after initialize(), before the first step, in the order of addition.
+  void resolve_initial_penetrations(NodalFields& nodes) {
+    for (auto& a : algorithms_) a->resolve_initial_penetrations(nodes);
+  }
+
   /// Penalty and friction forces into `out`; returns the smallest stable step the interfaces allow.
   Real apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
     Real dt = std::numeric_limits<Real>::max();

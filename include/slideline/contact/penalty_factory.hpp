@@ -1,8 +1,9 @@
 #pragma once
 /// Helpers shared by the penalty factories (src/contact/make_sliding_contact.cpp for Types 3
-/// and 10, src/contact/make_node_contact.cpp for Types 5 and 12): offsets and pass options from
-/// a *CONTACT card.
+/// and 10, src/contact/make_node_contact.cpp for Types 5 and 12): offsets, pass options and the
+/// friction policy from a *CONTACT card.
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "slideline/contact/enforcement/penalty.hpp"
@@ -54,8 +55,22 @@ inline PenaltyPassOptions penalty_pass_options(const model::Contact& card, const
   o.master_thickness_scale = thickness_scale;
   o.sliding_only = card.sliding_only_option;
   o.automatic = card.type == model::ContactType::automatic;
-  o.friction = ExponentialCoulomb{card.fs, card.fd > 0.0 ? card.fd : card.fs, card.dc};
   return o;
+}
+
+/// The card's friction law: FS, FD (FS when FD is 0), DC.
+inline ExponentialCoulomb penalty_friction(const model::Contact& card) {
+  return ExponentialCoulomb{card.fs, card.fd > 0.0 ? card.fd : card.fs, card.dc};
+}
+
+/// Interface<Friction>(args..., friction) with the card's friction policy: ExponentialCoulomb when
+/// FS or FD is positive, else Frictionless (no tangential code at all).
+template <template <class> class Interface, class... Args>
+std::unique_ptr<ContactAlgorithm> make_penalty_interface(const model::Contact& card, Args&&... args) {
+  const ExponentialCoulomb law = penalty_friction(card);
+  if (law.mu_s > 0.0 || law.mu_k > 0.0)
+    return std::make_unique<Interface<ExponentialCoulomb>>(std::forward<Args>(args)..., law);
+  return std::make_unique<Interface<Frictionless>>(std::forward<Args>(args)..., Frictionless{});
 }
 
 }  // namespace slideline

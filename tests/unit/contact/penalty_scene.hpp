@@ -16,6 +16,7 @@ struct PenaltyScene {
   NodalFields nodes;
   std::unique_ptr<PenaltyPass> pass;
   std::vector<Index> slaves;
+  ExponentialCoulomb friction;  ///< the law passed to compute() (mu = 0: no tangential force)
 };
 
 /// nx x nx master segments of size 1 at z = 0, nx x nx slave nodes at z = -penetration, unit
@@ -39,7 +40,7 @@ inline std::unique_ptr<PenaltyScene> make_penalty_scene(Index nx, Real penetrati
   s->nodes.x0 = x;
   s->nodes.mass.assign(x.size(), 1.0);
   PenaltyPassOptions o;
-  o.friction = friction;
+  s->friction = friction;
   s->pass = std::make_unique<PenaltyPass>(s->slaves, std::vector<Real>(s->slaves.size(), 0.0), std::move(master),
                                           std::make_unique<FclBroadPhase>(), o);
   s->pass->initialize(s->nodes, std::vector<Real>(static_cast<std::size_t>(nx * nx), k));

@@ -34,6 +34,7 @@
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/friction/frictionless.hpp"
 #include "slideline/contact/search/broad_phase.hpp"
 #include "slideline/contact/search/narrow_phase.hpp"
 #include "slideline/contact/search/search_cadence.hpp"
@@ -53,8 +54,12 @@ struct PenaltyPassOptions {
   Real master_thickness_scale = 1.0; ///< SFMT/SFST (dimensionless)
   bool sliding_only = false;         ///< Type 10 "sliding only": no separation once in contact
   bool automatic = false;            ///< Type 12: skip own segments and faces not facing the node
-  ExponentialCoulomb friction;       ///< mu_s = mu_k = 0: frictionless
   Real margin_fraction = 0.5;        ///< broad-phase margin = fraction x smallest segment diagonal
+  /// Stick law: largest elastic slip at the static limit, gamma = fraction x the master segment's
+  /// largest diagonal (dimensionless); the stick stiffness is k_t = max(k, mu_s N / gamma),
+  /// capped at stick_stiffness_cap x k (docs/contact.md, "Penalty contact", Friction).
+  Real elastic_slip_fraction = 1e-3;
+  Real stick_stiffness_cap = 4.0;    ///< k_t <= cap x k: the pair's stable step at most halved
 };
 
 /// The per-slave result of one cycle, kept for the serial scatter.
@@ -84,9 +89,20 @@ class PenaltyPass {
   /// already scaled: stiffness_scale is not applied), e.g. for surfaces without element blocks.
   void initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness);
 
+  /// Moves every slave found below the master surface (by initialize(), or by the last call of
+  /// this function) out to it along the master normal at its closest point, x and x0 together
+  /// (LS-DYNA IGNORE = 0: no element starts strained), then re-reads the gaps at the new
+  /// positions; a slave still below (a curved master) keeps its depth as the spring's zero.
+  /// Returns the number of nodes moved; `largest` gets the largest move (length). Allocates nothing.
+  Index resolve_initial_penetrations(NodalFields& nodes, Real& largest);
+  /// Re-reads the initial penetrations at the current positions (after another pass moved nodes).
+  void redetect_initial_penetrations(const NodalFields& nodes);
+
   /// Search or tracking, gaps, normal and friction forces for every slave at x^n, v^{n-1/2}
-  /// (parallel over slaves; writes records()). No allocation in a steady state.
-  void compute(const NodalFields& nodes, const StepTimes& times);
+  /// (parallel over slaves; writes records()). No allocation in a steady state. Friction: the
+  /// interface's compile-time friction policy (Frictionless or ExponentialCoulomb).
+  template <class Friction = Frictionless>
+  void compute(const NodalFields& nodes, const StepTimes& times, const Friction& friction = {});
 
   /// Adds the forces of the last compute() into out (serial, slave order), and accumulates the
   /// slave and master totals (force) and the friction work (energy).
@@ -119,7 +135,12 @@ class PenaltyPass {
     const Real t = opt_.master_thickness > 0.0 ? opt_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
     return 0.5 * t * opt_.master_thickness_scale;
   }
-  void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times);
+  void locate(const Vec3Field& x);
+  template <class Friction>
+  void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times, const Friction& friction);
+  /// Search and gaps at t = 0; each slave below the surface (beyond round-off) keeps its depth as
+  /// the spring's zero (g0_). Returns the count; `deepest` gets the largest depth.
+  Index detect_initial_penetrations(const NodalFields& nodes, Real& deepest);
 
   std::vector<Index> slaves_;
   std::vector<Real> slave_offset_;
@@ -135,7 +156,8 @@ class PenaltyPass {
   std::vector<SegmentProjection> proj_;
   std::vector<std::int8_t> side_;       ///< shell master: side of the slave, 0 unknown
   std::vector<std::uint8_t> touched_;   ///< sliding only: has been in contact
-  std::vector<Vec3> ft_;                ///< tangential force history (force, on the slave)
+  std::vector<Vec3> ue_;                ///< elastic slip: contact point - sticking point (length)
+  std::vector<Real> slip_seg_;          ///< per master segment: gamma (length)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
@@ -148,293 +170,6 @@ class PenaltyPass {
   bool first_ = true;
 };
 
-// ---------------------------------------------------------------------------------------------
-
-inline void PenaltyPass::initialize(const NodalFields& nodes,
-                                    const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
-  const Index ns = master_.segment_count();
-  k_seg_.assign(static_cast<std::size_t>(ns), 0.0);
-  for (Index s = 0; s < ns; ++s) {
-    const SegmentStiffnessData d = segment_stiffness_data(master_, s, blocks, nodes.x);
-    const bool shell = master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell;
-    Real k = 0.0;
-    if (shell) {
-      k = d.max_diagonal > 0.0 ? d.bulk_modulus * d.face_area / d.max_diagonal : 0.0;
-    } else {
-      k = d.element_volume > 0.0 ? d.bulk_modulus * d.face_area * d.face_area / d.element_volume : 0.0;
-    }
-    k_seg_[static_cast<std::size_t>(s)] = opt_.stiffness_scale * k;
-  }
-  initialize(nodes, std::move(k_seg_));
-}
-
-inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness) {
-  const Index ns = master_.segment_count();
-  if (static_cast<Index>(segment_stiffness.size()) != ns)
-    throw Error("PenaltyPass::initialize: one stiffness per master segment");
-  k_seg_ = std::move(segment_stiffness);
-  Real min_diag = std::numeric_limits<Real>::max();
-  for (Index s = 0; s < ns; ++s) min_diag = std::min(min_diag, segment_max_diagonal(master_, s, nodes.x));
-  Real max_offset = 0.0;
-  for (Index s = 0; s < ns; ++s) max_offset = std::max(max_offset, master_offset(s));
-  Real max_slave_offset = 0.0;
-  for (Real o : slave_offset_) max_slave_offset = std::max(max_slave_offset, o);
-  const Real margin = opt_.margin_fraction * min_diag + max_offset + max_slave_offset;
-  BroadPhaseOptions bo;
-  bo.margin = margin;
-  bo.skip_incident = opt_.automatic;
-  broad_->build(master_, nodes.x, bo);
-  std::vector<Index> watched(slaves_);
-  watched.insert(watched.end(), master_.nodes.begin(), master_.nodes.end());
-  std::sort(watched.begin(), watched.end());
-  watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
-  cadence_ = std::make_unique<SearchCadence>(watched, margin);
-
-  const std::size_t n = slaves_.size();
-  segment_.assign(n, -1);
-  proj_.assign(n, SegmentProjection{});
-  side_.assign(n, 0);
-  touched_.assign(n, 0);
-  ft_.assign(n, Vec3::Zero());
-  g0_.assign(n, 0.0);
-  gap_.assign(n, std::numeric_limits<Real>::infinity());
-  records_.assign(n, PenaltyRecord{});
-  run_begin_.assign(n, 0);
-  run_end_.assign(n, 0);
-  if (slave_part_.size() != n) slave_part_.assign(n, 0);
-  if (opt_.automatic) {
-    slave_row_.assign(n, -1);
-    slave_solid_.assign(n, 1);
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto it = std::lower_bound(master_.nodes.begin(), master_.nodes.end(), slaves_[i]);
-      if (it == master_.nodes.end() || *it != slaves_[i]) continue;
-      const Index row = static_cast<Index>(it - master_.nodes.begin());
-      slave_row_[i] = row;
-      for (Index j = master_.node_segments.begin(row); j < master_.node_segments.end(row); ++j) {
-        const Index s = master_.node_segments.value[static_cast<std::size_t>(j)];
-        if (master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell) slave_solid_[i] = 0;
-      }
-    }
-  }
-  // Initial penetrations: the first compute() at t = 0 records them as the springs' zero.
-  first_ = true;
-  StepTimes t0;
-  compute(nodes, t0);
-  initial_count_ = 0;
-  initial_max_ = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    // Round-off of a seated start (|g| <= 1e-9 x the segment size) is not a penetration.
-    const Real tol = segment_[i] >= 0 ? 1e-9 * proj_[i].projection.size : 0.0;
-    if (gap_[i] < -tol && std::isfinite(gap_[i])) {
-      g0_[i] = -gap_[i];
-      ++initial_count_;
-      initial_max_ = std::max(initial_max_, -gap_[i]);
-      gap_[i] = 0.0;
-    }
-    records_[i] = PenaltyRecord{};
-    ft_[i] = Vec3::Zero();
-    touched_[i] = 0;
-  }
-}
-
-inline Vec3 PenaltyPass::node_normal(std::size_t i, const Vec3Field& x) const {
-  const Index row = slave_row_[i];
-  Vec3 n = Vec3::Zero();
-  for (Index j = master_.node_segments.begin(row); j < master_.node_segments.end(row); ++j)
-    n += segment_area_vector(master_, master_.node_segments.value[static_cast<std::size_t>(j)], x);
-  const Real len = n.norm();
-  return len > 0.0 ? Vec3(n / len) : n;
-}
-
-/// Single-surface filters (automatic pass): a solid node only meets solid faces that face it
-/// (normals opposed by more than 60 degrees); a shell node or shell segment never meets its own
-/// part (no self-contact of a shell part).
-inline bool PenaltyPass::accepted(std::size_t i, Index s, const Vec3Field& x) const {
-  if (!opt_.automatic) return true;
-  const std::size_t su = static_cast<std::size_t>(s);
-  const bool shell_segment = master_.kind[su] == SegmentKind::shell;
-  if (slave_solid_[i] && !shell_segment) {
-    return node_normal(i, x).dot(segment_normal(master_, s, x)) < -0.5;
-  }
-  return slave_part_[i] != master_.part[su];
-}
-
-inline void PenaltyPass::search(const Vec3Field& x) {
-  broad_->update(x);
-  broad_->query(slaves_, x, std::span<const Real>(slave_offset_), candidates_);
-  cadence_->mark_searched(x);
-  const std::size_t n = slaves_.size();
-  std::size_t c = 0;
-  for (std::size_t i = 0; i < n; ++i) {  // candidates are grouped by node in slave order
-    run_begin_[i] = c;
-    while (c < candidates_.size() && candidates_[c].node == slaves_[i]) ++c;
-    run_end_[i] = c;
-  }
-  parallel_for(static_cast<Index>(n), [&](Index ii) {
-    const std::size_t i = static_cast<std::size_t>(ii);
-    const Vec3 p = x.get(slaves_[i]);
-    SegmentProjection best;
-    for (std::size_t k = run_begin_[i]; k < run_end_[i]; ++k) {
-      const Index s = candidates_[k].segment;
-      if (!accepted(i, s, x)) continue;
-      const Projection pr = project_point_to_segment(p, master_, s, x);
-      if (best.segment < 0 || is_better_projection(pr, s, best.projection, best.segment, ProjectionOptions{})) {
-        best.segment = s;
-        best.projection = pr;
-      }
-    }
-    if (best.segment != segment_[i]) side_[i] = 0;
-    proj_[i] = best;
-    segment_[i] = best.segment;
-  });
-}
-
-inline void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& times) {
-  const Vec3Field& x = nodes.x;
-  const bool due = first_ || cadence_->is_due(x);
-  if (due || opt_.automatic) {
-    if (due) {
-      search(x);
-    } else {  // automatic: the nearest accepted candidate of the still valid list
-      parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
-        const std::size_t i = static_cast<std::size_t>(ii);
-        const Vec3 p = x.get(slaves_[i]);
-        SegmentProjection best;
-        for (std::size_t k = run_begin_[i]; k < run_end_[i]; ++k) {
-          const Index s = candidates_[k].segment;
-          if (!accepted(i, s, x)) continue;
-          const Projection pr = project_point_to_segment(p, master_, s, x);
-          if (best.segment < 0 || is_better_projection(pr, s, best.projection, best.segment, ProjectionOptions{})) {
-            best.segment = s;
-            best.projection = pr;
-          }
-        }
-        if (best.segment != segment_[i]) side_[i] = 0;
-        proj_[i] = best;
-        segment_[i] = best.segment;
-      });
-    }
-    first_ = false;
-  } else {
-    parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
-      const std::size_t i = static_cast<std::size_t>(ii);
-      if (segment_[i] < 0) return;
-      proj_[i] = track_segment(x.get(slaves_[i]), segment_[i], master_, x);
-      if (proj_[i].segment != segment_[i]) {
-        if (master_.kind[static_cast<std::size_t>(proj_[i].segment)] !=
-            master_.kind[static_cast<std::size_t>(segment_[i])])
-          side_[i] = 0;
-        segment_[i] = proj_[i].segment;
-      }
-    });
-  }
-  parallel_for(static_cast<Index>(slaves_.size()),
-               [&](Index i) { evaluate(static_cast<std::size_t>(i), nodes, times); });
-  Real w2 = 0.0;
-  for (const PenaltyRecord& r : records_) w2 = std::max(w2, r.dt_inv2);
-  dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
-}
-
-inline void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times) {
-  PenaltyRecord& rec = records_[i];
-  rec.segment = -1;
-  rec.dissipation = 0.0;
-  rec.dt_inv2 = 0.0;
-  const Index s = segment_[i];
-  if (s < 0) {
-    gap_[i] = std::numeric_limits<Real>::infinity();
-    ft_[i] = Vec3::Zero();
-    return;
-  }
-  const Projection& pr = proj_[i].projection;
-  const std::size_t su = static_cast<std::size_t>(s);
-  const Index* c = &master_.conn[4 * su];
-  const Index node = slaves_[i];
-  const Real k = k_seg_[su];
-  // Spring of this pair for the step: omega^2 = k (1/m_s + sum N_a^2 / m_a); dt = 2 / omega.
-  Real inv_m = 1.0 / nodes.mass[static_cast<std::size_t>(node)];
-  for (int a = 0; a < 4; ++a) {
-    if (pr.shape[a] != 0.0) inv_m += pr.shape[a] * pr.shape[a] / nodes.mass[static_cast<std::size_t>(c[a])];
-  }
-  rec.dt_inv2 = 0.25 * k * inv_m;
-
-  const bool shell = master_.kind[su] == SegmentKind::shell;
-  Vec3 n = pr.normal;
-  Real raw = pr.gap;
-  if (shell) {
-    if (side_[i] == 0) side_[i] = raw >= 0.0 ? 1 : -1;
-    if (side_[i] < 0) {
-      n = -n;
-      raw = -raw;
-    }
-  }
-  // A point beside the segment (the closest point on an edge, the slave off to the side) or
-  // deeper than half the segment is not in contact with it.
-  const Vec3 p = nodes.x.get(node);
-  const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
-  const Real offsets = master_offset(s) + slave_offset_[i];
-  Real gap = raw - offsets;
-  if (g0_[i] > 0.0) {
-    g0_[i] = std::min(g0_[i], std::max(Real(0), -gap));
-    gap += g0_[i];
-  }
-  gap_[i] = gap;
-  const bool beside = lateral > 1e-3 * pr.size;
-  const bool too_deep = raw < -0.5 * pr.size;
-  const bool engaged = !beside && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
-  if (!engaged) {
-    ft_[i] = Vec3::Zero();
-    if (!beside && gap > 0.0 && !touched_[i]) side_[i] = 0;  // free: re-detect the side
-    if (beside || too_deep) gap_[i] = std::numeric_limits<Real>::infinity();
-    return;
-  }
-  touched_[i] = 1;
-  const Real fn = -k * gap;  // > 0 compressive
-  Vec3 f = fn * n;
-  const ExponentialCoulomb& law = opt_.friction;
-  if (law.mu_s > 0.0 || law.mu_k > 0.0) {
-    Vec3 ft = Vec3::Zero();
-    if (fn > 0.0) {
-      Vec3 vrel = nodes.v.get(node);
-      for (int a = 0; a < 4; ++a) {
-        if (pr.shape[a] != 0.0) vrel -= pr.shape[a] * nodes.v.get(c[a]);
-      }
-      const Vec3 vt = tangential_part(vrel, n);
-      const Vec3 du = times.dt_prev * vt;
-      const Vec3 trial = rotate_into_plane(ft_[i], n) - k * du;
-      // mu at the relative tangential speed (DYNA3D). Taking it at the last step's slip rate
-      // instead (mu_s while sticking) lags the coefficient one step: the map F_n -> F_{n+1} then
-      // oscillates with growth |a|, a = beta (mu_s - mu_k) N / (k_t dt), unstable for |a| > 1;
-      // a backward-Euler slip rate is worse (unstable for a < -1/2). The relative speed feeds
-      // back only through the masses.
-      const TangentialReturn r = coulomb_return_map(trial, fn, law.coefficient(vt.norm()));
-      ft = r.force;
-      if (r.slipping) rec.dissipation = r.force.norm() * (trial.norm() - r.force.norm()) / k;
-    }
-    ft_[i] = ft;
-    f += ft;
-  }
-  rec.segment = s;
-  rec.force = f;
-  rec.shape = pr.shape;
-}
-
-inline void PenaltyPass::scatter(ContactForceView out, Vec3& slave_total, Vec3& master_total,
-                                 Real& friction_work) const {
-  for (std::size_t i = 0; i < slaves_.size(); ++i) {
-    const PenaltyRecord& r = records_[i];
-    if (r.segment < 0) continue;
-    out.force.add(slaves_[i], r.force);
-    slave_total += r.force;
-    const Index* c = &master_.conn[4 * static_cast<std::size_t>(r.segment)];
-    for (int a = 0; a < 4; ++a) {
-      if (r.shape[a] == 0.0) continue;
-      const Vec3 fm = -r.shape[a] * r.force;
-      out.force.add(c[a], fm);
-      master_total += fm;
-    }
-    friction_work += r.dissipation;
-  }
-}
-
 }  // namespace slideline
+
+#include "slideline/contact/enforcement/penalty_pass_impl.hpp"

@@ -15,6 +15,8 @@ namespace slideline {
 
 /// The friction law's parameters.
 struct ExponentialCoulomb {
+  /// As a penalty interface's friction policy (Frictionless is the other one): tangential forces on.
+  static constexpr bool enabled = true;
   Real mu_s = 0.0;  ///< static coefficient (dimensionless)
   Real mu_k = 0.0;  ///< kinetic coefficient (dimensionless)
   Real beta = 0.0;  ///< decay coefficient (time / length: 1 / speed)
