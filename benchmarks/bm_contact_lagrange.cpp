@@ -16,7 +16,7 @@ using namespace slideline;
 
 namespace {
 
-void BM_LagrangeSolve(benchmark::State& state) {
+void lagrange_solve(benchmark::State& state, bool cached) {
   const Index n = static_cast<Index>(state.range(0));
   NodalFields nodes;
   Vec3Field x;
@@ -49,6 +49,9 @@ void BM_LagrangeSolve(benchmark::State& state) {
   fc.resize(nn);
   const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100};
   long sweeps = 0, solves = 0;
+  LagrangeWorkspace ws;
+  ws.dx.assign(nn, Vec3::Zero());
+  ws.rows.reserve(cs.size());
   for (auto _ : state) {
     for (Index k = 0; k < static_cast<Index>(nn); ++k) a.set(k, Vec3(0.1, 0.0, k >= nm ? -10.0 : 0.0));
     for (auto& c : cs) {
@@ -56,7 +59,7 @@ void BM_LagrangeSolve(benchmark::State& state) {
       c.tau.setZero();
     }
     ConstraintView view{nodes, mass, damping, {fixed, fixed, fixed}, rigid, a, force, fc};
-    const auto r = solve_forward_increment(cs, view, t);
+    const auto r = solve_forward_increment(cs, view, t, {}, nullptr, cached ? &ws : nullptr);
     sweeps += r.sweeps;
     ++solves;
     benchmark::DoNotOptimize(a.z.data());
@@ -67,6 +70,11 @@ void BM_LagrangeSolve(benchmark::State& state) {
   state.counters["sweeps"] = static_cast<double>(sweeps) / static_cast<double>(solves);
 }
 
+/// The reference loop (no workspace) and the cached sweeps LagrangeContact uses.
+void BM_LagrangeSolve(benchmark::State& state) { lagrange_solve(state, false); }
+void BM_LagrangeSolveCached(benchmark::State& state) { lagrange_solve(state, true); }
+
 }  // namespace
 
 BENCHMARK(BM_LagrangeSolve)->Arg(10)->Arg(32)->Arg(100)->Arg(316)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LagrangeSolveCached)->Arg(10)->Arg(32)->Arg(100)->Arg(316)->Unit(benchmark::kMicrosecond);

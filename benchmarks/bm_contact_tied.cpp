@@ -1,4 +1,4 @@
-// Kinematic tie cost (Types 2, 6, 7): one cycle of a TiedContact (condense the slaves' mass and
+// Kinematic tie cost (Types 2, 6, 7): one cycle of a TiedSurfaceContact (condense the slaves' mass and
 // force onto their masters, then follow_velocities and follow_positions) on a flat master plate of
 // nx x nx unit segments with nx x nx slave nodes on it (no slave over a master node or edge).
 // Rate: time per tied slave node and cycle. The one-time tie search is reported as init_ms.
@@ -43,7 +43,7 @@ void BM_TiedCycle(benchmark::State& state) {
   }
   std::vector<std::unique_ptr<ElementBlock>> blocks;
   std::vector<std::uint8_t> rigid(nodes.size(), 0);
-  TiedContact tie("tie", slaves, master, false);
+  TiedSurfaceContact tie("tie", slaves, master);
   const auto t0 = std::chrono::steady_clock::now();
   tie.initialize(ContactContext{nodes, blocks, nullptr, rigid});
   const double init_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -4,8 +4,8 @@
 usage: python3 scripts/plot_sslide.py DIR
 
 Reads DIR/sslide_plots.json (written by `blockcontact verify`: per problem its HDF5 file, the
-channels of each pairing, the monitored slave node with the master segment's nodes and weights,
-and the closed-form expected curves) and writes, per problem:
+channels of each pairing, the monitored slave node with its relative displacement as the criteria
+measure it, and the closed-form expected curves) and writes, per problem:
   DIR/<problem>_forces.png    F_x, F_y, R_x, R_y against time, every pairing, expected dashed
   DIR/<problem>_relative.png  relative x and y displacement of the monitored slave node against
                               the master surface point under it (negative y = interpenetration)
@@ -41,6 +41,10 @@ def legend(fig, axes):
 
 
 def relative_displacement(f, pairing):
+    # `blockcontact verify` writes the series the criteria measure: the slave node re-projected
+    # onto the current master surface at every output. Older manifests: the t = 0 segment.
+    if pairing.get("relative_x"):
+        return np.stack([np.asarray(pairing["relative_x"]), np.asarray(pairing["relative_y"])], axis=1)
     slave = read(f, "/nodes/%d/displacement" % pairing["slave_node"])
     masters = [read(f, "/nodes/%d/displacement" % n) for n in pairing["master_nodes"]]
     if slave is None or any(m is None for m in masters):

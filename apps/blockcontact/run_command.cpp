@@ -30,7 +30,9 @@ struct RunOptions {
   int threads = 0;
   double end_time = 0.0;
   bool ignore_unsupported = false;
-  double energy_limit = 0.05;  ///< stop when the energy balance error passes this fraction (0: never)
+  /// Stop when the energy balance error passes this fraction (0: never); negative: the deck's
+  /// *CONTROL_TERMINATION ENDENG, else 5%.
+  double energy_limit = -1.0;
   double flush_every = 5.0;  ///< wall-clock seconds between flushes of the output files (0: none)
 };
 
@@ -122,8 +124,10 @@ int run_deck(const RunOptions& o) {
   slideline::BuildOptions build;
   build.end_time = o.end_time;
   auto sim = slideline::build_simulation(model, build);
-  sim->controls.energy_error_limit = o.energy_limit;
-  if (o.energy_limit > 0.0) sim->controls.energy_error_warning = std::min(0.01, 0.2 * o.energy_limit);
+  if (o.energy_limit >= 0.0) {  // the flag overrides the deck's ENDENG
+    sim->controls.energy_error_limit = o.energy_limit;
+    if (o.energy_limit > 0.0) sim->controls.energy_error_warning = std::min(0.01, 0.2 * o.energy_limit);
+  }
   if (o.threads > 0) slideline::set_threads(o.threads);
   sim->initialize();  // before any output file exists: a refused model leaves no stub .h5
 
@@ -173,9 +177,9 @@ int run_deck(const RunOptions& o) {
   progress.finish();
   if (const auto& w = sim->energy_warning())
     fmt::print(stderr, "warning: the energy balance error passed {:.1f}% at t = {:g} (cycle {}); it ended at {:.2f}% "
-               "(the run stops at {:.1f}%, --energy-limit)\n",
+               "(the run stops at {:.1f}%: --energy-limit or *CONTROL_TERMINATION ENDENG)\n",
                100.0 * w->relative_error, w->time, w->cycle, 100.0 * sim->energy_error_fraction(),
-               100.0 * o.energy_limit);
+               100.0 * sim->controls.energy_error_limit);
 
   const double wall = progress.elapsed();
   const double element_cycles = double(sim->element_count()) * double(std::max(1L, sim->cycle()));
@@ -203,8 +207,8 @@ void register_run(CLI::App& app, int& exit_code) {
                 "Run even though the deck holds unsupported physics cards: drop them and list them");
   cmd->add_option("--energy-limit", o->energy_limit,
                   "Stop (exit 4) when the energy balance error passes this fraction of the largest energy "
-                  "(0: never); a warning at a fifth of it, 1% at most")
-      ->capture_default_str()
+                  "(0: never; default: the deck's *CONTROL_TERMINATION ENDENG percent, else 0.05); a warning "
+                  "at a fifth of it, 1% at most")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--flush-every", o->flush_every,
                   "Seconds of wall time between flushes of the output files (0: only at the end)")

@@ -101,7 +101,9 @@ ProblemOutcome run_problem(const std::string& name, const VerifyOptions& o, cons
       out.status = fmt::format("instability at t = {:g}: {}", e.time(), e.what());
     }
     out.h5 = base.filename().string() + ".h5";
-    out.rows = sc::evaluate_sslide_criteria(out.problem, sc::sslide_histories(history, out.problem), reported);
+    const auto histories = sc::sslide_histories(history, out.problem);
+    out.rows = sc::evaluate_sslide_criteria(out.problem, histories, reported);
+    for (const auto& p : out.problem.pairings) out.relative.push_back(sc::sslide_relative_displacement(p, histories));
   }
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return out;

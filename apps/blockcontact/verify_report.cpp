@@ -102,13 +102,17 @@ void write_plot_manifest(const std::vector<ProblemOutcome>& outcomes, const std:
         if (!masters.empty()) masters += ',';
         masters += std::to_string(n);
       }
+      // The relative displacement as the criteria measure it (re-projected at every output).
+      std::vector<double> rx, ry;
+      if (k < o.relative.size())
+        for (const auto& r : o.relative[k]) rx.push_back(r.x()), ry.push_back(r.y());
       j += fmt::format(
           "{}\n  {{\"name\": {}, \"force\": {}, \"bottom\": {}, \"right\": {}, \"slave_node\": {}, "
-          "\"master_nodes\": [{}], \"weights\": {}}}",
+          "\"master_nodes\": [{}], \"weights\": {}, \"relative_x\": {}, \"relative_y\": {}}}",
           k ? "," : "", json_string(p.name), json_string(fmt::format("/{}", sc::sslide_force_channel(pr, p))),
           json_string(fmt::format("/{}", sc::sslide_support_channel(p.bottom_support))),
           json_string(fmt::format("/{}", sc::sslide_support_channel(p.right_support))), p.monitor.slave_node, masters,
-          json_numbers(w));
+          json_numbers(w), json_numbers(rx), json_numbers(ry));
     }
     // The closed-form curves (identical for every pairing of a problem: same loads).
     std::vector<double> t, fx, fy, rx, ry;

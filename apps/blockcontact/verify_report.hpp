@@ -16,6 +16,9 @@ struct ProblemOutcome {
   std::string h5;       ///< the run's HDF5 file name (relative to the output directory), if any
   double seconds = 0.0; ///< wall time (build + run + evaluation)
   std::vector<slideline::scenarios::SslideCriterion> rows;
+  /// Per pairing: the monitor's relative displacement at each output (tracked re-projection,
+  /// sslide.hpp), for the plots; empty when it could not be measured.
+  std::vector<std::vector<slideline::Vec3>> relative;
 };
 
 /// True when every problem ran and every criterion holds.

@@ -66,6 +66,7 @@ std::unique_ptr<ContactAlgorithm> make_lagrange_contact(const model::Contact& ca
   // Node-set slaves (Type 5) stand off by the nodal radius, else half the SST thickness.
   if (slave.surface.nodes.empty()) s.nodal_radius = card.radius > 0.0 ? card.radius : 0.5 * card.sst;
   s.skip_incident = automatic;
+  s.one_constraint_per_mutual_pair = automatic;  // no over-constrained pairs (lagrange_contact.hpp)
   s.rigid_fixed_translations = rigid_fixed_translations(ctx.model);
   s.transmitted_output = automatic;
   s.birth = card.bt;

@@ -21,11 +21,10 @@ std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(const model::Contact
     throw InputError(describe(card.src) + ": MSID of " + card.keyword + " selects no master segments");
   LagrangeContactSettings s;
   s.title = title;
-  s.bilateral = true;
   s.shell_offsets = false;  // the slave nodes lie on the master surface itself
   s.birth = card.bt;
   s.death = card.dt;
-  return std::make_unique<LagrangeContact>(std::move(s), std::move(master.surface), std::move(slave.nodes),
+  return std::make_unique<SlidingOnlyContact>(std::move(s), std::move(master.surface), std::move(slave.nodes),
                                            std::move(slave.surface));
 }
 

@@ -20,7 +20,10 @@ std::unique_ptr<ContactAlgorithm> make_tied_contact(const model::Contact& card, 
       if (master.surface.kind[s] != SegmentKind::shell)
         throw InputError(describe(card.src) + ": " + card.keyword +
                          " (DYNA3D type 7) needs a shell master surface; MSID selects solid faces");
-  return std::make_unique<TiedContact>(title, std::move(slave.nodes), std::move(master.surface), shell_edge);
+  if (shell_edge) return std::make_unique<TiedShellEdgeContact>(title, std::move(slave.nodes), std::move(master.surface));
+  if (card.type == model::ContactType::tied_nodes)
+    return std::make_unique<TiedNodesContact>(title, std::move(slave.nodes), std::move(master.surface));
+  return std::make_unique<TiedSurfaceContact>(title, std::move(slave.nodes), std::move(master.surface));
 }
 
 }  // namespace slideline

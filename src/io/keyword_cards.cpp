@@ -502,6 +502,7 @@ const std::vector<Entry>& table() {
            k.get(0, "ENDTIM", m.termination.endtim);
            k.get(1, "ENDCYC", m.termination.endcyc);
            k.get(2, "DTMIN", m.termination.dtmin);
+           k.get(3, "ENDENG", m.termination.endeng);
          });
        })},
       {"*CONTROL_TIMESTEP", nullptr, plain(read_control_timestep)},

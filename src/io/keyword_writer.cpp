@@ -153,7 +153,10 @@ std::string write_keyword_string(const model::Model& m) {
   std::string o = "*KEYWORD\n";
   if (!m.title.empty()) o += "*TITLE\n" + heading(m.title);
 
-  if (m.termination.dtmin != 0.0) {
+  if (m.termination.endeng != 0.0) {
+    o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC     DTMIN    ENDENG\n";
+    o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).r(m.termination.dtmin).r(m.termination.endeng).str();
+  } else if (m.termination.dtmin != 0.0) {
     o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC     DTMIN\n";
     o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).r(m.termination.dtmin).str();
   } else {

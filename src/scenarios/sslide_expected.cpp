@@ -63,6 +63,8 @@ std::vector<std::string> sslide_channels(const SslideProblem& problem) {
     v.push_back(sslide_support_channel(p.right_support));
     v.push_back(sslide_node_channel(p.monitor.slave_node));
     for (Id n : p.monitor.master_nodes) v.push_back(sslide_node_channel(n));
+    for (const auto& seg : p.monitor.path)
+      for (Id n : seg.nodes) v.push_back(sslide_node_channel(n));
   }
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -99,16 +101,21 @@ SslideHistories sslide_histories_from_hdf5(const std::string& file, const Sslide
 
 std::vector<Vec3> sslide_relative_displacement(const SslidePairing& p, const SslideHistories& h) {
   const auto s = h.channels.find(sslide_node_channel(p.monitor.slave_node));
-  if (s == h.channels.end()) return {};
-  std::array<const std::vector<Vec3>*, 4> m{};
-  for (int k = 0; k < 4; ++k) {
-    const auto f = h.channels.find(sslide_node_channel(p.monitor.master_nodes[k]));
-    if (f == h.channels.end()) return {};
-    m[k] = &f->second;
-  }
+  if (s == h.channels.end() || p.monitor.path.empty()) return {};
+  std::vector<std::array<const std::vector<Vec3>*, 4>> m(p.monitor.path.size());
+  for (std::size_t g = 0; g < m.size(); ++g)
+    for (int k = 0; k < 4; ++k) {
+      const auto f = h.channels.find(sslide_node_channel(p.monitor.path[g].nodes[k]));
+      if (f == h.channels.end()) return {};
+      m[g][k] = &f->second;
+    }
   std::vector<Vec3> rel(s->second.size());
-  for (std::size_t r = 0; r < rel.size(); ++r)
-    rel[r] = relative_displacement(p.monitor, s->second[r], {(*m[0])[r], (*m[1])[r], (*m[2])[r], (*m[3])[r]});
+  std::vector<std::array<Vec3, 4>> u(m.size());
+  for (std::size_t r = 0; r < rel.size(); ++r) {
+    for (std::size_t g = 0; g < m.size(); ++g)
+      for (int k = 0; k < 4; ++k) u[g][k] = (*m[g][k])[r];
+    rel[r] = tracked_relative_displacement(p.monitor, s->second[r], u);
+  }
   return rel;
 }
 

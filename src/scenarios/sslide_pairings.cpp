@@ -127,8 +127,26 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
   // Monitor: the contact node nearest the centre of the contact area, and the segment under it.
   const Id slave = nearest_in_layer(upper, 0, xu + 0.5, z0 + 0.5 * r.cells);
   p.monitor = locate_on_top(lower, slave, coordinate(m, slave, 0), coordinate(m, slave, 2));
+  p.monitor.slave_x0 = Vec3(coordinate(m, slave, 0), coordinate(m, slave, 1), coordinate(m, slave, 2));
+  // The row of top-face segments under the slave's z, over the whole block length: the slave
+  // slides along +x and the criteria re-project it onto the segment it is over at each output.
+  const std::size_t top = lower.ys.size() - 1, k = cell_of(lower.zs, p.monitor.slave_x0.z());
+  for (std::size_t i = 0; i + 1 < lower.xs.size(); ++i) {
+    SslideMonitorSegment seg;
+    const std::array<std::size_t, 4> ci{i, i, i + 1, i + 1}, ck{k, k + 1, k + 1, k};
+    for (int c = 0; c < 4; ++c) {
+      seg.nodes[c] = lower.at(ci[c], top, ck[c]);
+      seg.x0[c] = lower.coord(ci[c], top, ck[c]);
+    }
+    p.monitor.path.push_back(seg);
+  }
   m.database.history_nodes.push_back(slave);
   for (Id n : p.monitor.master_nodes) m.database.history_nodes.push_back(n);
+  for (const auto& seg : p.monitor.path)
+    for (Id n : seg.nodes)
+      if (std::find(m.database.history_nodes.begin(), m.database.history_nodes.end(), n) ==
+          m.database.history_nodes.end())
+        m.database.history_nodes.push_back(n);
   return p;
 }
 

@@ -2,6 +2,7 @@
 // one becomes: shared cards, one pairing per element interaction, one contact per pairing.
 #include <algorithm>
 
+#include "slideline/contact/search/closest_point.hpp"
 #include "slideline/core/error.hpp"
 #include "sslide_build.hpp"
 
@@ -274,6 +275,25 @@ SslideProblem make_sslide_problem(const std::string& name) {
 Vec3 relative_displacement(const SslideMonitor& monitor, const Vec3& u_slave, const std::array<Vec3, 4>& u_master) {
   Vec3 u = u_slave;
   for (int k = 0; k < 4; ++k) u -= monitor.weights[k] * u_master[k];
+  return u;
+}
+
+Vec3 tracked_relative_displacement(const SslideMonitor& monitor, const Vec3& u_slave,
+                                   const std::vector<std::array<Vec3, 4>>& u_path) {
+  const Vec3 x = monitor.slave_x0 + u_slave;
+  Projection best;
+  std::size_t best_s = 0;
+  for (std::size_t s = 0; s < monitor.path.size() && s < u_path.size(); ++s) {
+    SegmentCorners c;
+    for (int k = 0; k < 4; ++k) c[k] = monitor.path[s].x0[k] + u_path[s][k];
+    const Projection pr = project_point_to_quad(x, c);
+    if (s == 0 || is_better_projection(pr, static_cast<Index>(s), best, static_cast<Index>(best_s))) {
+      best = pr;
+      best_s = s;
+    }
+  }
+  Vec3 u = u_slave;
+  for (int k = 0; k < 4; ++k) u -= best.shape[k] * u_path[best_s][k];
   return u;
 }
 

@@ -69,6 +69,7 @@ struct Builder {
   std::unordered_map<Id, Index> node_index;
   std::map<Id, LoadCurve> curves;
   std::map<Id, std::vector<Index>> part_nodes;  // unique nodes of each part
+  std::unordered_map<Index, Id> rigid_node_part;  // node -> the rigid part that moves it
 
   Index node(Id id, const model::Source& src, const char* field) const {
     const auto f = node_index.find(id);
@@ -355,6 +356,17 @@ struct Builder {
     sim->blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, mat.e, mat.pr, std::move(g.hex_conn),
                                                 std::move(g.quad_conn), thickness, std::move(ids)));
     sim->constraints.push_back(make_rigid_body(part.pid, nodes, fixed));
+    for (Index n : nodes) rigid_node_part.emplace(n, part.pid);
+  }
+
+  /// A support on a node of a rigid part would tear the node off its body: refuse it, naming the
+  /// card, the node and the part, and say how a rigid part is constrained instead.
+  void check_not_rigid(const std::vector<Index>& nodes, const model::Source& src, const char* card) const {
+    for (Index n : nodes)
+      if (const auto it = rigid_node_part.find(n); it != rigid_node_part.end())
+        throw InputError(describe(src) + ": " + card + " constrains node " + std::to_string(sim->nodes.ids[n]) +
+                         " of rigid part " + std::to_string(it->second) +
+                         "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) instead");
   }
 
   static void check_positive(Real v, const char* field, const model::Source& src) {
@@ -434,6 +446,7 @@ struct Builder {
       g.name = !spc.title.empty() ? spc.title
                                   : "spc_" + std::to_string(spc.id != 0 ? spc.id : spc.nsid);
       const auto nodes = node_set(spc.nsid, spc.src, "NSID");
+      check_not_rigid(nodes, spc.src, "*BOUNDARY_SPC_SET");
       for (int d = 0; d < 6; ++d) {
         if (spc.dof[d] == 0) continue;
         if (spc.dof[d] != 1)
@@ -458,6 +471,7 @@ struct Builder {
       Support s;
       s.axis = static_cast<Axis>(pm.dof - 1);
       s.nodes = node_set(pm.nsid, pm.src, "NSID");
+      check_not_rigid(s.nodes, pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET");
       s.has_curve = true;
       s.curve = curve(pm.lcid, pm.src, "LCID");
       s.scale = pm.sf;
@@ -525,6 +539,13 @@ struct Builder {
       throw InputError(describe(m.termination.src) + ": field DTMIN of *CONTROL_TERMINATION must be 0 or positive (got " +
                        std::to_string(m.termination.dtmin) + ")");
     c.dt_min_fraction = m.termination.dtmin > 0.0 ? m.termination.dtmin : 1e-4;
+    if (m.termination.endeng < 0.0 || !std::isfinite(m.termination.endeng))
+      throw InputError(describe(m.termination.src) + ": field ENDENG of *CONTROL_TERMINATION must be 0 or a positive "
+                       "percentage (got " + std::to_string(m.termination.endeng) + ")");
+    if (m.termination.endeng > 0.0) {
+      c.energy_error_limit = m.termination.endeng / 100.0;
+      c.energy_error_warning = std::min(0.01, 0.2 * c.energy_error_limit);
+    }
     if (!(c.end_time > 0.0) && c.max_cycles <= 0)
       throw InputError("*CONTROL_TERMINATION: ENDTIM must be positive (got " +
                        std::to_string(m.termination.endtim) + ")");

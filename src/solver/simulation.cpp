@@ -252,6 +252,7 @@ void Simulation::compute_internal_forces() {
       dt_part_ = controlling->part_id();
       dt_kind_ = controlling->kind();
     }
+    dt_block_ = controlling;
   } catch (const InstabilityError& e) {
     throw InstabilityError(std::string(e.what()) + " at t = " + std::to_string(t_) +
                                ", cycle " + std::to_string(cycle_),
@@ -304,6 +305,19 @@ void Simulation::apply_contact_forces() {
 
 // ---- The step --------------------------------------------------------------------------------
 
+std::string Simulation::step_controller() const {
+  if (dt_crit_ < dt_elements_) {
+    std::size_t k = 0;
+    for (std::size_t c = 1; c < contacts.size(); ++c)
+      if (contacts[c].stable_dt() < contacts[k].stable_dt()) k = c;
+    return contacts.size() > 0 ? "contact interface '" + contacts[k].name() + "'" : std::string("a contact interface");
+  }
+  if (dt_block_ == nullptr) return "no element";
+  const Id e = dt_block_->smallest_step_element();
+  return dt_block_->kind() + (e >= 0 ? " element " + std::to_string(e) : std::string(" elements")) + " of part " +
+         std::to_string(dt_block_->part_id());
+}
+
 StepPlan Simulation::plan_step() const {
   StepPlan p;
   const Real end = controls.end_time;
@@ -348,7 +362,8 @@ bool Simulation::step() {
   const StepPlan plan = plan_step();
   if (!(plan.dt_next > 0.0) || !std::isfinite(plan.dt_next))
     throw InstabilityError("time step collapsed to " + std::to_string(plan.dt_next) + " at t = " +
-                               std::to_string(t_) + ", cycle " + std::to_string(cycle_),
+                               std::to_string(t_) + ", cycle " + std::to_string(cycle_) +
+                               "; the step is set by " + step_controller(),
                            t_, cycle_);
   if (cycle_ == 0) dt_first_ = plan.dt_next;
   if (controls.dt_min_fraction > 0.0 && !plan.at_end &&
@@ -356,14 +371,12 @@ bool Simulation::step() {
     throw InstabilityError("time step " + std::to_string(plan.dt_next) + " fell below " +
                                std::to_string(controls.dt_min_fraction) + " x the first step (" +
                                std::to_string(dt_first_) + ") at t = " + std::to_string(t_) + ", cycle " +
-                               std::to_string(cycle_) + "; the step is set by " +
-                               (dt_crit_ < dt_elements_ ? std::string("a contact interface")
-                                                        : "the " + dt_kind_ + " elements of part " +
-                                                              std::to_string(dt_part_)),
+                               std::to_string(cycle_) + "; the step is set by " + step_controller(),
                            t_, cycle_);
   if (!plan.at_end && !(plan.t_next > t_))
     throw InstabilityError("time no longer advances at t = " + std::to_string(t_) + " (step " +
-                               std::to_string(plan.dt_next) + "), cycle " + std::to_string(cycle_),
+                               std::to_string(plan.dt_next) + "), cycle " + std::to_string(cycle_) +
+                               "; the step is set by " + step_controller(),
                            t_, cycle_);
   form_accelerations();
   apply_constraints(plan);
@@ -649,38 +662,22 @@ void Simulation::book_dictated_nodes(const StepPlan& plan) {
   const bool first = cycle_ == 0;
   for (std::size_t k = 0; k < dictated_nodes_.size(); ++k) {
     const Index i = dictated_nodes_[k];
-    const Real m = nodes.mass[i];
-    for (int c = 0; c < 3; ++c) {
-      const Real vold = dictated_v_old_[k][c];
-      const Real vnew = nodes.v[c][i];
+    // One dof of mass (or rotary inertia) m: velocity before and after, internal and external load.
+    const auto book = [&](Real m, Real vold, Real vnew, Real fi, Real fe) {
       const Real vbar = 0.5 * (vold + vnew);
       const Real dprev = 0.5 * dt_ * vold;
       const Real dnext = 0.5 * plan.dt_next * vnew;
-      const Real fi = nodes.f_int[c][i];
-      const Real fe = nodes.f_ext[c][i];
       const Real vk = first ? vold : vbar;
       e.kinetic += 0.5 * m * vk * vk;
       e.stress.add(-fi, dprev, dnext);
       e.external.add(fe, dprev, dnext);
       e.contact.add(m * (vnew - vold) / plan.dt_avg - fi - fe, dprev, dnext);
-    }
-    if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0) {
-      const Real inertia = nodes.rot_inertia[i];
-      for (int c = 0; c < 3; ++c) {
-        const Real wold = dictated_w_old_[k][c];
-        const Real wnew = nodes.omega[c][i];
-        const Real wbar = 0.5 * (wold + wnew);
-        const Real dprev = 0.5 * dt_ * wold;
-        const Real dnext = 0.5 * plan.dt_next * wnew;
-        const Real mi = nodes.m_int[c][i];
-        const Real me = nodes.m_ext[c][i];
-        const Real wk = first ? wold : wbar;
-        e.kinetic += 0.5 * inertia * wk * wk;
-        e.stress.add(-mi, dprev, dnext);
-        e.external.add(me, dprev, dnext);
-        e.contact.add(inertia * (wnew - wold) / plan.dt_avg - mi - me, dprev, dnext);
-      }
-    }
+    };
+    for (int c = 0; c < 3; ++c)
+      book(nodes.mass[i], dictated_v_old_[k][c], nodes.v[c][i], nodes.f_int[c][i], nodes.f_ext[c][i]);
+    if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0)
+      for (int c = 0; c < 3; ++c)
+        book(nodes.rot_inertia[i], dictated_w_old_[k][c], nodes.omega[c][i], nodes.m_int[c][i], nodes.m_ext[c][i]);
   }
   dictated_sums_ = e;
 }

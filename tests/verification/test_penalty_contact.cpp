@@ -81,7 +81,8 @@ TEST_P(PressedBlock, CarriesTheLoadWithActionEqualReaction) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Types, PressedBlock,
-                         ::testing::Values("sslide3p", "sslide10pv", "sslide10psl", "sslide5p", "sslide12p"));
+                         ::testing::Values("sslide3p", "sslide10pv", "sslide10psl", "sslide5p", "sslide12p"),
+                         [](const auto& info) { return std::string(info.param); });
 
 struct SlidingRun {
   std::vector<Real> peak;        ///< per contact: peak |F_x| over [0.3, 0.45]

@@ -1,12 +1,14 @@
 #pragma once
-/// LagrangeContact: contact enforced by forward-increment Lagrange multipliers
-/// (enforcement/lagrange.hpp) between slave nodes and a master surface. One final class serves
-///  - Types 3, 5, 10 and 12 with the _LAGRANGE option (unilateral: lambda >= 0, Coulomb friction
-///    with mu = mu_k + (mu_s - mu_k) exp(-beta |v_rel|)), and
-///  - Type 1 sliding only (bilateral normal constraint, no friction): the slave nodes keep their
-///    normal gap to the master surface in tension and compression and slide freely.
-/// They differ only in LagrangeContactSettings (the factories make_lagrange_contact and
-/// make_sliding_only_contact set them from the card).
+/// LagrangeInterface<Kind>: contact enforced by forward-increment Lagrange multipliers
+/// (enforcement/lagrange.hpp) between slave nodes and a master surface. The kind is a
+/// compile-time policy, one final class per interface type:
+///  - LagrangeContact (Types 3, 5, 10 and 12 with the _LAGRANGE option): unilateral,
+///    lambda >= 0, Coulomb friction with mu = mu_k + (mu_s - mu_k) exp(-beta |v_rel|);
+///  - SlidingOnlyContact (Type 1): a bilateral normal constraint, no friction: the slave nodes
+///    keep their normal gap to the master surface in tension and compression and slide freely.
+/// Everything else (sides, offsets, friction coefficients, Type 12's single-surface options) is
+/// in LagrangeContactSettings, which the factories make_lagrange_contact and
+/// make_sliding_only_contact set from the card.
 ///
 /// Per cycle, in enforce() (t^n, accelerations formed, ties, rigid bodies and supports done):
 ///  1. pairs: a broad-phase search (FCL tree) when SearchCadence says one is due, else local
@@ -43,7 +45,6 @@ namespace slideline {
 
 struct LagrangeContactSettings {
   std::string title;
-  bool bilateral = false;         ///< Type 1: tension and compression, no friction
   ExponentialCoulomb friction;    ///< mu_s = mu_k = 0: frictionless
   bool shell_offsets = false;     ///< offset shell segments by half their thickness (both sides)
   Real slave_thickness = 0.0;     ///< SST: overrides the slave shells' thickness (0: elements')
@@ -59,6 +60,13 @@ struct LagrangeContactSettings {
   /// once more, warm-started: the gap then holds on the surface as it will be, also where a
   /// sliding node crosses onto a segment of another slope within the step.
   int projection_passes = 2;
+  /// Single surface (Type 12): where two nodes constrain each other's segments (node s on segment
+  /// T of the other body, a node of T on a segment holding s), both constraints hold the same gap
+  /// and the system is nearly singular: the split of the load between them is almost free, and
+  /// Gauss-Seidel crawls (sslide12l: 130 sweeps per solve instead of 13, sslide12l_vec hitting
+  /// the 300-sweep cap). Only one of such a pair is kept: the finer side's node on the coarser
+  /// side's segment (the larger master segment wins; on a tie the lower node index).
+  bool one_constraint_per_mutual_pair = false;
   /// Translations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON1), by part id: the
   /// solve keeps the body immovable in them. Rigid parts not listed translate freely.
   std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations;
@@ -73,13 +81,22 @@ struct LagrangeSolveStats {
   long constraints = 0;     ///< constraints summed over the solves
 };
 
-class LagrangeContact final : public ContactAlgorithm {
+/// Kinds (compile-time policies) of LagrangeInterface.
+struct LagrangeContactKind {
+  static constexpr bool bilateral = false;  ///< contact: lambda >= 0, friction per the settings
+};
+struct SlidingOnlyKind {
+  static constexpr bool bilateral = true;  ///< Type 1: tension and compression, never friction
+};
+
+template <class Kind>
+class LagrangeInterface final : public ContactAlgorithm {
  public:
   /// master: the master surface; slaves: slave node indices; slave_surface: the surface the slaves
   /// come from (empty for a node set); first_part_nodes: nodes of the first body, for the
   /// transmitted force (any order).
-  LagrangeContact(LagrangeContactSettings settings, Surface master, std::vector<Index> slaves,
-                  Surface slave_surface, std::vector<Index> first_part_nodes = {})
+  LagrangeInterface(LagrangeContactSettings settings, Surface master, std::vector<Index> slaves,
+                    Surface slave_surface, std::vector<Index> first_part_nodes = {})
       : s_(std::move(settings)), master_(std::move(master)), slave_surface_(std::move(slave_surface)),
         slaves_(std::move(slaves)), first_part_nodes_(std::move(first_part_nodes)) {
     std::sort(slaves_.begin(), slaves_.end());
@@ -151,6 +168,12 @@ class LagrangeContact final : public ContactAlgorithm {
     candidates_.reserve(4 * ns);
     setup_rigid_groups(c);
     predicted_.resize(c.nodes.size());
+    constraint_of_.assign(c.nodes.size(), -1);
+    keep_.reserve(ns);
+    master_size_.reserve(ns);
+    workspace_.dx.assign(c.nodes.size(), Vec3::Zero());
+    workspace_.rows.clear();
+    workspace_.rows.reserve(ns);
     in_first_.assign(c.nodes.size(), 0);
     for (Index n : first_part_nodes_) in_first_[static_cast<std::size_t>(n)] = 1;
   }
@@ -165,6 +188,7 @@ class LagrangeContact final : public ContactAlgorithm {
     find_segments(view.nodes.x);
     slave_normals(view.nodes.x);
     form_constraints(view.nodes.x, times);
+    if (s_.one_constraint_per_mutual_pair) drop_mutual_duplicates(view.nodes.x);
     if (constraints_.empty()) {
       std::fill(slip_speed_.begin(), slip_speed_.end(), 0.0);
       return;
@@ -173,10 +197,10 @@ class LagrangeContact final : public ContactAlgorithm {
     opt.tolerance = tolerance_;
     update_rigid_groups(view, times);
     const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
-    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups);
+    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_);
     for (int pass = 1; pass < s_.projection_passes; ++pass) {
       reproject(view, times, groups);
-      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups);
+      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_);
       r.sweeps += r2.sweeps;
       r.correction = r2.correction;
       r.converged = r2.converged;
@@ -272,7 +296,7 @@ class LagrangeContact final : public ContactAlgorithm {
     const Vec3 d = x.get(slave) - pr.point;
     if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
     if (gap < -0.5 * pr.size) return false;                                // far behind it
-    if (s_.bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
+    if (Kind::bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
     if (normal_[i].squaredNorm() > 0.0) {
       const Real c = normal_[i].dot(n);
       if (slave_shell_[i] ? std::abs(c) < 0.5 : c > -0.5) return false;
@@ -284,18 +308,61 @@ class LagrangeContact final : public ContactAlgorithm {
     if (master_.is_triangle(seg)) k.shape[3] = 0.0;
     k.normal = n;
     k.target = target;
-    k.bilateral = s_.bilateral;
-    k.mu = s_.bilateral ? 0.0 : s_.friction.coefficient(slip_speed_[i]);
+    k.bilateral = Kind::bilateral;
+    k.mu = Kind::bilateral ? 0.0 : s_.friction.coefficient(slip_speed_[i]);
     // Warm start from the previous cycle's multipliers, turned into the current tangent plane.
     k.lambda = lambda_[i];
     k.tau = k.mu > 0.0 ? rotate_into_plane(tau_[i], n) : Vec3::Zero();
     const Real limit = k.mu * std::max(k.lambda, Real(0));
     if (k.tau.norm() > limit) k.tau *= limit / k.tau.norm();
-    if (!s_.bilateral) max_penetration_ = std::max(max_penetration_, -gap);
+    if (!Kind::bilateral) max_penetration_ = std::max(max_penetration_, -gap);
     else max_penetration_ = std::max(max_penetration_, std::abs(gap));
     constraints_.push_back(k);
     owner_.push_back(static_cast<Index>(i));
     return true;
+  }
+
+  /// See LagrangeContactSettings::one_constraint_per_mutual_pair. No allocation (storage reserved).
+  void drop_mutual_duplicates(const Vec3Field& x) {
+    const std::size_t nc = constraints_.size();
+    master_size_.clear();
+    for (std::size_t k = 0; k < nc; ++k) {
+      constraint_of_[static_cast<std::size_t>(constraints_[k].slave)] = static_cast<Index>(k);
+      master_size_.push_back(detail::segment_size(segment_corners(master_, segment_[static_cast<std::size_t>(owner_[k])], x)));
+    }
+    const auto holds = [&](Index seg, Index node) {
+      const Index* c = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      return c[0] == node || c[1] == node || c[2] == node || c[3] == node;
+    };
+    keep_.assign(nc, 1);
+    for (std::size_t k = 0; k < nc; ++k) {
+      const Index s = constraints_[k].slave;
+      const Index seg = segment_[static_cast<std::size_t>(owner_[k])];
+      const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      for (int a = 0; a < 4 && keep_[k]; ++a) {
+        const Index j = constraint_of_[static_cast<std::size_t>(conn[a])];
+        if (j < 0 || static_cast<std::size_t>(j) == k) continue;
+        if (!holds(segment_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(j)])], s)) continue;
+        const Real mine = master_size_[k], theirs = master_size_[static_cast<std::size_t>(j)];
+        const bool other_wins = theirs > mine || (theirs == mine && constraints_[static_cast<std::size_t>(j)].slave < s);
+        if (other_wins) keep_[k] = 0;
+      }
+    }
+    std::size_t out = 0;
+    for (std::size_t k = 0; k < nc; ++k) {
+      constraint_of_[static_cast<std::size_t>(constraints_[k].slave)] = -1;
+      if (!keep_[k]) {
+        const auto i = static_cast<std::size_t>(owner_[k]);
+        lambda_[i] = 0.0;
+        tau_[i].setZero();
+        slip_speed_[i] = 0.0;
+        continue;
+      }
+      constraints_[out] = constraints_[k];
+      owner_[out++] = owner_[k];
+    }
+    constraints_.resize(out);
+    owner_.resize(out);
   }
 
   /// Moves every constraint to the closest point of the predicted slave position on the predicted
@@ -454,6 +521,15 @@ class LagrangeContact final : public ContactAlgorithm {
   std::vector<Vec3> group_compliance_, group_force_;
   RigidGroups groups_;
   Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
+  std::vector<Index> constraint_of_;  ///< per node: its constraint this cycle, -1 (mutual-pair check)
+  std::vector<std::uint8_t> keep_;
+  std::vector<Real> master_size_;
+  LagrangeWorkspace workspace_;  ///< scratch of the solve, sized in initialize()
 };
+
+/// Types 3, 5, 10 and 12 with the _LAGRANGE option.
+using LagrangeContact = LagrangeInterface<LagrangeContactKind>;
+/// Type 1 sliding only.
+using SlidingOnlyContact = LagrangeInterface<SlidingOnlyKind>;
 
 }  // namespace slideline

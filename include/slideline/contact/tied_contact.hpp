@@ -1,9 +1,10 @@
 #pragma once
-/// TiedContact: the kinematic tied interfaces of DYNA3D, Types 2 (tied surfaces: slave surface
-/// nodes), 6 (discrete nodes tied to a surface: a slave node set) and 7 (shell edge tied to a
-/// shell surface: rotations tied too). One class serves all three: they differ only in how the
-/// slave nodes are selected (the factory) and in whether rotations are tied (Type 7 requires
-/// them; Types 2 and 6 tie them where slave and masters both have rotational degrees of freedom,
+/// TiedInterface<Kind>: the kinematic tied interfaces of DYNA3D, one final class per type, the
+/// kind a compile-time policy: TiedSurfaceContact (Type 2, tied surfaces: slave surface nodes),
+/// TiedNodesContact (Type 6, discrete nodes tied to a surface: a slave node set) and
+/// TiedShellEdgeContact (Type 7, shell edge tied to a shell surface: rotations tied too). They
+/// differ in how the slave nodes are selected (the factory) and in whether rotations are required
+/// (Type 7 requires them; Types 2 and 6 tie them where slave and masters both have rotational degrees of freedom,
 /// i.e. shell on shell, because the simulation does not integrate a dictated node's rotation:
 /// a shell slave on a solid master keeps its initial (zero) angular velocity).
 ///
@@ -26,14 +27,24 @@
 
 namespace slideline {
 
-class TiedContact final : public ContactAlgorithm {
+/// Kinds (compile-time policies) of TiedInterface. require_rotations: every tied slave must have
+/// rotational degrees of freedom, as must its masters (Type 7).
+struct TiedSurfaceKind {
+  static constexpr bool require_rotations = false;
+};
+struct TiedNodesKind {
+  static constexpr bool require_rotations = false;
+};
+struct TiedShellEdgeKind {
+  static constexpr bool require_rotations = true;
+};
+
+template <class Kind>
+class TiedInterface final : public ContactAlgorithm {
  public:
-  /// slaves: candidate slave node indices; master: the master surface; tie_rotations: Type 7
-  /// (every tied slave must then have rotational degrees of freedom, as must its masters).
-  TiedContact(std::string name, std::vector<Index> slaves, Surface master, bool tie_rotations,
-              TieSearchOptions options = {})
-      : name_(std::move(name)), candidates_(std::move(slaves)), master_(std::move(master)),
-        require_rotations_(tie_rotations), options_(options) {}
+  /// slaves: candidate slave node indices; master: the master surface.
+  TiedInterface(std::string name, std::vector<Index> slaves, Surface master, TieSearchOptions options = {})
+      : name_(std::move(name)), candidates_(std::move(slaves)), master_(std::move(master)), options_(options) {}
 
   const std::string& name() const override { return name_; }
 
@@ -64,7 +75,7 @@ class TiedContact final : public ContactAlgorithm {
     masters_.clear();
     for (std::size_t k = 0; k < links_.size(); ++k) {
       rotation_[k] = kinematic::ties_rotation(links_[k], nodes) ? 1 : 0;
-      if (require_rotations_ && !rotation_[k])
+      if (Kind::require_rotations && !rotation_[k])
         throw InputError("contact " + name_ + " (shell edge tied to a shell surface): slave node " +
                          std::to_string(nodes.ids[links_[k].slave]) +
                          " or its master nodes have no rotational degrees of freedom (shells required)");
@@ -131,7 +142,6 @@ class TiedContact final : public ContactAlgorithm {
   std::string name_;
   std::vector<Index> candidates_;
   Surface master_;
-  bool require_rotations_ = false;
   TieSearchOptions options_;
   std::vector<TiePoint> links_;
   std::vector<Index> untied_nodes_, slaves_, masters_;
@@ -140,5 +150,12 @@ class TiedContact final : public ContactAlgorithm {
   std::vector<Real> mass_;    ///< effective mass of each slave at the last condensation
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
 };
+
+/// Type 2: tied surfaces.
+using TiedSurfaceContact = TiedInterface<TiedSurfaceKind>;
+/// Type 6: nodes tied to a surface.
+using TiedNodesContact = TiedInterface<TiedNodesKind>;
+/// Type 7: shell edge tied to a shell surface (rotations too).
+using TiedShellEdgeContact = TiedInterface<TiedShellEdgeKind>;
 
 }  // namespace slideline

@@ -48,6 +48,14 @@ inline Real reduce_element_chunks(const std::vector<Real>& dt, const std::vector
   return dtmin;
 }
 
+/// Index of the first chunk with the smallest step (chunk order, so thread-count independent).
+inline std::size_t argmin_chunk(const std::vector<Real>& dt) {
+  std::size_t k = 0;
+  for (std::size_t c = 1; c < dt.size(); ++c)
+    if (dt[c] < dt[k]) k = c;
+  return k;
+}
+
 class ElementBlock {
  public:
   virtual ~ElementBlock() = default;
@@ -65,6 +73,9 @@ class ElementBlock {
   /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in
   /// LS-DYNA, rigid elements do not set the step of a model with deformable elements).
   virtual bool bounds_time_step() const { return true; }
+  /// Deck id of the element whose stable step was the smallest at the last compute_forces
+  /// (for messages when the step collapses); -1 when the block has no step of its own.
+  virtual Id smallest_step_element() const { return -1; }
   /// Small-strain bulk modulus of the block's material (force/length^2), for contact penalty
   /// stiffness; 0 for a block without one.
   virtual Real bulk_modulus() const { return 0.0; }

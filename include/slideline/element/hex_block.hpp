@@ -39,6 +39,7 @@ class HexBlock final : public ElementBlock {
                        ": the stiffness damping coefficient beta must not be negative");
     const Index ne = element_count();
     chunk_dt_.assign(chunk_count(ne), 0.0);
+    chunk_dt_element_.assign(chunk_count(ne), 0);
     chunk_hg_.assign(chunk_count(ne), 0.0);
     chunk_visc_.assign(chunk_count(ne), 0.0);
     chunk_damp_.assign(chunk_count(ne), 0.0);
@@ -127,6 +128,7 @@ class HexBlock final : public ElementBlock {
     parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
       using hex8::NodeLanes;
       Lanes dtmin = Lanes::Constant(std::numeric_limits<Real>::max());
+      Lanes dtarg = Lanes::Zero();  // per lane, the element (as a Real) with the smallest step so far
       Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero(), p_damp = Lanes::Zero();
       Index bad = -1;
       for (Index e0 = b; e0 < end; e0 += kLanes) {
@@ -274,6 +276,7 @@ class HexBlock final : public ElementBlock {
         p_hg += hg;
         p_visc += visc;
         if constexpr (damped) p_damp += damp;
+        dtarg = (dt < dtmin).select(kLaneOffsets + static_cast<Real>(e0), dtarg);
         dtmin = dtmin.min(dt);
         const std::size_t s0 = 8 * static_cast<std::size_t>(e0);
         if (valid == kLanes) {
@@ -289,7 +292,9 @@ class HexBlock final : public ElementBlock {
             }
         }
       }
-      chunk_dt_[chunk] = dtmin.minCoeff();
+      Index lane = 0;
+      chunk_dt_[chunk] = dtmin.minCoeff(&lane);
+      chunk_dt_element_[chunk] = static_cast<Index>(dtarg[lane]);
       chunk_hg_[chunk] = p_hg.sum();
       chunk_visc_[chunk] = p_visc.sum();
       chunk_damp_[chunk] = p_damp.sum();
@@ -313,7 +318,14 @@ class HexBlock final : public ElementBlock {
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_;
+  std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
+  inline static const Lanes kLaneOffsets = Lanes::LinSpaced(kLanes, 0.0, kLanes - 1.0);
+
+ public:
+  Id smallest_step_element() const override {
+    return ids_.empty() ? Id{-1} : ids_[static_cast<std::size_t>(chunk_dt_element_[argmin_chunk(chunk_dt_)])];
+  }
 };
 
 }  // namespace slideline

@@ -54,6 +54,7 @@ class ShellBlock final : public ElementBlock {
     const Index ne = element_count();
     const Index nc = chunk_count(ne);
     chunk_dt_.assign(nc, 0.0);
+    chunk_dt_element_.assign(nc, 0);
     chunk_hg_.assign(nc, 0.0);
     chunk_visc_.assign(nc, 0.0);
     chunk_damp_.assign(nc, 0.0);
@@ -68,6 +69,9 @@ class ShellBlock final : public ElementBlock {
   int nodes_per_element() const override { return 4; }
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }
+  Id smallest_step_element() const override {
+    return ids_.empty() ? Id{-1} : ids_[static_cast<std::size_t>(chunk_dt_element_[argmin_chunk(chunk_dt_)])];
+  }
   bool has_moments() const override { return true; }
   const ShellMaterial& material() const { return mat_; }
   const ShellSection& section() const { return sec_; }
@@ -136,6 +140,7 @@ class ShellBlock final : public ElementBlock {
     const int nip = rule_.n;
     parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
+      Index dtarg = b;
       Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0;
       Index bad = -1;
       for (Index e = b; e < end; ++e) {
@@ -257,7 +262,11 @@ class ShellBlock final : public ElementBlock {
                   cr * (qw[0] * qw[0] + qw[1] * qw[1]);
         }
         if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
-        dtmin = std::min(dtmin, len / (qdt + std::sqrt(qdt * qdt + c * c)));
+        const Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
+        if (dt_e < dtmin) {
+          dtmin = dt_e;
+          dtarg = e;
+        }
         const Index s0 = fbase + 4 * e;
         const Index m0 = mbase + 4 * e;
         for (int k = 0; k < 4; ++k) {
@@ -270,6 +279,7 @@ class ShellBlock final : public ElementBlock {
         }
       }
       chunk_dt_[chunk] = dtmin;
+      chunk_dt_element_[chunk] = dtarg;
       chunk_hg_[chunk] = p_hg;
       chunk_visc_[chunk] = p_visc;
       chunk_damp_[chunk] = p_damp;
@@ -315,6 +325,7 @@ class ShellBlock final : public ElementBlock {
   std::vector<Real> area0_;
   std::vector<Real> stress_;  // element-major, then point, then component
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_;
+  std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
 };
 

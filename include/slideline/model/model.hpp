@@ -259,6 +259,10 @@ struct ControlTermination {
   /// Stop when the step falls below DTMIN x the first step. LS-DYNA's blank/0 means no limit;
   /// slideline then uses 1e-4 (a collapsing step is an instability, not a reason to run forever).
   Real dtmin = 0.0;
+  /// ENDENG: stop (instability, exit 4) when the energy balance error passes ENDENG percent of
+  /// the largest energy in play. LS-DYNA's field is a change of the energy ratio in percent; blank
+  /// or 0 keeps slideline's default of 5%.
+  Real endeng = 0.0;
   Source src;
 };
 

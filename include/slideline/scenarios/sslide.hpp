@@ -31,11 +31,23 @@ enum class SslideIdealization : std::uint8_t {
 /// A slave node and the master segment under it at t = 0, with the bilinear shape-function
 /// weights of the node's projection: the master surface point's displacement is
 /// sum_k weights[k] * u(master_nodes[k]), and the relative displacement u_slave - that.
+///
+/// The slave node slides (type 1 throughout, frictional types after t ~ 0.37), so the criteria do
+/// not use that fixed segment: `path` holds the row of lower top-face segments along x under the
+/// slave (their nodes are history nodes), and at each output the slave node's current position is
+/// re-projected onto the current master surface (closest point on the segment that holds it, see
+/// relative_displacement below).
+struct SslideMonitorSegment {
+  std::array<Id, 4> nodes{};  ///< counter-clockwise seen from +y
+  std::array<Vec3, 4> x0{};   ///< initial coordinates
+};
 struct SslideMonitor {
   Id slave_node = 0;
-  std::array<Id, 4> master_nodes{};  ///< the segment, counter-clockwise seen from +y
+  std::array<Id, 4> master_nodes{};  ///< the segment at t = 0, counter-clockwise seen from +y
   Real xi = 0.0, eta = 0.0;          ///< projection in the segment's (-1, 1)^2 parameters
   std::array<Real, 4> weights{};     ///< N_k(xi, eta), summing to 1
+  Vec3 slave_x0 = Vec3::Zero();      ///< the slave node's initial coordinates
+  std::vector<SslideMonitorSegment> path;  ///< the master segments along the slave's path (+x)
 };
 
 /// One element pairing of a problem.
@@ -85,5 +97,13 @@ SslideProblem make_sslide_problem(const std::string& name);
 /// master nodes (same order as `monitor.master_nodes`).
 Vec3 relative_displacement(const SslideMonitor& monitor, const Vec3& u_slave,
                            const std::array<Vec3, 4>& u_master);
+
+/// The relative displacement against the master surface point under the slave node NOW: the slave
+/// node's current position x0 + u_slave is projected onto every segment of `monitor.path` at its
+/// current position (x0 + u_path[s][k]); the closest one holds it, and the result is
+/// u_slave - sum_k N_k(xi, eta) u_k with that segment's shape functions at the projection. Its y
+/// is the change of the normal gap (shell offsets cancel: they are in both x0's), its x the slip.
+Vec3 tracked_relative_displacement(const SslideMonitor& monitor, const Vec3& u_slave,
+                                   const std::vector<std::array<Vec3, 4>>& u_path);
 
 }  // namespace slideline::scenarios

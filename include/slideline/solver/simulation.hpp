@@ -191,6 +191,9 @@ class Simulation {
   Real peak_energy_ = 0.0;         // largest energy in play so far
   Id dt_part_ = 0;                 // part whose elements set dt_elements_
   std::string dt_kind_;            // and their kind
+  const ElementBlock* dt_block_ = nullptr;  // block whose element set dt_elements_ last
+  /// "hex8 element 12 of part 3" or "contact interface 'x'": what sets the step now (messages).
+  std::string step_controller() const;
   std::optional<EnergyWarning> energy_warning_;
   Real element_seconds_ = 0.0;
   Real contact_seconds_ = 0.0;

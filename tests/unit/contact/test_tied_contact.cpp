@@ -1,4 +1,4 @@
-// Kinematic tied interfaces (Types 2, 6, 7): TiedContact on small block meshes.
+// Kinematic tied interfaces (Types 2, 6, 7): TiedSurfaceContact and TiedShellEdgeContact on small meshes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +17,8 @@ namespace {
 constexpr Real kE = 1000.0, kNu = 0.3, kRho = 1.0;
 
 /// Largest |x_s - sum N x_m - d| and |v_s - sum N v_m| over the tie's links.
-Real tie_drift(const TiedContact& tie, const NodalFields& nodes) {
+template <class Kind>
+Real tie_drift(const TiedInterface<Kind>& tie, const NodalFields& nodes) {
   Real d = 0.0;
   for (const TiePoint& t : tie.links()) {
     d = std::max(d, (nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset).norm());
@@ -31,7 +32,7 @@ Real tie_drift(const TiedContact& tie, const NodalFields& nodes) {
 struct TiedBlocks {
   Simulation sim;
   TieBox lower, upper;
-  TiedContact* tie = nullptr;
+  TiedSurfaceContact* tie = nullptr;
   Real upper_mass = kRho * 0.8 * 0.4 * 0.8;
 
   explicit TiedBlocks(bool rigid_lower = false, Real shift = 0.0) {
@@ -46,7 +47,7 @@ struct TiedBlocks {
       sim.blocks.push_back(elastic_hexes(1, lower, kRho, kE, kNu));
     }
     sim.blocks.push_back(elastic_hexes(2, upper, kRho, kE, kNu));
-    auto t = std::make_unique<TiedContact>("tie", upper.layer(0), part_surface(sim, 1), false);
+    auto t = std::make_unique<TiedSurfaceContact>("tie", upper.layer(0), part_surface(sim, 1));
     tie = t.get();
     sim.contacts.add(std::move(t));
     sim.controls.end_time = 0.4;
@@ -156,7 +157,7 @@ struct ShellEdgeTie {
   Simulation sim;
   std::vector<Index> plate_edges, edge, top;
   Index master_first = 0, slave_first = 0;
-  TiedContact* tie = nullptr;
+  TiedShellEdgeContact* tie = nullptr;
   ShellEdgeTie() {
     TieMesh mesh;
     const int n = 4;
@@ -182,7 +183,7 @@ struct ShellEdgeTie {
     sim.blocks.push_back(elastic_shells(2, sc, 1.0, 1000.0, 0.1, 0.05));
     std::vector<Index> candidates(edge);
     candidates.insert(candidates.end(), top.begin(), top.end());  // too far from the surface: left free
-    auto t = std::make_unique<TiedContact>("edge", candidates, part_surface(sim, 1), true);
+    auto t = std::make_unique<TiedShellEdgeContact>("edge", candidates, part_surface(sim, 1));
     tie = t.get();
     sim.contacts.add(std::move(t));
     sim.supports.push_back(tie_support("edges", plate_edges, {1, 1, 1}));

@@ -12,59 +12,12 @@
 #include "slideline/material/elastic.hpp"
 #include "slideline/mesh/surface_builder.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/hex_grid.hpp"
 
 namespace slideline::test {
 
-/// An nx x ny x nz box of nodes appended to a node list; node(i, j, k) its index.
-struct TieBox {
-  Index first = 0;
-  int nx = 1, ny = 1, nz = 1;
-  Index node(int i, int j, int k) const { return first + i + (nx + 1) * (j + (ny + 1) * k); }
-  std::vector<Index> conn() const {
-    std::vector<Index> c;
-    for (int k = 0; k < nz; ++k)
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-          c.insert(c.end(), {node(i, j, k), node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j, k),
-                             node(i, j + 1, k), node(i, j + 1, k + 1), node(i + 1, j + 1, k + 1),
-                             node(i + 1, j + 1, k)});
-    return c;
-  }
-  /// Nodes of the layer j (constant y).
-  std::vector<Index> layer(int j) const {
-    std::vector<Index> out;
-    for (int k = 0; k <= nz; ++k)
-      for (int i = 0; i <= nx; ++i) out.push_back(node(i, j, k));
-    return out;
-  }
-  std::vector<Index> all() const {
-    std::vector<Index> out;
-    for (int j = 0; j <= ny; ++j)
-      for (Index n : layer(j)) out.push_back(n);
-    return out;
-  }
-};
-
-struct TieMesh {
-  std::vector<Vec3> x;
-  /// Box [origin, origin + size] with nx x ny x nz cells (ny = 0: a plate of nodes in x-z).
-  TieBox add_box(const Vec3& origin, const Vec3& size, int nx, int ny, int nz) {
-    TieBox b{static_cast<Index>(x.size()), nx, ny, nz};
-    for (int k = 0; k <= nz; ++k)
-      for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i)
-          x.push_back(origin + Vec3(size[0] * i / nx, ny ? size[1] * j / ny : 0.0, size[2] * k / nz));
-    return b;
-  }
-  void fill(NodalFields& nodes) const {
-    nodes.resize(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      nodes.ids[i] = static_cast<Id>(i + 1);
-      nodes.x0.set(static_cast<Index>(i), x[i]);
-      nodes.x.set(static_cast<Index>(i), x[i]);
-    }
-  }
-};
+using TieBox = test_support::HexGrid;
+using TieMesh = test_support::GridMesh;
 
 inline std::unique_ptr<ElementBlock> elastic_hexes(Id pid, const TieBox& b, Real rho, Real E, Real nu) {
   HexHourglass hg;

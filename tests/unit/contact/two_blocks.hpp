@@ -12,38 +12,14 @@
 #include "slideline/material/elastic.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/hex_grid.hpp"
 
 namespace slideline::test {
 
 constexpr Real kTwoBlockE = 1000.0, kTwoBlockNu = 0.3, kTwoBlockRho = 1.0;
 
-/// An nx x ny x nz box of hexahedra; node(i, j, k) numbering from `first`.
-struct BlockGrid {
-  Index first = 0;
-  int nx = 1, ny = 1, nz = 1;
-  Index node(int i, int j, int k) const { return first + i + (nx + 1) * (j + (ny + 1) * k); }
-  Index node_count() const { return (nx + 1) * (ny + 1) * (nz + 1); }
-  std::vector<Index> conn() const {
-    std::vector<Index> c;
-    for (int k = 0; k < nz; ++k)
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-          c.insert(c.end(), {node(i, j, k), node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j, k),
-                             node(i, j + 1, k), node(i, j + 1, k + 1), node(i + 1, j + 1, k + 1),
-                             node(i + 1, j + 1, k)});
-    return c;
-  }
-  std::vector<Index> layer(int j) const {
-    std::vector<Index> out;
-    for (int k = 0; k <= nz; ++k)
-      for (int i = 0; i <= nx; ++i) out.push_back(node(i, j, k));
-    return out;
-  }
-  std::vector<Index> all() const {
-    std::vector<Index> out;
-    for (Index n = first; n < first + node_count(); ++n) out.push_back(n);
-    return out;
-  }
+/// An nx x ny x nz box of hexahedra with its faces as contact surfaces.
+struct BlockGrid : test_support::HexGrid {
   /// The face of layer j as a surface: normal +y (up = true) or -y.
   Surface face(int j, bool up) const {
     Surface s;
@@ -68,22 +44,13 @@ struct TwoBlocks {
   /// (3 x 1 x 3, its bottom on the lower top face; its left face at upper_x0). rigid_fixed: a rigid lower block with these
   /// fixed dofs (else elastic, bottom fixed).
   explicit TwoBlocks(const std::array<int, 6>* rigid_fixed = nullptr, Real upper_x0 = 0.3) {
-    std::vector<Vec3> x;
+    test_support::GridMesh mesh;
     const auto add = [&](const Vec3& o, const Vec3& size, int nx, int ny, int nz) {
-      BlockGrid b{static_cast<Index>(x.size()), nx, ny, nz};
-      for (int k = 0; k <= nz; ++k)
-        for (int j = 0; j <= ny; ++j)
-          for (int i = 0; i <= nx; ++i) x.push_back(o + Vec3(size[0] * i / nx, size[1] * j / ny, size[2] * k / nz));
-      return b;
+      return BlockGrid{mesh.add_box(o, size, nx, ny, nz)};
     };
     lower = add({0, 0, 0}, {2, 0.5, 1}, 4, 1, 2);
     upper = add({upper_x0, 0.5, 0.2}, {1, 0.5, 0.6}, 3, 1, 3);
-    sim.nodes.resize(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      sim.nodes.ids[i] = static_cast<Id>(i + 1);
-      sim.nodes.x0.set(static_cast<Index>(i), x[i]);
-      sim.nodes.x.set(static_cast<Index>(i), x[i]);
-    }
+    mesh.fill(sim.nodes);
     if (rigid_fixed) {
       sim.blocks.push_back(make_rigid_mass_block(1, kTwoBlockRho, kTwoBlockE, kTwoBlockNu, lower.conn(), {}, 0.0,
                                                  {101, 102, 103, 104, 105, 106, 107, 108}));

@@ -81,7 +81,11 @@ TEST_P(HexBlockRigidMotion, GivesZeroInternalForce) {
 
 INSTANTIATE_TEST_SUITE_P(BothHourglassForms, HexBlockRigidMotion,
                          ::testing::Values(HexHourglass::Kind::viscous,
-                                           HexHourglass::Kind::physical_stiffness));
+                                           HexHourglass::Kind::physical_stiffness),
+                         [](const auto& info) {
+                           return std::string(info.param == HexHourglass::Kind::viscous ? "viscous"
+                                                                                        : "physical_stiffness");
+                         });
 
 TEST(HexBlockPatch, ConstantStrainOnDistortedMeshGivesUniformStressAndInteriorEquilibrium) {
   PatchMesh p = make_patch_mesh();

@@ -69,7 +69,7 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
     SL_EQ(title);
     SL_EQ(control_hourglass.ihq); SL_EQ(control_hourglass.qh);
     SL_EQ(bulk_viscosity.q1); SL_EQ(bulk_viscosity.q2);
-    SL_EQ(termination.endtim); SL_EQ(termination.endcyc);
+    SL_EQ(termination.endtim); SL_EQ(termination.endcyc); SL_EQ(termination.dtmin); SL_EQ(termination.endeng);
     SL_EQ(timestep.dtinit); SL_EQ(timestep.tssfac); SL_EQ(timestep.isdo); SL_EQ(timestep.tslimt);
     SL_EQ(timestep.dt2ms); SL_EQ(timestep.lctm);
     SL_EQ(control_contact.slsfac); SL_EQ(control_contact.rwpnal); SL_EQ(control_contact.islchk);

@@ -52,7 +52,7 @@ model::Model full_model() {
   m.damping_parts.push_back({1, 2, 0.5, 0, {}});
   m.damping_stiffness.push_back({2, -1.0 / 3.0e4, false, {}});
   m.damping_stiffness.push_back({1, -2.5e-5, true, {}});
-  m.termination = {0.5, 100000};
+  m.termination = {0.5, 100000, 2e-4, 7.5, {}};
   m.timestep = {1e-5, 0.6, 1, 1e-9, -1e-6, 2};
   m.control_contact = {0.2, 0.5, 0, 1, 2, 1, 0, 1};
   m.database = {0.001, 0.002, 0.003, 0.004, 0.05, {100, 105, 109}};

@@ -173,6 +173,20 @@ TEST(Sslide, GeometryOfEveryPairing) {
       const auto& hist = p.model.database.history_nodes;
       EXPECT_NE(std::find(hist.begin(), hist.end(), mon.slave_node), hist.end());
       for (Id n : mon.master_nodes) EXPECT_NE(std::find(hist.begin(), hist.end(), n), hist.end());
+      // The path: a row of top-face segments along x that holds the t = 0 segment and reaches
+      // past where the slave can slide (0.45), every node recorded, coordinates as in the model.
+      EXPECT_EQ((mon.slave_x0 - x.at(mon.slave_node)).norm(), 0.0);
+      ASSERT_FALSE(mon.path.empty());
+      bool holds_start = false;
+      for (const auto& seg : mon.path) {
+        holds_start = holds_start || seg.nodes == mon.master_nodes;
+        for (int k = 0; k < 4; ++k) {
+          EXPECT_NE(std::find(hist.begin(), hist.end(), seg.nodes[k]), hist.end());
+          EXPECT_EQ((seg.x0[k] - x.at(seg.nodes[k])).norm(), 0.0);
+        }
+      }
+      EXPECT_TRUE(holds_start);
+      EXPECT_GE(mon.path.back().x0[2].x(), mon.slave_x0.x() + 0.45);
       // Named contact and supports.
       const auto c = std::find_if(p.model.contacts.begin(), p.model.contacts.end(),
                                   [&](const model::Contact& cc) { return cc.title == pr.name; });
@@ -233,6 +247,32 @@ TEST(Sslide, RelativeDisplacementRemovesCommonMotion) {
   EXPECT_NEAR(relative_displacement(mon, shift, {shift, shift, shift, shift}).norm(), 0.0, 1e-15);
   const Vec3 d(1e-3, -2e-4, 0.0);
   EXPECT_NEAR((relative_displacement(mon, shift + d, {shift, shift, shift, shift}) - d).norm(), 0.0, 1e-15);
+}
+
+TEST(Sslide, TrackedRelativeDisplacementReprojectsOntoTheCurrentSegment) {
+  const auto p = make_sslide_problem("sslide1k");
+  const auto& mon = p.pairings.front().monitor;
+  ASSERT_GE(mon.path.size(), 2u);
+  std::vector<std::array<Vec3, 4>> u(mon.path.size());
+  const Vec3 shift(0.3, -0.2, 0.1);
+  for (auto& s : u) s.fill(shift);
+  // Common motion only: nothing relative.
+  EXPECT_NEAR(tracked_relative_displacement(mon, shift, u).norm(), 0.0, 1e-14);
+  // The slave slides 0.6 in x (onto the next segment) on a translating master: the slip, no gap change.
+  const Vec3 slide(0.6, 0.0, 0.0);
+  EXPECT_NEAR((tracked_relative_displacement(mon, shift + slide, u) - slide).norm(), 0.0, 1e-12);
+  // The master surface tilts about z through the slave's start (u_y = s (x - x_s)); the slave
+  // slides 0.6 and stays ON the tilted surface: no gap change, whereas the t = 0 weights
+  // (extrapolating the first segment) report the tilt times the distance slid.
+  const Real slope = 1e-3;
+  for (std::size_t s = 0; s < mon.path.size(); ++s)
+    for (int k = 0; k < 4; ++k) u[s][k] = Vec3(0.0, slope * (mon.path[s].x0[k].x() - mon.slave_x0.x()), 0.0);
+  const Vec3 on_surface(0.6, slope * 0.6, 0.0);
+  EXPECT_NEAR(tracked_relative_displacement(mon, on_surface, u).y(), 0.0, 1e-6 * slope);
+  std::array<Vec3, 4> first{};
+  for (std::size_t s = 0; s < mon.path.size(); ++s)
+    if (mon.path[s].nodes == mon.master_nodes) first = u[s];
+  EXPECT_NEAR(relative_displacement(mon, on_surface, first).y(), slope * 0.6, 1e-9);
 }
 
 TEST(Sslide, CommittedDecksMatchTheGenerator) {

@@ -73,6 +73,28 @@ TEST(Build, RigidPartWithFixedTranslationsStaysPutUnderLoad) {
   EXPECT_EQ(sim->constraints.size(), 0u);
 }
 
+TEST(Build, SupportOnARigidPartNodeIsRefused) {
+  model::Model m = plate_model(true);
+  m.materials.push_back(model::MatRigid{2, 0.01, 1000.0, 0.3, 0.0, 0, 0, "", {}});
+  m.node_sets.push_back({5, "", {3, 19}, {}});
+  model::BoundarySpc spc;
+  spc.nsid = 5;
+  spc.dof = {1, 1, 1, 0, 0, 0};
+  spc.src = {"deck.k", 12};
+  m.spcs.push_back(spc);
+  try {
+    build_simulation(m);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("deck.k:12"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("node 19 of rigid part 2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("CON1"), std::string::npos) << msg;
+  }
+  m.node_sets.back().nodes = {3};  // the elastic plate's node alone: fine
+  EXPECT_NO_THROW(build_simulation(m));
+}
+
 TEST(Build, ErrorsNameTheCardAndField) {
   {
     model::Model m = plate_model(true, 99);  // the block's part refers to a missing material
@@ -113,6 +135,29 @@ TEST(Build, ErrorsNameTheCardAndField) {
       EXPECT_NE(std::string(e.what()).find("deck.k:7"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("SSID of *CONTACT_SURFACE_TO_SURFACE"), std::string::npos) << e.what();
     }
+  }
+}
+
+TEST(Build, TerminationSetsTheStepAndEnergyLimits) {
+  model::Model m = plate_model(false);
+  m.termination.dtmin = 1e-3;
+  m.termination.endeng = 2.0;  // percent
+  const auto sim = build_simulation(m);
+  EXPECT_DOUBLE_EQ(sim->controls.dt_min_fraction, 1e-3);
+  EXPECT_DOUBLE_EQ(sim->controls.energy_error_limit, 0.02);
+  EXPECT_DOUBLE_EQ(sim->controls.energy_error_warning, 0.004);
+  m.termination = {0.01, 0, 0.0, 0.0, {}};  // blank: the defaults
+  const auto dflt = build_simulation(m);
+  EXPECT_DOUBLE_EQ(dflt->controls.dt_min_fraction, 1e-4);
+  EXPECT_DOUBLE_EQ(dflt->controls.energy_error_limit, 0.05);
+  m.termination.endeng = -1.0;
+  m.termination.src = {"deck.k", 3};
+  try {
+    build_simulation(m);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.k:3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ENDENG"), std::string::npos) << e.what();
   }
 }
 

@@ -14,6 +14,7 @@
 #include "slideline/material/elastic.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/hex_grid.hpp"
 
 using namespace slideline;
 
@@ -21,51 +22,8 @@ namespace {
 
 constexpr Real kE = 1000.0, kNu = 0.3, kRho = 1.0;
 
-/// Appends an nx x ny x nz box of hexahedra [x0, x0 + size] to a node list; returns its
-/// connectivity and fills `index(i, j, k)` lookups through `first`.
-struct Box {
-  Index first = 0;
-  int nx = 1, ny = 1, nz = 1;
-  Index node(int i, int j, int k) const { return first + i + (nx + 1) * (j + (ny + 1) * k); }
-  std::vector<Index> conn() const {
-    std::vector<Index> c;
-    for (int k = 0; k < nz; ++k)
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-          // Bottom face (y = j) counter-clockwise seen from +y, then the top face above it.
-          c.insert(c.end(), {node(i, j, k), node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j, k),
-                             node(i, j + 1, k), node(i, j + 1, k + 1), node(i + 1, j + 1, k + 1),
-                             node(i + 1, j + 1, k)});
-    return c;
-  }
-  /// Nodes of the layer j.
-  std::vector<Index> layer(int j) const {
-    std::vector<Index> out;
-    for (int k = 0; k <= nz; ++k)
-      for (int i = 0; i <= nx; ++i) out.push_back(node(i, j, k));
-    return out;
-  }
-};
-
-struct Mesh {
-  std::vector<Vec3> x;
-  Box add_box(const Vec3& origin, const Vec3& size, int nx, int ny, int nz) {
-    Box b{static_cast<Index>(x.size()), nx, ny, nz};
-    for (int k = 0; k <= nz; ++k)
-      for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i)
-          x.push_back(origin + Vec3(size[0] * i / nx, size[1] * j / ny, size[2] * k / nz));
-    return b;
-  }
-  void fill(NodalFields& nodes) const {
-    nodes.resize(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      nodes.ids[i] = static_cast<Id>(i + 1);
-      nodes.x0.set(static_cast<Index>(i), x[i]);
-      nodes.x.set(static_cast<Index>(i), x[i]);
-    }
-  }
-};
+using Box = test_support::HexGrid;
+using Mesh = test_support::GridMesh;
 
 std::unique_ptr<ElementBlock> elastic_block(Id pid, const Box& b) {
   HexHourglass hg;
@@ -236,7 +194,16 @@ Real run_driven_tie(bool with_drive, Real& worst_energy, Vec3& slave_displacemen
   s.axis = Axis::x;
   s.nodes = m.lower.layer(1);
   s.has_curve = true;
-  s.curve = LoadCurve({{0.0, 0.0}, {0.4, 0.02}}, "drive");
+  // u = 0.02 (t / 0.4)^2: a drive that starts at rest. A prescribed velocity that jumps at t = 0
+  // is an impulse the central-difference balance books as m v^2 of work against m v^2 / 2 of
+  // kinetic energy (2.5% of this model's energy, independent of dt); that is the start-up, not
+  // the tie.
+  std::vector<std::pair<Real, Real>> pts;
+  for (int k = 0; k <= 40; ++k) {
+    const Real t = 0.01 * k;
+    pts.push_back({t, 0.02 * (t / 0.4) * (t / 0.4)});
+  }
+  s.curve = LoadCurve(pts, "drive");
   drive.supports.push_back(s);
   m.sim.supports.push_back(fixed_group("bottom", m.lower.layer(0), {1, 1, 1}));
   if (with_drive) m.sim.supports.push_back(drive);
@@ -249,8 +216,6 @@ Real run_driven_tie(bool with_drive, Real& worst_energy, Vec3& slave_displacemen
   m.sim.damping = {d1, d2};
   m.sim.body_loads.push_back(body_load(Axis::y, 50.0, 2, 0.05));
   m.sim.body_loads.push_back(body_load(Axis::z, -20.0, 2, 0.05));
-  // The driven master's balance error is reported, not used to stop (see the note in the test).
-  m.sim.controls.energy_error_limit = 0.0;
   m.sim.initialize();
   Real worst = 0.0;
   worst_energy = 0.0;
@@ -273,6 +238,7 @@ TEST(ConstraintOrder, TiedSlaveFollowsASupportedDampedMasterExactly) {
   EXPECT_NEAR(u[0], 0.02, 2e-3);
   EXPECT_GT(u[1], 1e-5);
   std::printf("tie, driven + damped master: max relative balance error %.3e\n", energy);
+  EXPECT_LT(energy, 1e-3);
 }
 
 TEST(ConstraintOrder, TieWithDifferentlyDampedPartsBalancesEnergy) {
