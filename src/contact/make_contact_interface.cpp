@@ -21,6 +21,39 @@ std::vector<Id> all_parts(const ContactBuildContext& ctx) {
   return parts;
 }
 
+const model::Box* find_box(const model::Model& m, Id id) {
+  for (const auto& b : m.boxes)
+    if (b.boxid == id) return &b;
+  return nullptr;
+}
+
+bool inside(const model::Box& b, const Vec3& p) {
+  for (int k = 0; k < 3; ++k)
+    if (p[k] < b.min[static_cast<std::size_t>(k)] || p[k] > b.max[static_cast<std::size_t>(k)]) return false;
+  return true;
+}
+
+/// The segments of `surf` whose centroid lies in `box` (at the initial coordinates), with
+/// adjacency rebuilt.
+Surface segments_in_box(const Surface& surf, const model::Box& box, const NodalFields& nodes) {
+  Surface out;
+  for (Index s = 0; s < surf.segment_count(); ++s) {
+    const Index* c = &surf.conn[4 * static_cast<std::size_t>(s)];
+    const int n = surf.is_triangle(s) ? 3 : 4;
+    Vec3 centroid = Vec3::Zero();
+    for (int a = 0; a < n; ++a) centroid += nodes.x0.get(c[a]);
+    if (!inside(box, centroid / n)) continue;
+    out.conn.insert(out.conn.end(), c, c + 4);
+    out.block.push_back(surf.block[s]);
+    out.element.push_back(surf.element[s]);
+    out.part.push_back(surf.part[s]);
+    out.kind.push_back(surf.kind[s]);
+    out.thickness.push_back(surf.thickness[s]);
+  }
+  build_surface_adjacency(out);
+  return out;
+}
+
 }  // namespace
 
 std::string contact_title(const model::Contact& card, std::size_t position) {
@@ -43,6 +76,17 @@ ContactSide resolve_contact_side(const model::Contact& card, bool slave, const C
   const int typ = slave ? card.sstyp : card.mstyp;
   const std::string field = slave ? "SSID" : "MSID";
   const std::string context = describe(card.src) + ": " + field + " of " + card_name(card);
+  // SBOXID / MBOXID (domain limiting): only the side's nodes, and segments whose centroid, lie in
+  // the box at the start; applied here once, at build time, so every interface type honours it.
+  const Id boxid = slave ? card.sboxid : card.mboxid;
+  const model::Box* box = nullptr;
+  if (boxid != 0) {
+    box = find_box(ctx.model, boxid);
+    if (!box)
+      throw InputError(describe(card.src) + ": " + std::string(slave ? "SBOXID" : "MBOXID") + " of " + card_name(card) +
+                       " refers to undefined box " + std::to_string(boxid) + " (*DEFINE_BOX)");
+  }
+  const std::string box_note = box ? " inside box " + std::to_string(boxid) : std::string();
   ContactSide side;
   switch (typ) {
     case 0: {
@@ -61,6 +105,10 @@ ContactSide resolve_contact_side(const model::Contact& card, bool slave, const C
       if (!slave)
         throw InputError(context + ": MSTYP = 4 (node set) cannot be a master surface");
       side.nodes = ctx.sets.node_set(sid, context);
+      if (box) {
+        std::erase_if(side.nodes, [&](Index n) { return !inside(*box, ctx.nodes.x0.get(n)); });
+        if (side.nodes.empty()) throw InputError(context + " selects no nodes" + box_note);
+      }
       return side;
     case 5:
       side.parts = all_parts(ctx);
@@ -73,8 +121,9 @@ ContactSide resolve_contact_side(const model::Contact& card, bool slave, const C
   if (!side.parts.empty())
     side.surface = build_surface_from_parts(ctx.blocks, ctx.nodes, side.parts, context);
   build_surface_adjacency(side.surface);
+  if (box) side.surface = segments_in_box(side.surface, *box, ctx.nodes);
   side.nodes = side.surface.nodes;
-  if (side.nodes.empty()) throw InputError(context + " selects no segments");
+  if (side.nodes.empty()) throw InputError(context + " selects no segments" + box_note);
   return side;
 }
 

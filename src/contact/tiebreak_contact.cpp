@@ -95,6 +95,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   delta_.assign(n, Vec3::Zero());
   track_.assign(n, -1);
   friction_force_.assign(n, Vec3::Zero());
+  tie_force_.assign(n, Vec3::Zero());
   for (std::size_t k = 0; k < n; ++k) track_[k] = links_[k].segment;
   friction_work_ = 0.0;
   slave_ = master_total_ = Vec3::Zero();
@@ -127,6 +128,7 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
     delta_[k] = d;
     const Vec3 f = -(kappa_[k] * area_[k]) * d;
+    tie_force_[k] = f;
     out.force.add(t.slave, f);
     for (int a = 0; a < 4; ++a)
       if (t.shape[a] != 0.0) out.force.add(t.master[a], -t.shape[a] * f);
@@ -140,9 +142,9 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     for (std::size_t k = 0; k < n; ++k) {
       if (released_[k]) continue;
       const Vec3 f = -(kappa_[k] * area_[k]) * delta_[k];
-      if (failure_index(f, oriented_normal(k, nodes.x), p_.normal_failure, p_.shear_failure, p_.normal_exponent,
-                        p_.shear_exponent) >= 1.0)
-        released_[k] = 1;
+      const Vec3 nk = oriented_normal(k, nodes.x);
+      if (failure_index(f, nk, p_.normal_failure, p_.shear_failure, p_.normal_exponent, p_.shear_exponent) >= 1.0)
+        release(k, nk);
     }
     return;
   }
@@ -167,9 +169,21 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
       const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
       if (l < 0) continue;
       area_[l] -= segment_share_[j];
-      if (area_[l] <= 1e-12 * area0_[l]) area_[l] = 0.0, released_[l] = 1;
+      if (area_[l] <= 1e-12 * area0_[l]) {
+        area_[l] = 0.0;
+        release(static_cast<std::size_t>(l), oriented_normal(static_cast<std::size_t>(l), nodes.x));
+      }
     }
   }
+}
+
+void TiebreakContact::release(std::size_t k, const Vec3& n) {
+  released_[k] = 1;
+  // The friction stick force starts from the tie's last tangential force (the return map of the
+  // next cycle caps it at mu N): the shear the tie carried is handed over instead of dropping to
+  // zero and being rebuilt, which would jolt the bodies at the failure.
+  const Vec3 f = tie_force_[k];
+  friction_force_[k] = f - f.dot(n) * n;
 }
 
 void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times,

@@ -367,6 +367,22 @@ void read_curve(const Context& ctx, Block& b, Model& m, bool titled) {
   m.curves.push_back(std::move(cv));
 }
 
+void read_box(const Context& ctx, Block& b, Model& m, bool titled) {
+  model::Box box;
+  if (titled) box.title = heading(require(ctx, b, "title"));
+  const Line& l = require(ctx, b, "BOXID");
+  Card c = card_of(ctx, l, b);
+  c.get(0, "BOXID", box.boxid);
+  static const char* const names[] = {"XMN", "XMX", "YMN", "YMX", "ZMN", "ZMX"};
+  for (int k = 0; k < 3; ++k) {
+    c.get(1 + 2 * k, names[2 * k], box.min[static_cast<std::size_t>(k)]);
+    c.get(2 + 2 * k, names[2 * k + 1], box.max[static_cast<std::size_t>(k)]);
+  }
+  box.src = ctx.source(l.number);
+  warn_extra_cards(ctx, b);
+  m.boxes.push_back(std::move(box));
+}
+
 void read_damping_global(const Context& ctx, Block& b, Model& m) {
   single_card(ctx, b, [&](const Card& c, const Line& l) {
     model::DampingGlobal d;
@@ -529,6 +545,7 @@ const std::vector<Entry>& table() {
          });
        })},
       {"*DEFINE_CURVE", "_TITLE", read_curve},
+      {"*DEFINE_BOX", "_TITLE", read_box},
       {"*DAMPING_GLOBAL", nullptr, plain(read_damping_global)},
       {"*DAMPING_PART_MASS", nullptr, plain(read_damping_part)},
       {"*DAMPING_PART_STIFFNESS", "_SET", read_damping_stiffness},

@@ -78,6 +78,9 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
   const IdSet curves = ck.collect(m.curves, "curve", [](const auto& c) { return c.lcid; },
                                   [](const auto& c) { return c.src; });
 
+  const IdSet boxes = ck.collect(m.boxes, "box", [](const auto& b) { return b.boxid; },
+                                 [](const auto& b) { return b.src; });
+
   IssueGroups element_issues;
   const auto check_element = [&](const auto& e, const char* keyword) {
     const model::Source src = model::element_source(m, e);
@@ -182,6 +185,11 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
   for (const auto& c : m.contacts) {
     check_side(c, "SSID", c.ssid, c.sstyp);
     if (c.type != model::ContactType::automatic) check_side(c, "MSID", c.msid, c.mstyp);
+    const std::string who = c.keyword.empty() ? std::string("*CONTACT") : c.keyword;
+    if (c.sboxid != 0 && !boxes.count(c.sboxid))
+      ck.add(c.src, who + " SBOXID refers to undefined box " + std::to_string(c.sboxid));
+    if (c.mboxid != 0 && !boxes.count(c.mboxid))
+      ck.add(c.src, who + " MBOXID refers to undefined box " + std::to_string(c.mboxid));
   }
   return ck.out;
 }

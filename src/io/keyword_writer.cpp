@@ -269,6 +269,11 @@ std::string write_keyword_string(const model::Model& m) {
     o += "$#                 A                   O\n";
     for (const auto& [a, v] : cv.points) o += CardOut(kCurvePoint).r(a).r(v).str();
   }
+  for (const auto& box : m.boxes) {
+    o += box.title.empty() ? "*DEFINE_BOX\n" : "*DEFINE_BOX_TITLE\n" + heading(box.title);
+    o += "$#   BOXID       XMN       XMX       YMN       YMX       ZMN       ZMX\n";
+    o += CardOut().i(box.boxid).r(box.min[0]).r(box.max[0]).r(box.min[1]).r(box.max[1]).r(box.min[2]).r(box.max[2]).str();
+  }
   write_contacts(m, o);
 
   if (!m.nodes.empty()) {

@@ -46,7 +46,6 @@ constexpr Shortfall kKnownShortfalls[] = {
     {"sslide8p", "node_on_shell", "time of peak |F_y|"},
     {"sslide9pt", "solid_on_solid", "peak |F_y| (tensile failure)"},
     {"sslide9ps", "solid_on_solid", "peak |F_x| (shear failure)"},
-    {"sslide9ps", "solid_on_solid", "time of peak |F_x|"},
     {"sslide9ps", "solid_on_solid", "peak |R_x| [0.3,0.45]"},
     {"sslide9ps", "solid_on_solid", "no slip: max |rel x| t<0.37"},
     {"sslide9ps", "solid_on_solid", "interpenetration max(-rel y)"},

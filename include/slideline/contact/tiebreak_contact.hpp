@@ -100,6 +100,7 @@ class TiebreakContact final : public ContactAlgorithm {
   Vec3 oriented_normal(std::size_t k, const Vec3Field& x) const {
     return side_[k] * segment_normal(master_, links_[k].segment, x);
   }
+  void release(std::size_t k, const Vec3& n);
   void contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times, ContactForceView out);
 
   std::string name_;
@@ -121,6 +122,7 @@ class TiebreakContact final : public ContactAlgorithm {
   std::vector<Vec3> segment_force_;
   std::vector<Index> track_;         ///< per link: master segment tracked after release
   std::vector<Vec3> friction_force_; ///< per link: tangential force after release (history)
+  std::vector<Vec3> tie_force_;      ///< per link: the tie's force on the slave at the last cycle
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();

@@ -201,6 +201,15 @@ struct LoadBodyParts {
   Source src;
 };
 
+/// *DEFINE_BOX: an axis-aligned box [XMN, XMX] x [YMN, YMX] x [ZMN, ZMX] (contact SBOXID / MBOXID).
+struct Box {
+  Id boxid = 0;
+  std::string title;
+  std::array<Real, 3> min{0.0, 0.0, 0.0};
+  std::array<Real, 3> max{0.0, 0.0, 0.0};
+  Source src;
+};
+
 /// *DEFINE_CURVE: y = SFO * f((t - OFFA) / SFA) + OFFO, piecewise linear, constant outside.
 struct Curve {
   Id lcid = 0;
@@ -376,6 +385,7 @@ struct Model {
   std::vector<LoadBody> body_loads;
   std::optional<LoadBodyParts> body_load_parts;
   std::vector<Curve> curves;
+  std::vector<Box> boxes;
   std::optional<DampingGlobal> damping_global;
   std::vector<DampingPartMass> damping_parts;
   std::vector<DampingPartStiffness> damping_stiffness;

@@ -176,4 +176,72 @@ TEST(TiebreakNodes, SpringsVoteTheirStableStep) {
   EXPECT_NEAR(m.tie->stable_dt(), 2.0 / std::sqrt(k * (1.0 / ms + 1.0 / mm)), 1e-9);
 }
 
+/// Type 9 between shells (issue 9, item: post-failure shell thickness): a 3 x 3 shell plate
+/// (t = 0.1) on [0, 1]^2 tied to a fixed 4 x 4 shell plate (t = 0.1) on [-0.5, 1.5]^2 at the stand-off of their half
+/// thicknesses, (0.1 + 0.1) / 2, pressed (3) and then sheared until the tie fails. After failure it
+/// must behave as Type 3 with shell offsets: held by friction (mu 0.5 x 3 > the shear) at the same
+/// stand-off, the mid-surfaces (t_s + t_m) / 2 apart.
+TEST(TiebreakSurface, ShellsKeepTheirThicknessOffsetAfterFailure) {
+  Simulation sim;
+  TieMesh mesh;
+  const TieBox master = mesh.add_box({-0.5, 0.5, -0.5}, {2, 0, 2}, 4, 0, 4);  // larger: room to slide
+  const Real standoff = 0.5 * (0.1 + 0.1);
+  const TieBox slave = mesh.add_box({0, 0.5 + standoff, 0}, {1, 0, 1}, 3, 0, 3);
+  mesh.fill(sim.nodes);
+  auto quads = [](const TieBox& b) {
+    std::vector<Index> c;
+    for (int k = 0; k < b.nz; ++k)
+      for (int i = 0; i < b.nx; ++i)
+        c.insert(c.end(), {b.node(i, 0, k), b.node(i, 0, k + 1), b.node(i + 1, 0, k + 1), b.node(i + 1, 0, k)});
+    return c;
+  };
+  sim.blocks.push_back(elastic_shells(1, quads(master), 1.0, 1000.0, 0.1, 0.1));
+  sim.blocks.push_back(elastic_shells(2, quads(slave), 1.0, 1000.0, 0.1, 0.1));
+  TiebreakParameters p = parameters(TiebreakParameters::FailureUnit::segment, 1e4, 1.0);
+  p.penalty_factor = 2.0;
+  p.friction.mu_s = p.friction.mu_k = 0.5;
+  auto t = std::make_unique<TiebreakContact>("tiebreak", slave.layer(0), part_surface(sim, 2), part_surface(sim, 1), p);
+  TiebreakContact* tie = t.get();
+  sim.contacts.add(std::move(t));
+  sim.supports.push_back(tie_support("master", master.layer(0), {1, 1, 1}));
+  MassDamping d;
+  d.alpha = 5.0;
+  sim.damping = {d};
+  sim.controls.dt_scale = 0.8;
+  const Real mass = 1.0 * 0.1 * 1.0;
+  sim.body_loads.push_back(ramped_load(Axis::y, -3.0 / mass, 2, 0.0, 0.2));
+  sim.body_loads.push_back(ramped_load(Axis::x, 2.0 / mass, 2, 0.3, 2.3));  // 1.0 (the failure force) at t = 1.3
+  sim.controls.end_time = 1.6;
+  sim.initialize();
+  ASSERT_EQ(tie->links().size(), slave.layer(0).size());
+  Real failed_at = -1.0, x_at_failure = 0.0;
+  Vec3 f_sum = Vec3::Zero();
+  int n_sum = 0;
+  const Index probe = slave.layer(0)[5];  // an interior node
+  while (sim.step()) {
+    bool all = true;
+    for (auto r : tie->released()) all = all && r;
+    if (all && failed_at < 0.0) failed_at = sim.time(), x_at_failure = sim.nodes.x.get(probe)[0];
+    if (sim.time() >= 1.4) f_sum += tie->slave_force(), ++n_sum;  // after failure
+  }
+  Real lo = 1e300, hi = -1e300;
+  for (Index n : slave.layer(0)) {
+    const Real gap = sim.nodes.x.get(n)[1] - 0.5;
+    lo = std::min(lo, gap), hi = std::max(hi, gap);
+  }
+  const Vec3 f = f_sum / std::max(n_sum, 1);
+  const Real slip = sim.nodes.x.get(probe)[0] - x_at_failure;
+  std::printf("type 9 shells: released at t %.3f, stand-off after failure %.5f..%.5f (expected %.3f), mean F on "
+              "[1.4, 1.6] (%.3f %.3f), slip after failure %.2e\n",
+              failed_at, lo, hi, standoff, f[0], f[1], slip);
+  EXPECT_GT(failed_at, 1.25);  // the shear reaches the failure force 1.0 at t = 1.3
+  EXPECT_LT(failed_at, 1.35);
+  // The contact surfaces stay (t_s + t_m) / 2 apart, less the penalty's give under the load of 3.
+  EXPECT_NEAR(lo, standoff, 0.05 * standoff);
+  EXPECT_NEAR(hi, standoff, 0.05 * standoff);
+  EXPECT_NEAR(f[1], 3.0, 0.02 * 3.0);   // the compression carried by the contact
+  EXPECT_NEAR(f[0], -1.2, 0.05 * 1.2);  // friction holds the mean shear load on [1.4, 1.6]
+  EXPECT_LT(std::abs(slip), 0.005);     // stuck: mu N = 1.5 > 1.3
+}
+
 }  // namespace

@@ -145,6 +145,9 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
     SL_EQ(lcid); SL_EQ(title); SL_EQ(sidr); SL_EQ(sfa); SL_EQ(sfo); SL_EQ(offa); SL_EQ(offo); SL_EQ(dattyp);
     SL_EQ(points);
   });
+  d.list("boxes", ma.boxes, mb.boxes, [&](const std::string& w, const auto& a, const auto& b) {
+    SL_EQ(boxid); SL_EQ(title); SL_EQ(min); SL_EQ(max);
+  });
   d.list("damping_parts", ma.damping_parts, mb.damping_parts, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag);
   });

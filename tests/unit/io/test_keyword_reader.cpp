@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "slideline/core/error.hpp"
@@ -253,6 +254,37 @@ TEST(KeywordReader, CheckReferencesNamesEveryMissingId) {
         "SSID refers to undefined segment set 4", "MSID refers to undefined part 5"})
     EXPECT_NE(all.find(expected), std::string::npos) << "missing: " << expected << "\nin:\n" << all;
   EXPECT_EQ(problems.size(), 11u) << all;
+}
+
+TEST(KeywordReader, DefineBoxAndContactBoxReferences) {
+  const std::string deck =
+      "*NODE\n1,0,0,0\n2,1,0,0\n"
+      "*ELEMENT_SHELL\n1,2,1,2,2,1\n"
+      "*DEFINE_BOX_TITLE\nupper\n"
+      "1,-1.0,2.0,0.5,1.5,-1.0,2.0\n"
+      "*DEFINE_BOX\n"
+      "$ BOXID XMN XMX YMN YMX ZMN ZMX\n"
+      "2,0.0,1.5,0.0,1.0,0.0,1.02\n"
+      "*CONTACT_SURFACE_TO_SURFACE\n1,2,3,3,1,7\n";
+  const auto m = read_keyword_string(deck, "boxes.k", nullptr);
+  ASSERT_EQ(m.boxes.size(), 2u);
+  EXPECT_EQ(m.boxes[0].boxid, 1);
+  EXPECT_EQ(m.boxes[0].title, "upper");
+  EXPECT_EQ(m.boxes[0].min, (std::array<Real, 3>{-1.0, 0.5, -1.0}));
+  EXPECT_EQ(m.boxes[0].max, (std::array<Real, 3>{2.0, 1.5, 2.0}));
+  EXPECT_EQ(m.boxes[1].boxid, 2);
+  EXPECT_EQ(m.boxes[1].src.line, 11);
+  EXPECT_EQ(m.boxes[1].max, (std::array<Real, 3>{1.5, 1.0, 1.02}));
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_EQ(m.contacts[0].sboxid, 1);
+  EXPECT_EQ(m.contacts[0].mboxid, 7);
+  const auto problems = check_references(m);
+  std::string all;
+  for (const auto& p : problems) all += to_string(p) + "\n";
+  // Box 1 exists; box 7 does not: named with the contact card's file and line.
+  EXPECT_EQ(all.find("SBOXID"), std::string::npos) << all;
+  EXPECT_NE(all.find("boxes.k:13: *CONTACT_SURFACE_TO_SURFACE MBOXID refers to undefined box 7"), std::string::npos)
+      << all;
 }
 
 }  // namespace

@@ -46,6 +46,8 @@ model::Model full_model() {
   m.body_load_parts = LoadBodyParts{1, {}};
   m.curves.push_back({1, "y ramp", 0, 1.0, 1.0, 0.0, 0.0, 0, {{0.0, 0.0}, {0.1, 1.0}, {1.0 / 3.0, 1.0}}, {}});
   m.curves.push_back({2, "", 1, 2.0, 0.5, 0.01, -0.02, 0, {{0.0, 0.0}, {0.3, 0.0}, {0.4, 1.0}}, {}});
+  m.boxes.push_back({1, "upper half", {-1.0, 0.5, -1.0}, {2.0, 1.0 / 3.0 + 1.0, 2.0}, {}});
+  m.boxes.push_back({2, "", {0.0, -1e-3, 0.0}, {1.5, 1.0, 1.02}, {}});
   m.damping_global = DampingGlobal{0, 15.0, {1, 1, 1, 0, 0, 0}, {}};
   m.damping_parts.push_back({1, 2, 0.5, 0, {}});
   m.damping_stiffness.push_back({2, -1.0 / 3.0e4, false, {}});
@@ -114,6 +116,8 @@ model::Model full_model() {
   m.contacts.push_back(contact(ContactType::automatic, Enforcement::penalty));
   auto c12 = contact(ContactType::automatic, Enforcement::penalty);
   c12.automatic_general = true;
+  c12.sboxid = 1;  // domain limiting (*DEFINE_BOX)
+  c12.mboxid = 2;
   m.contacts.push_back(c12);
   return m;
 }

@@ -30,7 +30,7 @@ TEST(KeywordUnsupported, PhysicsPrefixesAreErrorsOutputCardsAreNot) {
   for (const char* kw : {"*MAT_PIECEWISE_LINEAR_PLASTICITY", "*SECTION_BEAM", "*ELEMENT_BEAM", "*LOAD_NODE_SET",
                          "*BOUNDARY_SPC_NODE", "*INITIAL_VELOCITY_NODE", "*CONSTRAINED_NODAL_RIGID_BODY",
                          "*RIGIDWALL_PLANAR", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "*CONTROL_IMPLICIT_GENERAL",
-                         "*EOS_LINEAR_POLYNOMIAL", "*DEFINE_BOX", "*SET_SHELL_LIST", "*SOMETHING_NEW"}) {
+                         "*EOS_LINEAR_POLYNOMIAL", "*DEFINE_COORDINATE_SYSTEM", "*SET_SHELL_LIST", "*SOMETHING_NEW"}) {
     const std::string what = refusal(std::string("*KEYWORD\n") + kw + "\n         1\n*END\n");
     EXPECT_EQ(what.rfind(std::string("u.k:2: ") + kw + " (", 0), 0u) << kw << ": " << what;
   }
