@@ -1,0 +1,77 @@
+// Type 12 (automatic single surface, penalty, friction): cost per surface node-cycle of the contact
+// update (cadence check, search amortised, local tracking, gap, normal and friction forces,
+// scatter) when every surface node is a slave and every segment a master.
+//
+// Two blocks of n x 1 x n unit hexahedra, the upper one (n - 1 wide) resting on the lower one and
+// pressed 1e-3 into it, sliding back and forth in x by 0.01 per cycle (a direction change every 8
+// cycles). Built through the deck model and build_simulation, as a user's deck would be.
+#include <benchmark/benchmark.h>
+
+#include "slideline/solver/build.hpp"
+#include "test_support/mesh_fixtures.hpp"
+
+using namespace slideline;
+
+namespace {
+
+/// Lower block n x 1 x n (part 1) and upper block (n-1) x 1 x (n-1) on top of it (part 2), one
+/// *CONTACT_AUTOMATIC_SINGLE_SURFACE over both parts with the spec's friction.
+model::Model two_block_automatic(int n) {
+  model::Model m = test_support::hex_grid_model(n, 1, n, 1);
+  const Id first = static_cast<Id>(m.nodes.size()) + 1;
+  const int u = n - 1;
+  const auto id = [&](int i, int j, int k) { return first + i + (u + 1) * (j + 2 * k); };
+  for (int k = 0; k <= u; ++k)
+    for (int j = 0; j <= 1; ++j)
+      for (int i = 0; i <= u; ++i) m.nodes.push_back({id(i, j, k), Vec3(0.37 + i, 1.0 + j, 0.41 + k), 0, 0});
+  Id eid = static_cast<Id>(m.solids.size()) + 1;
+  for (int k = 0; k < u; ++k)
+    for (int i = 0; i < u; ++i)
+      m.solids.push_back({eid++, 2, {id(i, 0, k), id(i + 1, 0, k), id(i + 1, 1, k), id(i, 1, k), id(i, 0, k + 1),
+                                     id(i + 1, 0, k + 1), id(i + 1, 1, k + 1), id(i, 1, k + 1)}});
+  m.parts.push_back({2, "upper", 1, 1, 0, 0, {}});
+  m.part_sets.push_back({1, "both", {1, 2}, {}});
+  model::Contact c;
+  c.keyword = "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
+  c.type = model::ContactType::automatic;
+  c.ssid = 1;
+  c.sstyp = 2;
+  c.fs = 0.3;
+  c.fd = 0.25;
+  c.dc = 2.0;
+  m.contacts.push_back(c);
+  return m;
+}
+
+void BM_AutomaticContactCycle(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  auto sim = build_simulation(two_block_automatic(n));
+  sim->initialize();
+  const Index first_upper = static_cast<Index>((n + 1) * 2 * (n + 1));
+  const Index count = static_cast<Index>(sim->nodes.size());
+  for (Index i = first_upper; i < count; ++i) sim->nodes.x.y[i] -= 1e-3;
+  StepTimes t;
+  t.dt_prev = t.dt_avg = t.dt_next = 1e-3;
+  long step = 0;
+  for (auto _ : state) {
+    const Real dx = (step++ / 8) % 2 != 0 ? -0.01 : 0.01;
+    for (Index i = first_upper; i < count; ++i) {
+      sim->nodes.x.x[i] += dx;
+      sim->nodes.v.x[i] = dx / t.dt_prev;
+    }
+    sim->nodes.f_contact.fill(0.0);
+    sim->nodes.m_contact.fill(0.0);
+    const Real dt = sim->contacts.apply_forces(sim->nodes, t, ContactForceView{sim->nodes.f_contact, sim->nodes.m_contact});
+    benchmark::DoNotOptimize(dt);
+  }
+  // Every node of an n x 1 x n block is on its surface: all nodes are slaves.
+  state.counters["surface_nodes"] = static_cast<double>(count);
+  state.counters["ns_per_node_cycle"] =
+      benchmark::Counter(static_cast<double>(count) * 1e-9,
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+}  // namespace
+
+// Surface segments: about 4 n^2 (top and bottom faces of both blocks) + the sides: 10^3 .. 10^5.
+BENCHMARK(BM_AutomaticContactCycle)->Arg(16)->Arg(50)->Arg(158)->Unit(benchmark::kMillisecond);
