@@ -184,27 +184,56 @@ BENCHMARK(BM_FclSearchAndNearest)->Arg(100)->Arg(316)->Unit(benchmark::kMillisec
 
 // Penalty contact per slave node and cycle: cadence check, search (amortised) or tracking,
 // gap, normal and friction forces, serial scatter. nx x nx segments, nx x nx slaves sliding.
+// Args: nx, threads. The FCL variant runs to 10^6 segments, the brute-force one (same pass, the
+// broad phase swapped) to 10^4: beyond that one search costs seconds.
 #include "../tests/unit/contact/penalty_scene.hpp"
+#include "slideline/core/parallel.hpp"
 
 namespace {
-void BM_PenaltyPass(benchmark::State& state) {
+// Scenes are cached by (nx, broad phase): building and initialising 10^6 segments takes longer
+// than a benchmark run. The slaves oscillate about their start, so a reused scene stays in contact.
+template <class BP>
+test::PenaltyScene& penalty_scene(Index nx) {
+  static std::map<Index, std::unique_ptr<test::PenaltyScene>> cache;
+  auto& s = cache[nx];
+  if (!s) s = test::make_penalty_scene(nx, 0.01, 100.0, ExponentialCoulomb{0.3, 0.25, 2.0}, std::make_unique<BP>());
+  return *s;
+}
+
+template <class BP>
+void penalty_pass(benchmark::State& state) {
   const Index nx = static_cast<Index>(state.range(0));
-  auto s = test::make_penalty_scene(nx, 0.01, 100.0, ExponentialCoulomb{0.3, 0.25, 2.0});
+  set_threads(static_cast<int>(state.range(1)));
+  test::PenaltyScene& s = penalty_scene<BP>(nx);
   Vec3Field f, m;
-  f.resize(s->nodes.x.size());
-  m.resize(s->nodes.x.size());
+  f.resize(s.nodes.x.size());
+  m.resize(s.nodes.x.size());
   StepTimes t;
   t.dt_prev = 1e-3;
+  const Vec3Field x_start = s.nodes.x;
   long step = 0;
   for (auto _ : state) {
-    test::move_slaves(*s, Vec3(((step++ / 8) % 2 ? -0.01 : 0.01), 0.0, 0.0), 1e-3);
-    s->pass->compute(s->nodes, t, s->friction);
+    test::move_slaves(s, Vec3(((step++ / 8) % 2 ? -0.01 : 0.01), 0.0, 0.0), 1e-3);
+    s.pass->compute(s.nodes, t, s.friction);
     Vec3 a = Vec3::Zero(), b = Vec3::Zero();
     Real w = 0.0;
-    s->pass->scatter(ContactForceView{f, m}, a, b, w);
+    s.pass->scatter(ContactForceView{f, m}, a, b, w);
     benchmark::DoNotOptimize(a);
   }
+  s.nodes.x = x_start;  // a run may stop mid-period: the next one starts from the same place
+  state.counters["segments"] = static_cast<double>(nx * nx);
+  state.counters["threads"] = static_cast<double>(state.range(1));
   set_rate(state, "ns_per_slave_cycle", static_cast<double>(nx * nx) * 1e-9);
 }
+
+void BM_PenaltyPass(benchmark::State& state) { penalty_pass<FclBroadPhase>(state); }
+void BM_PenaltyPassBruteForce(benchmark::State& state) { penalty_pass<BruteForceBroadPhase>(state); }
 }  // namespace
-BENCHMARK(BM_PenaltyPass)->Arg(10)->Arg(32)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PenaltyPass)
+    ->ArgsProduct({{10, 32, 100, 316, 1000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_PenaltyPassBruteForce)
+    ->ArgsProduct({{10, 32, 100}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

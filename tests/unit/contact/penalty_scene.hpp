@@ -21,9 +21,11 @@ struct PenaltyScene {
 
 /// nx x nx master segments of size 1 at z = 0, nx x nx slave nodes at z = -penetration, unit
 /// masses, segment stiffness k, friction law `friction`. Initialised (initial penetrations off:
-/// the slaves are placed after initialize()).
+/// the slaves are placed after initialize()). broad_phase: the pass's broad phase (null: FCL; the
+/// benchmark passes the brute-force one to compare).
 inline std::unique_ptr<PenaltyScene> make_penalty_scene(Index nx, Real penetration, Real k,
-                                                        const ExponentialCoulomb& friction) {
+                                                        const ExponentialCoulomb& friction,
+                                                        std::unique_ptr<BroadPhase> broad_phase = nullptr) {
   auto s = std::make_unique<PenaltyScene>();
   Vec3Field x;
   Surface master = make_plate(x, nx, nx, 1.0, Vec3::Zero());
@@ -42,7 +44,7 @@ inline std::unique_ptr<PenaltyScene> make_penalty_scene(Index nx, Real penetrati
   PenaltyPassOptions o;
   s->friction = friction;
   s->pass = std::make_unique<PenaltyPass>(s->slaves, std::vector<Real>(s->slaves.size(), 0.0), std::move(master),
-                                          std::make_unique<FclBroadPhase>(), o);
+                                          broad_phase ? std::move(broad_phase) : std::make_unique<FclBroadPhase>(), o);
   s->pass->initialize(s->nodes, std::vector<Real>(static_cast<std::size_t>(nx * nx), k));
   for (Index n : s->slaves) s->nodes.x.z[n] = -penetration;
   return s;
