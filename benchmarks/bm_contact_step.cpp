@@ -115,4 +115,4 @@ void BM_TwoBlockFullStep(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_TwoBlockFullStep)->Arg(1)->Arg(2)->Iterations(60)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TwoBlockFullStep)->Arg(1)->Arg(2)->Iterations(150)->Unit(benchmark::kMillisecond)->UseRealTime();
