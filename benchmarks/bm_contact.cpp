@@ -186,7 +186,7 @@ BENCHMARK(BM_FclSearchAndNearest)->Arg(100)->Arg(316)->Unit(benchmark::kMillisec
 // gap, normal and friction forces, serial scatter. nx x nx segments, nx x nx slaves sliding at
 // 0.01 segment per cycle, turning back every 80 cycles (x within +-0.4 of the start). The search
 // margin is 0.5 x the segment diagonal (0.71), so a search is due when a node has moved 0.35:
-// about every 36 cycles; runs are long enough (>= 80 cycles) to amortise it. The outermost rows
+// about every 36 cycles; each run is whole periods (a fixed cycle count, below) to amortise it. The outermost rows
 // hang up to 0.03 past the plate edge for a few cycles (no force there): negligible except at 10^2.
 // Args: nx, threads. The FCL variant runs to 10^6 segments, the brute-force one (same pass, the
 // broad phase swapped) to 10^4: beyond that one search costs seconds.
@@ -237,16 +237,25 @@ void penalty_pass(benchmark::State& state) {
 
 void BM_PenaltyPass(benchmark::State& state) { penalty_pass<FclBroadPhase>(state); }
 void BM_PenaltyPassBruteForce(benchmark::State& state) { penalty_pass<BruteForceBroadPhase>(state); }
+// Fixed iteration counts, multiples of the 80-cycle sliding period, so that every size sees the
+// same motion and the same number of searches per cycle (a run stopped early would skip some).
+void penalty_args(benchmark::internal::Benchmark* b, std::initializer_list<int> sizes) {
+  for (int nx : sizes) {
+    for (int threads : {1, 2}) b->Args({nx, threads});
+  }
+}
+void penalty_iterations(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
 }  // namespace
-// MinTime 1 s: >= 55 cycles at 10^5 segments; 10^6 (~0.1 s a cycle) runs a fixed 80.
-BENCHMARK(BM_PenaltyPass)
-    ->ArgsProduct({{10, 32, 100, 316}, {1, 2}})
-    ->Unit(benchmark::kMillisecond)
-    ->MinTime(1.0)
-    ->UseRealTime();
-BENCHMARK(BM_PenaltyPass)->ArgsProduct({{1000}, {1, 2}})->Unit(benchmark::kMillisecond)->Iterations(80)->UseRealTime();
-BENCHMARK(BM_PenaltyPassBruteForce)
-    ->ArgsProduct({{10, 32, 100}, {1, 2}})
-    ->Unit(benchmark::kMillisecond)
-    ->MinTime(1.0)
-    ->UseRealTime();
+// One registration per size: Iterations() applies to a whole registration.
+#define SLIDELINE_PENALTY_BM(fn, nx, iters) \
+  BENCHMARK(fn)->Apply([](benchmark::internal::Benchmark* b) { penalty_args(b, {nx}); })->Iterations(iters)->Apply(penalty_iterations)
+SLIDELINE_PENALTY_BM(BM_PenaltyPass, 10, 8000);
+SLIDELINE_PENALTY_BM(BM_PenaltyPass, 32, 800);
+SLIDELINE_PENALTY_BM(BM_PenaltyPass, 100, 800);
+SLIDELINE_PENALTY_BM(BM_PenaltyPass, 316, 160);
+SLIDELINE_PENALTY_BM(BM_PenaltyPass, 1000, 80);
+SLIDELINE_PENALTY_BM(BM_PenaltyPassBruteForce, 10, 8000);
+SLIDELINE_PENALTY_BM(BM_PenaltyPassBruteForce, 32, 800);
+SLIDELINE_PENALTY_BM(BM_PenaltyPassBruteForce, 100, 800);
