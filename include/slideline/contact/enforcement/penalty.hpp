@@ -136,6 +136,7 @@ class PenaltyPass {
     return 0.5 * t * opt_.master_thickness_scale;
   }
   void locate(const Vec3Field& x);
+  void pick_nearest_candidates(const Vec3Field& x);
   template <class Friction>
   void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times, const Friction& friction);
   /// Search and gaps at t = 0; each slave below the surface (beyond round-off) keeps its depth as

@@ -160,7 +160,13 @@ inline void PenaltyPass::search(const Vec3Field& x) {
     while (c < candidates_.size() && candidates_[c].node == slaves_[i]) ++c;
     run_end_[i] = c;
   }
-  parallel_for(static_cast<Index>(n), [&](Index ii) {
+  pick_nearest_candidates(x);
+}
+
+/// Per slave: the nearest accepted segment of its candidate run (closest point, ties broken as in
+/// is_better_projection); a change of segment resets the side memory.
+inline void PenaltyPass::pick_nearest_candidates(const Vec3Field& x) {
+  parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
     const std::size_t i = static_cast<std::size_t>(ii);
     const Vec3 p = x.get(slaves_[i]);
     SegmentProjection best;
@@ -196,23 +202,7 @@ inline void PenaltyPass::locate(const Vec3Field& x) {
     if (due) {
       search(x);
     } else {  // automatic: the nearest accepted candidate of the still valid list
-      parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
-        const std::size_t i = static_cast<std::size_t>(ii);
-        const Vec3 p = x.get(slaves_[i]);
-        SegmentProjection best;
-        for (std::size_t k = run_begin_[i]; k < run_end_[i]; ++k) {
-          const Index s = candidates_[k].segment;
-          if (!accepted(i, s, x)) continue;
-          const Projection pr = project_point_to_segment(p, master_, s, x);
-          if (best.segment < 0 || is_better_projection(pr, s, best.projection, best.segment, ProjectionOptions{})) {
-            best.segment = s;
-            best.projection = pr;
-          }
-        }
-        if (best.segment != segment_[i]) side_[i] = 0;
-        proj_[i] = best;
-        segment_[i] = best.segment;
-      });
+      pick_nearest_candidates(x);
     }
     first_ = false;
   } else {
