@@ -292,16 +292,18 @@ void read_set_segment(const Context& ctx, Block& b, Model& m, bool titled) {
   m.segment_sets.push_back(std::move(s));
 }
 
-void read_spc(const Context& ctx, Block& b, Model& m, bool with_id) {
+void read_spc(const Context& ctx, Block& b, Model& m, bool with_id, bool node) {
+  const char* const first_field = node ? "NID" : "NSID";
   while (const Line* first = with_id ? next_record_keep_blank(b) : next_record(b)) {
     model::BoundarySpc s;
+    s.node = node;
     const Line* l = first;
     if (with_id) {
       read_id_heading(ctx, *first, b.keyword, s.id, s.title);
-      l = &require(ctx, b, "NSID");
+      l = &require(ctx, b, first_field);
     }
     Card c = card_of(ctx, *l, b);
-    c.get(0, "NSID", s.nsid);
+    c.get(0, first_field, s.nsid);
     c.get(1, "CID", s.cid);
     static const char* const names[] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
     for (int k = 0; k < 6; ++k) c.get(k + 2, names[k], s.dof[static_cast<std::size_t>(k)]);
@@ -329,6 +331,24 @@ void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id) {
     c.get(7, "BIRTH", p.birth);
     p.src = ctx.source(l->number);
     m.prescribed_motions.push_back(p);
+  }
+}
+
+void read_load_node(const Context& ctx, Block& b, Model& m, bool set) {
+  while (const Line* l = next_record(b)) {
+    Card c = card_of(ctx, *l, b);
+    model::LoadNode n;
+    n.set = set;
+    c.get(0, set ? "NSID" : "NID", n.id);
+    c.get(1, "DOF", n.dof);
+    c.get(2, "LCID", n.lcid);
+    c.get(3, "SF", n.sf);
+    c.get(4, "CID", n.cid);
+    c.get(5, "M1", n.m[0]);
+    c.get(6, "M2", n.m[1]);
+    c.get(7, "M3", n.m[2]);
+    n.src = ctx.source(l->number);
+    m.nodal_loads.push_back(n);
   }
 }
 
@@ -543,7 +563,14 @@ const std::vector<Entry>& table() {
       {"*SET_SEGMENT", "_TITLE", read_set_segment},
       {"*SET_PART_LIST", "_TITLE", read_set_part},
       {"*SET_PART", "_TITLE", read_set_part},
-      {"*BOUNDARY_SPC_SET", "_ID", read_spc},
+      {"*BOUNDARY_SPC_SET", "_ID",
+       [](const Context& c, Block& b, Model& m, bool id) { read_spc(c, b, m, id, false); }},
+      {"*BOUNDARY_SPC_NODE", "_ID",
+       [](const Context& c, Block& b, Model& m, bool id) { read_spc(c, b, m, id, true); }},
+      {"*LOAD_NODE_POINT", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_load_node(c, b, m, false); })},
+      {"*LOAD_NODE_SET", nullptr,
+       plain([](const Context& c, Block& b, Model& m) { read_load_node(c, b, m, true); })},
       {"*BOUNDARY_PRESCRIBED_MOTION_SET", "_ID", read_prescribed},
       {"*LOAD_BODY_X", nullptr,
        plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::x); })},

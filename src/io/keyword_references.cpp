@@ -136,9 +136,21 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
     for (Id p : s.parts)
       if (!parts.count(p))
         ck.add(s.src, "*SET_PART_LIST " + std::to_string(s.sid) + " refers to undefined part " + std::to_string(p));
-  for (const auto& s : m.spcs)
-    if (!node_sets.count(s.nsid) && !dropped(s.src, "*BOUNDARY_SPC_SET", "node set", s.nsid))
+  for (const auto& s : m.spcs) {
+    if (s.node && !nodes.count(s.nsid))
+      ck.add(s.src, "*BOUNDARY_SPC_NODE refers to undefined node " + std::to_string(s.nsid));
+    if (!s.node && !node_sets.count(s.nsid) && !dropped(s.src, "*BOUNDARY_SPC_SET", "node set", s.nsid))
       ck.add(s.src, "*BOUNDARY_SPC_SET refers to undefined node set " + std::to_string(s.nsid));
+  }
+  for (const auto& l : m.nodal_loads) {
+    if (l.set && !node_sets.count(l.id) && !dropped(l.src, "*LOAD_NODE_SET", "node set", l.id))
+      ck.add(l.src, "*LOAD_NODE_SET refers to undefined node set " + std::to_string(l.id));
+    if (!l.set && !nodes.count(l.id))
+      ck.add(l.src, "*LOAD_NODE_POINT refers to undefined node " + std::to_string(l.id));
+    if (!curves.count(l.lcid))
+      ck.add(l.src, std::string(l.set ? "*LOAD_NODE_SET" : "*LOAD_NODE_POINT") + " refers to undefined curve " +
+                        std::to_string(l.lcid));
+  }
   for (const auto& p : m.prescribed_motions) {
     if (!node_sets.count(p.nsid) && !dropped(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET", "node set", p.nsid))
       ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined node set " + std::to_string(p.nsid));

@@ -224,8 +224,10 @@ std::string write_keyword_string(const model::Model& m) {
 
   for (const auto& s : m.spcs) {
     const bool with_id = s.id != 0 || !s.title.empty();
-    o += with_id ? "*BOUNDARY_SPC_SET_ID\n" + id_heading(s.id, s.title) : std::string("*BOUNDARY_SPC_SET\n");
-    o += "$#    NSID       CID      DOFX      DOFY      DOFZ     DOFRX     DOFRY     DOFRZ\n";
+    const std::string kw = s.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET";
+    o += with_id ? kw + "_ID\n" + id_heading(s.id, s.title) : kw + "\n";
+    o += s.node ? "$#     NID       CID      DOFX      DOFY      DOFZ     DOFRX     DOFRY     DOFRZ\n"
+                : "$#    NSID       CID      DOFX      DOFY      DOFZ     DOFRX     DOFRY     DOFRZ\n";
     CardOut c;
     c.i(s.nsid).i(s.cid);
     for (int d : s.dof) c.i(d);
@@ -237,6 +239,11 @@ std::string write_keyword_string(const model::Model& m) {
                  : std::string("*BOUNDARY_PRESCRIBED_MOTION_SET\n");
     o += "$#    NSID       DOF       VAD      LCID        SF       VID     DEATH     BIRTH\n";
     o += CardOut().i(p.nsid).i(p.dof).i(p.vad).i(p.lcid).r(p.sf).i(p.vid).r(p.death).r(p.birth).str();
+  }
+  for (const auto& l : m.nodal_loads) {
+    o += l.set ? "*LOAD_NODE_SET\n$#    NSID       DOF      LCID        SF       CID        M1        M2        M3\n"
+               : "*LOAD_NODE_POINT\n$#     NID       DOF      LCID        SF       CID        M1        M2        M3\n";
+    o += CardOut().i(l.id).i(l.dof).i(l.lcid).r(l.sf).i(l.cid).i(l.m[0]).i(l.m[1]).i(l.m[2]).str();
   }
   for (const auto& l : m.body_loads) {
     o += std::string("*LOAD_BODY_") + (l.axis == Axis::x ? "X" : l.axis == Axis::y ? "Y" : "Z") + "\n";

@@ -453,14 +453,17 @@ struct Builder {
                                   ": *BOUNDARY_SPC_SET with a local coordinate system (CID) is not "
                                   "implemented");
       SupportGroup g;
+      const char* const card = spc.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET";
       g.name = !spc.title.empty() ? spc.title
-                                  : "spc_" + std::to_string(spc.id != 0 ? spc.id : spc.nsid);
-      const auto nodes = node_set(spc.nsid, spc.src, "NSID");
-      check_not_rigid(nodes, spc.src, "*BOUNDARY_SPC_SET");
+                                  : std::string(spc.node ? "spc_node_" : "spc_") +
+                                        std::to_string(spc.id != 0 ? spc.id : spc.nsid);
+      const auto nodes = spc.node ? std::vector<Index>{node(spc.nsid, spc.src, "NID")}
+                                  : node_set(spc.nsid, spc.src, "NSID");
+      check_not_rigid(nodes, spc.src, card);
       for (int d = 0; d < 6; ++d) {
         if (spc.dof[d] == 0) continue;
         if (spc.dof[d] != 1)
-          throw InputError(describe(spc.src) + ": DOF flags of *BOUNDARY_SPC_SET must be 0 or 1");
+          throw InputError(describe(spc.src) + ": DOF flags of " + card + " must be 0 or 1");
         Support s;
         s.axis = static_cast<Axis>(d % 3);
         s.rotational = d >= 3;
@@ -509,6 +512,32 @@ struct Builder {
       b.curve = curve(lb.lcid, lb.src, "LCID");
       b.parts = loaded;
       sim->body_loads.push_back(std::move(b));
+    }
+  }
+
+  void build_nodal_loads() {
+    for (const auto& l : m.nodal_loads) {
+      const std::string card = l.set ? "*LOAD_NODE_SET" : "*LOAD_NODE_POINT";
+      if (l.cid != 0)
+        throw NotImplementedError(describe(l.src) + ": " + card +
+                                  " in a local coordinate system (CID) is not implemented");
+      if (l.dof == 4 || l.dof == 8)
+        throw NotImplementedError(describe(l.src) + ": " + card + " DOF " + std::to_string(l.dof) +
+                                  " (follower force or moment) is not implemented");
+      if (l.dof < 1 || l.dof > 7)
+        throw InputError(describe(l.src) + ": field DOF of " + card +
+                         " must be 1-3 (force along x, y, z) or 5-7 (moment about x, y, z); got " +
+                         std::to_string(l.dof));
+      NodalLoad nl;
+      nl.moment = l.dof >= 5;
+      nl.axis = static_cast<Axis>(nl.moment ? l.dof - 5 : l.dof - 1);
+      nl.scale = l.sf;
+      nl.curve = curve(l.lcid, l.src, "LCID");
+      nl.nodes = l.set ? node_set(l.id, l.src, "NSID") : std::vector<Index>{node(l.id, l.src, "NID")};
+      std::sort(nl.nodes.begin(), nl.nodes.end());
+      nl.nodes.erase(std::unique(nl.nodes.begin(), nl.nodes.end()), nl.nodes.end());
+      nl.source = describe(l.src) + ": " + card;
+      sim->nodal_loads.push_back(std::move(nl));
     }
   }
 
@@ -616,6 +645,7 @@ std::unique_ptr<Simulation> build_simulation(const model::Model& model, const Bu
   b.build_sets();
   b.build_boundaries();
   b.build_loads();
+  b.build_nodal_loads();
   b.build_damping();
   b.build_controls();
   b.build_contacts();

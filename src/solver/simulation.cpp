@@ -87,6 +87,13 @@ void Simulation::initialize() {
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
   has_rotations_ = std::any_of(nodes.has_rotation.begin(), nodes.has_rotation.end(),
                                [](std::uint8_t r) { return r != 0; });
+  // A moment on a node without rotational degrees of freedom would be lost: refuse it.
+  for (const auto& nl : nodal_loads)
+    if (nl.moment)
+      for (Index i : nl.nodes)
+        if (!nodes.has_rotation[i])
+          throw InputError(nl.source + ": a moment (DOF 5-7) on node " + std::to_string(nodes.ids[i]) +
+                           ", which has no rotational degrees of freedom (only shell nodes do)");
 
   // Who dictates each node's motion: rigid bodies first (their node lists are known before they
   // initialise), then contact ties (known after the interfaces initialise, below).
@@ -288,6 +295,12 @@ void Simulation::compute_external_forces() {
     // bl.nodes is unique, so the iterations write distinct entries.
     parallel_for(static_cast<Index>(bl.nodes.size()),
                  [&](Index k) { f[bl.nodes[k]] += bl.mass[k] * acc; });
+  }
+  // Serial and in card order: a node may appear in several loads (same sum for any thread count).
+  for (const auto& nl : nodal_loads) {
+    const Real v = nl.scale * nl.curve(t_);
+    auto& f = nl.moment ? nodes.m_ext[static_cast<int>(nl.axis)] : nodes.f_ext[static_cast<int>(nl.axis)];
+    for (Index i : nl.nodes) f[i] += v;
   }
 }
 

@@ -158,14 +158,29 @@ struct PartSet {
   Source src;
 };
 
-/// *BOUNDARY_SPC_SET: fixed degrees of freedom (1 = fixed) of every node of a node set.
+/// *LOAD_NODE_POINT (one node) / *LOAD_NODE_SET (`set`: every node of a node set): a
+/// concentrated force (DOF 1-3) or moment (DOF 5-7) of SF x curve LCID on each node.
+struct LoadNode {
+  bool set = false;
+  Id id = 0;  ///< NID, or NSID when `set`
+  int dof = 0;
+  Id lcid = 0;
+  Real sf = 1.0;
+  Id cid = 0;
+  std::array<Id, 3> m{0, 0, 0};  ///< M1 M2 M3 (follower loads, DOF 4 and 8)
+  Source src;
+};
+
+/// *BOUNDARY_SPC_SET: fixed degrees of freedom (1 = fixed) of every node of a node set;
+/// *BOUNDARY_SPC_NODE (`node`): of one node.
 struct BoundarySpc {
   Id id = 0;           ///< from the _ID option; 0 if absent
   std::string title;   ///< heading from the _ID option
-  Id nsid = 0;
+  Id nsid = 0;         ///< node set id, or the node id when `node`
   Id cid = 0;
   std::array<int, 6> dof{0, 0, 0, 0, 0, 0};  ///< DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
   Source src;
+  bool node = false;   ///< *BOUNDARY_SPC_NODE (last, so that {id, title, nsid, ...} still reads)
 };
 
 /// *BOUNDARY_PRESCRIBED_MOTION_SET: prescribed motion of a node set in one direction.
@@ -386,6 +401,7 @@ struct Model {
   std::vector<BoundarySpc> spcs;
   std::vector<PrescribedMotion> prescribed_motions;
   std::vector<LoadBody> body_loads;
+  std::vector<LoadNode> nodal_loads;
   std::optional<LoadBodyParts> body_load_parts;
   std::vector<Curve> curves;
   std::vector<Box> boxes;

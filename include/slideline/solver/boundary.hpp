@@ -23,6 +23,17 @@ struct BodyLoad {
   std::vector<Real> mass;    ///< loaded mass at each of those nodes
 };
 
+/// A concentrated load on nodes: force (or, with `moment`, moment about `axis`) of
+/// scale * curve(t) on each node along `axis` (LS-DYNA *LOAD_NODE_POINT / _SET).
+struct NodalLoad {
+  Axis axis = Axis::x;
+  bool moment = false;
+  Real scale = 1.0;
+  LoadCurve curve = LoadCurve::constant(1.0);
+  std::vector<Index> nodes;  ///< unique
+  std::string source;        ///< "deck.k:12: *LOAD_NODE_SET", for messages
+};
+
 /// Prescribed displacement of a node set along one axis: u(t) = scale * curve(t), or zero when
 /// `curve` is empty. Records the reaction: the total force the body exerts on the support.
 struct Support {

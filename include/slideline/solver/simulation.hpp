@@ -74,6 +74,7 @@ class Simulation {
   std::vector<std::unique_ptr<NodalConstraint>> constraints;  ///< rigid parts
   ContactManager contacts;
   std::vector<BodyLoad> body_loads;
+  std::vector<NodalLoad> nodal_loads;
   std::vector<SupportGroup> supports;
   std::vector<MassDamping> damping;
   std::vector<Index> history_nodes;  ///< internal indices of nodes whose displacement is recorded

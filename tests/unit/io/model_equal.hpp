@@ -131,13 +131,16 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
     SL_EQ(sid); SL_EQ(title); SL_EQ(parts);
   });
   d.list("spcs", ma.spcs, mb.spcs, [&](const std::string& w, const auto& a, const auto& b) {
-    SL_EQ(id); SL_EQ(title); SL_EQ(nsid); SL_EQ(cid); SL_EQ(dof);
+    SL_EQ(id); SL_EQ(title); SL_EQ(nsid); SL_EQ(node); SL_EQ(cid); SL_EQ(dof);
   });
   d.list("prescribed_motions", ma.prescribed_motions, mb.prescribed_motions,
          [&](const std::string& w, const auto& a, const auto& b) {
            SL_EQ(id); SL_EQ(title); SL_EQ(nsid); SL_EQ(dof); SL_EQ(vad); SL_EQ(lcid); SL_EQ(sf); SL_EQ(vid);
            SL_EQ(death); SL_EQ(birth);
          });
+  d.list("nodal_loads", ma.nodal_loads, mb.nodal_loads, [&](const std::string& w, const auto& a, const auto& b) {
+    SL_EQ(set); SL_EQ(id); SL_EQ(dof); SL_EQ(lcid); SL_EQ(sf); SL_EQ(cid); SL_EQ(m);
+  });
   d.list("body_loads", ma.body_loads, mb.body_loads, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(axis); SL_EQ(lcid); SL_EQ(sf); SL_EQ(lciddr); SL_EQ(xc); SL_EQ(yc); SL_EQ(zc); SL_EQ(cid);
   });
