@@ -38,9 +38,9 @@ model::Model full_model() {
   m.part_sets.push_back({1, "loaded", {1, 2}, {}});
   m.spcs.push_back({0, "", 1, 0, {0, 1, 0, 0, 0, 0}, {}});
   m.spcs.push_back({7, "right face", 2, 0, {1, 0, 0, 1, 1, 1}, {}});
-  m.spcs.push_back({0, "", 3, 0, {1, 1, 1, 0, 0, 0}, {}, true});  // *BOUNDARY_SPC_NODE
-  m.spcs.push_back({9, "one node", 4, 0, {0, 0, 1, 0, 0, 0}, {}, true});
-  m.nodal_loads.push_back({false, 5, 2, 1, -2.5, 0, {}, {}});
+  m.spcs.push_back({0, "", 103, 0, {1, 1, 1, 0, 0, 0}, {}, true});  // *BOUNDARY_SPC_NODE
+  m.spcs.push_back({9, "one node", 104, 0, {0, 0, 1, 0, 0, 0}, {}, true});
+  m.nodal_loads.push_back({false, 105, 2, 1, -2.5, 0, {}, {}});
   m.nodal_loads.push_back({true, 1, 6, 2, 0.125, 0, {}, {}});
   m.prescribed_motions.push_back({3, "pull", 2, 3, 0, 1, 2.5, 0, 0.45, 0.01, {}});
   m.prescribed_motions.push_back({0, "", 1, 1, 2, 2, 1.0, 0, 1e28, 0.0, {}});
