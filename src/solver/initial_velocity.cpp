@@ -134,7 +134,9 @@ void apply_generation_cards(const InitialVelocityInputs& in, const NodalFields& 
                              " (initialisation after dynamic relaxation; give PHASE = 0)");
     std::vector<Index> targets;
     if (g.id == 0) {
-      targets = all_nodes(nodes.size());  // ID = 0: every node, STYP ignored (LS-DYNA)
+      // ID = 0: every node, STYP ignored (our reading of the LS-DYNA manual: "if zero, STYP is
+      // ignored and all velocities are set").
+      targets = all_nodes(nodes.size());
     } else if (g.styp == 1) {
       std::vector<Index> all;
       for (Id pid : in.sets.part_set(g.id, where + ": ID (STYP = 1)")) {

@@ -92,6 +92,13 @@ TEST(InitialVelocity, FreeBlockTranslatesUniformlyWithConstantKineticEnergy) {
   EXPECT_LT(std::abs(e.internal) + std::abs(e.hourglass), 1e-12);
 }
 
+TEST(InitialVelocity, GenerationWithIdZeroMovesEveryNode) {
+  auto sim = build(header(0.1) + part(1, 1) + block(1, {0, 0, 0}, {1, 1, 1}, 1, 0, 0) + part(2, 1) +
+                   block(2, {3, 0, 0}, {1, 1, 1}, 1, 10, 10) + "*INITIAL_VELOCITY_GENERATION\n0,0,0,1,2,3\n\n*END\n");
+  ASSERT_EQ(sim->nodes.size(), 16u);
+  for (std::size_t i = 0; i < sim->nodes.size(); ++i) EXPECT_EQ(sim->nodes.v.get(static_cast<Index>(i)), Vec3(1, 2, 3));
+}
+
 TEST(InitialVelocity, ExemptedNodesBoxAndNodeCards) {
   // NSID = 0 gives every node V; NSIDEX's nodes take VE; *INITIAL_VELOCITY_NODE may give a node
   // that no other card reaches its own velocity; a box restricts a second card to its nodes.
