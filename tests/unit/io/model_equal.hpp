@@ -161,7 +161,7 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
   d.list("initial_velocity_nodes", ma.initial_velocity_nodes, mb.initial_velocity_nodes,
          [&](const std::string& w, const auto& a, const auto& b) { SL_EQ(nid); SL_EQ(v); SL_EQ(vr); });
   d.list("damping_parts", ma.damping_parts, mb.damping_parts, [&](const std::string& w, const auto& a, const auto& b) {
-    SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag);
+    SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag); SL_EQ(set); SL_EQ(stf);
   });
   d.list("damping_stiffness", ma.damping_stiffness, mb.damping_stiffness,
          [&](const std::string& w, const auto& a, const auto& b) { SL_EQ(pid); SL_EQ(coef); SL_EQ(set); });
