@@ -4,8 +4,11 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "slideline/core/error.hpp"
 #include "slideline/solver/build.hpp"
