@@ -136,6 +136,11 @@ bool read_contact(const Context& ctx, Block& block, model::Model& model);
 /// True when read_contact reads this keyword.
 bool is_supported_contact(std::string_view keyword);
 
+/// *INITIAL_VELOCITY, _NODE and _GENERATION (keyword_initial.cpp). False for other keywords.
+bool read_initial(const Context& ctx, Block& block, model::Model& model);
+/// True when read_initial reads this keyword.
+bool is_supported_initial(std::string_view keyword);
+
 /// *PARAMETER and *PARAMETER_EXPRESSION (keyword_parameters.cpp). False for other keywords.
 bool read_parameters(const Context& ctx, Block& block);
 /// Evaluates an arithmetic expression over numbers and parameters (keyword_parameters.cpp);

@@ -628,6 +628,7 @@ const Entry* find_entry(std::string_view kw, bool& titled) {
 
 bool is_supported(std::string_view kw) {
   if (kw.rfind("*CONTACT_", 0) == 0) return is_supported_contact(kw);
+  if (is_supported_initial(kw)) return true;
   if (kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" || kw == "*PARAMETER_EXPRESSION" ||
       kw == "*PARAMETER_EXPRESSION_LOCAL")
     return true;
@@ -638,6 +639,7 @@ bool is_supported(std::string_view kw) {
 bool read_block(const Context& ctx, Block& block, model::Model& model) {
   const std::string& kw = block.keyword;
   if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
+  if (read_initial(ctx, block, model)) return true;
   bool titled = false;
   const Entry* e = find_entry(kw, titled);
   if (!e) return false;

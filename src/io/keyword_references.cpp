@@ -178,6 +178,32 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
     if (!d.set && !parts.count(d.pid))
       ck.add(d.src, "*DAMPING_PART_STIFFNESS refers to undefined part " + std::to_string(d.pid));
   }
+  // Initial velocities: sets, boxes and nodes (0 = all nodes for NSID and ID).
+  for (const auto& iv : m.initial_velocities) {
+    const model::Source src = model::element_source(m, iv);
+    const auto set = [&](Id sid, const char* field) {
+      if (sid != 0 && !node_sets.count(sid) && !dropped(src, "*INITIAL_VELOCITY", "node set", sid))
+        ck.add(src, std::string("*INITIAL_VELOCITY ") + field + " refers to undefined node set " + std::to_string(sid));
+    };
+    set(iv.nsid, "NSID");
+    set(iv.nsidex, "NSIDEX");
+    if (iv.boxid != 0 && !boxes.count(iv.boxid))
+      ck.add(src, "*INITIAL_VELOCITY BOXID refers to undefined box " + std::to_string(iv.boxid));
+  }
+  for (const auto& g : m.initial_velocity_generations) {
+    if (g.id == 0) continue;
+    const model::Source src = model::element_source(m, g);
+    const std::string who = "*INITIAL_VELOCITY_GENERATION ID";
+    if (g.styp == 1 && !part_sets.count(g.id) && !dropped(src, who, "part set", g.id))
+      ck.add(src, who + " refers to undefined part set " + std::to_string(g.id));
+    if (g.styp == 2 && !parts.count(g.id))
+      ck.add(src, who + " refers to undefined part " + std::to_string(g.id));
+    if (g.styp == 3 && !node_sets.count(g.id) && !dropped(src, who, "node set", g.id))
+      ck.add(src, who + " refers to undefined node set " + std::to_string(g.id));
+  }
+  for (const auto& iv : m.initial_velocity_nodes)
+    if (!nodes.count(iv.nid))
+      ck.add(model::element_source(m, iv), "*INITIAL_VELOCITY_NODE refers to undefined node " + std::to_string(iv.nid));
   for (Id n : m.database.history_nodes)
     if (!nodes.count(n)) ck.add(none, "*DATABASE_HISTORY_NODE refers to undefined node " + std::to_string(n));
 

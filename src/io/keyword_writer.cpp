@@ -71,6 +71,42 @@ std::string heading(const std::string& title) {
   return title + "\n";
 }
 
+void write_initial_velocities(const model::Model& m, std::string& o) {
+  const auto velocity = [](CardOut& c, const Vec3& v, const Vec3& vr) {
+    for (int k = 0; k < 3; ++k) c.r(v[k]);
+    for (int k = 0; k < 3; ++k) c.r(vr[k]);
+  };
+  for (const auto& iv : m.initial_velocities) {
+    o += "*INITIAL_VELOCITY\n$#    NSID    NSIDEX     BOXID    IRIGID      ICID\n";
+    o += CardOut().i(iv.nsid).i(iv.nsidex).i(iv.boxid).i(iv.irigid).i(iv.icid).str();
+    o += "$#      VX        VY        VZ       VXR       VYR       VZR\n";
+    CardOut c;
+    velocity(c, iv.v, iv.vr);
+    o += c.str();
+    if (iv.nsidex > 0) {
+      CardOut e;
+      velocity(e, iv.ve, iv.vre);
+      o += "$#     VXE       VYE       VZE      VXRE      VYRE      VZRE\n" + e.str();
+    }
+  }
+  for (const auto& g : m.initial_velocity_generations) {
+    o += "*INITIAL_VELOCITY_GENERATION\n";
+    o += "$#      ID      STYP     OMEGA        VX        VY        VZ     IVATN      ICID\n";
+    o += CardOut().i(g.id).i(g.styp).r(g.omega).r(g.v[0]).r(g.v[1]).r(g.v[2]).i(g.ivatn).i(g.icid).str();
+    o += "$#      XC        YC        ZC        NX        NY        NZ     PHASE    IRIGID\n";
+    o += CardOut().r(g.xc[0]).r(g.xc[1]).r(g.xc[2]).r(g.n[0]).r(g.n[1]).r(g.n[2]).i(g.phase).i(g.irigid).str();
+  }
+  if (!m.initial_velocity_nodes.empty()) {
+    o += "*INITIAL_VELOCITY_NODE\n$#     NID        VX        VY        VZ       VXR       VYR       VZR\n";
+    for (const auto& iv : m.initial_velocity_nodes) {
+      CardOut c;
+      c.i(iv.nid);
+      velocity(c, iv.v, iv.vr);
+      o += c.str();
+    }
+  }
+}
+
 void write_materials(const model::Model& m, std::string& o) {
   for (const auto& mat : m.materials) {
     if (const auto* e = std::get_if<model::MatElastic>(&mat)) {
@@ -250,6 +286,7 @@ std::string write_keyword_string(const model::Model& m) {
     o += "$#    LCID        SF    LCIDDR        XC        YC        ZC       CID\n";
     o += CardOut().i(l.lcid).r(l.sf).i(l.lciddr).r(l.xc).r(l.yc).r(l.zc).i(l.cid).str();
   }
+  write_initial_velocities(m, o);
   if (m.body_load_parts) o += "*LOAD_BODY_PARTS\n$#    PSID\n" + CardOut().i(m.body_load_parts->psid).str();
   if (m.damping_global) {
     const auto& d = *m.damping_global;

@@ -12,6 +12,7 @@
 #include "slideline/element/block_factory.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/validate_model.hpp"
+#include "initial_velocity.hpp"
 
 namespace slideline {
 
@@ -495,6 +496,11 @@ struct Builder {
     }
   }
 
+  /// v(0) from the *INITIAL_VELOCITY cards (initial_velocity.cpp): after the sets and supports.
+  void build_initial_velocities() {
+    apply_initial_velocities({m, node_index, sim->sets, rigid_node_part, sim->supports}, sim->nodes);
+  }
+
   void build_loads() {
     std::vector<Id> loaded;  // empty = all parts
     if (m.body_load_parts) {
@@ -644,6 +650,7 @@ std::unique_ptr<Simulation> build_simulation(const model::Model& model, const Bu
   b.build_elements();
   b.build_sets();
   b.build_boundaries();
+  b.build_initial_velocities();
   b.build_loads();
   b.build_nodal_loads();
   b.build_damping();

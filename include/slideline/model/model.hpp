@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "slideline/core/types.hpp"
+#include "slideline/model/initial_velocity.hpp"
 
 namespace slideline::model {
 
@@ -413,6 +414,9 @@ struct Model {
   ControlContact control_contact;
   DatabaseControl database;
   std::vector<Contact> contacts;
+  std::vector<InitialVelocity> initial_velocities;
+  std::vector<InitialVelocityGeneration> initial_velocity_generations;
+  std::vector<InitialVelocityNode> initial_velocity_nodes;
   /// Physics cards the reader dropped (only with ReadOptions::ignore_unsupported; otherwise the
   /// reader refuses the deck).
   std::vector<UnsupportedCard> unsupported;

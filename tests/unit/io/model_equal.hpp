@@ -151,6 +151,18 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
   d.list("boxes", ma.boxes, mb.boxes, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(boxid); SL_EQ(title); SL_EQ(min); SL_EQ(max);
   });
+  d.list("initial_velocities", ma.initial_velocities, mb.initial_velocities,
+         [&](const std::string& w, const auto& a, const auto& b) {
+           SL_EQ(nsid); SL_EQ(nsidex); SL_EQ(boxid); SL_EQ(irigid); SL_EQ(icid); SL_EQ(v); SL_EQ(vr); SL_EQ(ve);
+           SL_EQ(vre);
+         });
+  d.list("initial_velocity_generations", ma.initial_velocity_generations, mb.initial_velocity_generations,
+         [&](const std::string& w, const auto& a, const auto& b) {
+           SL_EQ(id); SL_EQ(styp); SL_EQ(omega); SL_EQ(v); SL_EQ(ivatn); SL_EQ(icid); SL_EQ(xc); SL_EQ(n);
+           SL_EQ(phase); SL_EQ(irigid);
+         });
+  d.list("initial_velocity_nodes", ma.initial_velocity_nodes, mb.initial_velocity_nodes,
+         [&](const std::string& w, const auto& a, const auto& b) { SL_EQ(nid); SL_EQ(v); SL_EQ(vr); });
   d.list("damping_parts", ma.damping_parts, mb.damping_parts, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag); SL_EQ(set); SL_EQ(stf);
   });

@@ -52,6 +52,36 @@ model::Model full_model() {
   m.curves.push_back({2, "", 1, 2.0, 0.5, 0.01, -0.02, 0, {{0.0, 0.0}, {0.3, 0.0}, {0.4, 1.0}}, {}});
   m.boxes.push_back({1, "upper half", {-1.0, 0.5, -1.0}, {2.0, 1.0 / 3.0 + 1.0, 2.0}, {}});
   m.boxes.push_back({2, "", {0.0, -1e-3, 0.0}, {1.5, 1.0, 1.02}, {}});
+  {
+    InitialVelocity iv;  // every field, the exempted card included
+    iv.nsid = 1;
+    iv.nsidex = 2;
+    iv.boxid = 1;
+    iv.irigid = -1;
+    iv.icid = 4;
+    iv.v = Vec3(1.0 / 3.0, -2.5, 1e-9);
+    iv.vr = Vec3(0.0, 0.0, 12.5);
+    iv.ve = Vec3(-1.0, 0.0, 0.125);
+    iv.vre = Vec3(3.0, 0.0, 0.0);
+    m.initial_velocities.push_back(iv);
+    iv = InitialVelocity{};
+    iv.v = Vec3(0.0, -7.0, 0.0);  // NSID = 0 (all nodes), no exempted card
+    m.initial_velocities.push_back(iv);
+    InitialVelocityGeneration g;
+    g.id = 2;
+    g.styp = 2;
+    g.omega = 100.0 / 7.0;
+    g.v = Vec3(1.0, -2.0, 3.0);
+    g.ivatn = 1;
+    g.icid = 3;
+    g.xc = Vec3(0.5, 0.25, -1.0);
+    g.n = Vec3(0.0, 0.6, 0.8);
+    g.phase = 1;
+    g.irigid = 1;
+    m.initial_velocity_generations.push_back(g);
+    m.initial_velocity_nodes.push_back({105, Vec3(0.0, 0.0, -1.0), Vec3::Zero()});
+    m.initial_velocity_nodes.push_back({99999999, Vec3(1e20, 2.0, 0.1), Vec3(0.5, -0.5, 1.0 / 3.0)});
+  }
   m.damping_global = DampingGlobal{0, 15.0, {1, 1, 1, 0, 0, 0}, {}};
   m.damping_parts.push_back({1, 2, 0.5, 0, false, {}, {}});
   m.damping_parts.push_back({1, 2, 0.25, 1, true, {0.5, 0.5, 0.5, 1.0, 1.0, 1.0}, {}});

@@ -28,7 +28,7 @@ std::string refusal(const std::string& deck) {
 
 TEST(KeywordUnsupported, PhysicsPrefixesAreErrorsOutputCardsAreNot) {
   for (const char* kw : {"*MAT_PIECEWISE_LINEAR_PLASTICITY", "*SECTION_BEAM", "*ELEMENT_BEAM", "*LOAD_SEGMENT_SET",
-                         "*BOUNDARY_NON_REFLECTING", "*INITIAL_VELOCITY_NODE", "*CONSTRAINED_NODAL_RIGID_BODY",
+                         "*BOUNDARY_NON_REFLECTING", "*INITIAL_STRESS_SOLID", "*CONSTRAINED_NODAL_RIGID_BODY",
                          "*RIGIDWALL_PLANAR", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "*CONTROL_IMPLICIT_GENERAL",
                          "*EOS_LINEAR_POLYNOMIAL", "*DEFINE_COORDINATE_SYSTEM", "*SET_SHELL_LIST", "*SOMETHING_NEW"}) {
     const std::string what = refusal(std::string("*KEYWORD\n") + kw + "\n         1\n*END\n");
@@ -54,7 +54,7 @@ TEST(KeywordUnsupported, OneLinePerKeywordWithIdsUsersAndLines) {
   }
   const std::string deck = reader_deck("unsupported_cards.k");
   EXPECT_EQ(what.rfind(deck + ":26: *MAT_PIECEWISE_LINEAR_PLASTICITY (material 3; used by part 1) is not supported\n" +
-                           deck + ":28: *INITIAL_VELOCITY_NODE (initial condition) is not supported\n",
+                           deck + ":28: *LOAD_SEGMENT (load) is not supported\n",
                        0),
             0u)
       << what;
@@ -89,13 +89,13 @@ TEST(KeywordUnsupported, DroppedCardsAreNamedByTheReferenceCheck) {
     EXPECT_EQ(std::string(e.what()), reader_deck("unsupported_cards.k") +
                                          ":23: part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (line 26), not supported");
   }
-  // The velocity card is referenced by nothing: dropped, listed, and the rest of the deck is clean.
-  const auto v = read_keyword_file(reader_deck("dropped_velocity.k"), nullptr, o);
+  // The point load is referenced by nothing: dropped, listed, and the rest of the deck is clean.
+  const auto v = read_keyword_file(reader_deck("dropped_load.k"), nullptr, o);
   EXPECT_TRUE(check_references(v).empty());
   const auto dropped = describe_dropped(v);
   ASSERT_EQ(dropped.size(), 1u);
   EXPECT_EQ(dropped[0].line, 24);
-  EXPECT_EQ(dropped[0].message, "*INITIAL_VELOCITY_NODE (id 5) dropped, 1 card(s)");
+  EXPECT_EQ(dropped[0].message, "*LOAD_SEGMENT (id 5) dropped, 1 card(s)");
 }
 
 TEST(KeywordUnsupported, RepeatedElementProblemsAreOneLine) {
