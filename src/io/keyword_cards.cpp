@@ -249,10 +249,15 @@ template <class Out>
 void read_id_list(const Context& ctx, Block& b, const char* name, Out& out) {
   while (const Line* l = b.take()) {
     Card c = card_of(ctx, *l, b);
-    for (int k = 0; k < c.size() && k < 8; ++k) {
+    for (int k = 0; k < c.size(); ++k) {
       Id id = 0;
       c.get(k, name, id);
-      if (id != 0) out.push_back(id);
+      if (id == 0) continue;
+      // A list card has 8 fields; LS-DYNA would not read a 9th on a free-format line.
+      if (k >= 8)
+        throw InputError(ctx.where(l->number) + b.keyword + ": a list card holds at most 8 " + name +
+                         " fields (got " + std::to_string(c.size()) + "); continue the list on the next line");
+      out.push_back(id);
     }
   }
 }

@@ -262,6 +262,19 @@ TEST(KeywordReader, PartMassDampingFactorCardAndSet) {
   EXPECT_THROW(read_keyword_string("*KEYWORD\n*DAMPING_PART_MASS\n1,2,0.5,2\n*END\n", "w.k"), InputError);
 }
 
+// A free-format list line longer than a card's 8 fields is an error, not a silently short set.
+TEST(KeywordReader, OverlongFreeFormatListLineIsAnError) {
+  try {
+    read_keyword_string("*KEYWORD\n*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8,9\n*END\n", "w.k");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("w.k:4: *SET_NODE_LIST: a list card holds at most 8 NID", 0), 0u) << e.what();
+  }
+  const auto m = read_keyword_string("*KEYWORD\n*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8,\n9\n*END\n", "w.k");
+  ASSERT_EQ(m.node_sets.size(), 1u);
+  EXPECT_EQ(m.node_sets[0].nodes.size(), 9u);  // a trailing comma is a blank field
+}
+
 TEST(KeywordReader, CheckReferencesNamesEveryMissingId) {
   const std::string deck =
       "*NODE\n1,0,0,0\n2,1,0,0\n"
