@@ -49,6 +49,19 @@ RigidBody::RigidBody(Id part_id, std::vector<Index> nodes, std::array<int, 6> fi
     throw InputError("rigid part " + std::to_string(part_id_) + " has no nodes");
 }
 
+void RigidBody::add_drive(RigidDrive drive, const std::string& where) {
+  const int c = static_cast<int>(drive.axis);
+  const char* axis = c == 0 ? "x" : c == 1 ? "y" : "z";
+  if (fixed_[c])
+    throw InputError(where + ": rigid part " + std::to_string(part_id_) + " is fixed along " + axis +
+                     " by its *MAT_RIGID (CMO = 1, CON1) and cannot also be driven along it");
+  for (const auto& d : drives_)
+    if (d.axis == drive.axis)
+      throw InputError(where + ": rigid part " + std::to_string(part_id_) + " already has a prescribed motion along " +
+                       axis);
+  drives_.push_back(std::move(drive));
+}
+
 Mat3 RigidBody::inertia() const { return rotate_tensor(q_, inertia0_); }
 
 Vec3 RigidBody::solve_omega(const Mat3& inertia, const Vec3& l) const {
@@ -83,6 +96,11 @@ void RigidBody::initialize(NodalFields& nodes, std::span<const Real> mass) {
     throw InputError("rigid part " + std::to_string(part_id_) +
                      " has no mass (its elements must add mass before the body initialises)");
   com_ = first / mass_;
+  com0_ = com_;
+  drive_.fill(nullptr);  // drives_ is complete now: pointers into it stay valid
+  for (const auto& d : drives_) drive_[static_cast<int>(d.axis)] = &d;
+  driving_.fill(false);
+  v_drive_.setZero();
   offset0_.resize(nodes_.size());
   point_inertia0_.setZero();
   Real rot = 0.0;
@@ -135,6 +153,23 @@ void RigidBody::constrain_accelerations(const ConstraintLoads& loads, NodalField
   Vec3 acc = f / mass_;
   for (int c = 0; c < 3; ++c)
     if (fixed_[c]) acc[c] = 0.0;
+  // A driven axis: the acceleration that lands the centre of mass on the drive's velocity over
+  // the coming step (the same rules as a nodal prescribed motion, Simulation::prescribe_supports);
+  // the body exerts F - M A on the drive.
+  for (int c = 0; c < 3; ++c) {
+    const RigidDrive* d = drive_[c];
+    driving_[c] = d != nullptr && d->active(t) && loads.dt_avg > 0.0 && loads.dt_next > 0.0;
+    if (!driving_[c]) continue;
+    switch (d->kind) {
+      case Prescribed::displacement:
+        v_drive_[c] = (d->scale * d->curve(t + loads.dt_next) - (com_[c] - com0_[c])) / loads.dt_next;
+        break;
+      case Prescribed::velocity: v_drive_[c] = d->scale * d->curve(t + 0.5 * loads.dt_next); break;
+      case Prescribed::acceleration: v_drive_[c] = vel_[c] + d->scale * d->curve(t) * loads.dt_avg; break;
+    }
+    acc[c] = (v_drive_[c] - vel_[c]) / loads.dt_avg;
+    reaction_f_[c] = f[c] - mass_ * acc[c];
+  }
   // The nodes' own moments change their own angular velocities in the simulation's update; the
   // point masses carry the torque of the forces.
   const Vec3 beta = solve_spd(rotate_tensor(q_, point_inertia0_), tau_p);
@@ -157,8 +192,10 @@ void RigidBody::after_positions(std::span<const Real> mass, NodalFields& nodes, 
     if (carries_rotation(nodes, i)) l += nodes.rot_inertia[i] * nodes.omega.get(i);
   }
   vel_ = p / mass_;
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < 3; ++c) {
     if (fixed_[c]) vel_[c] = 0.0;
+    if (driving_[c]) vel_[c] = v_drive_[c];  // exactly, whatever damping the update applied
+  }
   com_ += dt * vel_;
 
   // omega^{n+1/2} = I(t^{n+1/2})^{-1} L^{n+1/2}: the mid-step orientation depends on omega, so
@@ -180,7 +217,7 @@ void RigidBody::after_positions(std::span<const Real> mass, NodalFields& nodes, 
 }
 
 void RigidBody::append_output_names(std::vector<std::string>& names) const {
-  if (std::none_of(fixed_.begin(), fixed_.end(), [](int f) { return f != 0; })) return;
+  if (std::none_of(fixed_.begin(), fixed_.end(), [](int f) { return f != 0; }) && drives_.empty()) return;
   const std::string base = "supports/rigid_" + std::to_string(part_id_);
   names.push_back(base + "/reaction");
   names.push_back(base + "/reaction_moment");

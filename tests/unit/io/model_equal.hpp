@@ -136,7 +136,7 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
   d.list("prescribed_motions", ma.prescribed_motions, mb.prescribed_motions,
          [&](const std::string& w, const auto& a, const auto& b) {
            SL_EQ(id); SL_EQ(title); SL_EQ(nsid); SL_EQ(dof); SL_EQ(vad); SL_EQ(lcid); SL_EQ(sf); SL_EQ(vid);
-           SL_EQ(death); SL_EQ(birth);
+           SL_EQ(death); SL_EQ(birth); SL_EQ(target);
          });
   d.list("body_loads", ma.body_loads, mb.body_loads, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(axis); SL_EQ(lcid); SL_EQ(sf); SL_EQ(lciddr); SL_EQ(xc); SL_EQ(yc); SL_EQ(zc); SL_EQ(cid);

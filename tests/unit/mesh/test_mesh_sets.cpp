@@ -103,7 +103,6 @@ TEST(MeshSets, BadSetsAreInputErrors) {
 TEST(MeshSets, ShellDeckSetsResolve) {
   model::Model m = read_keyword_file(deck_path("shells_all_contacts.k"));
   m.contacts.clear();            // not built yet
-  m.prescribed_motions.clear();  // this seed deck prescribes a velocity (VAD = 0), not implemented
   auto sim = build_simulation(m);
   const MeshSets& s = sim->sets;
   EXPECT_EQ(s.node_sets.at(1).size(), 9u);
