@@ -97,8 +97,6 @@ void RigidBody::initialize(NodalFields& nodes, std::span<const Real> mass) {
                      " has no mass (its elements must add mass before the body initialises)");
   com_ = first / mass_;
   com0_ = com_;
-  drive_.fill(nullptr);  // drives_ is complete now: pointers into it stay valid
-  for (const auto& d : drives_) drive_[static_cast<int>(d.axis)] = &d;
   driving_.fill(false);
   v_drive_.setZero();
   offset0_.resize(nodes_.size());
@@ -156,16 +154,17 @@ void RigidBody::constrain_accelerations(const ConstraintLoads& loads, NodalField
   // A driven axis: the acceleration that lands the centre of mass on the drive's velocity over
   // the coming step (the same rules as a nodal prescribed motion, Simulation::prescribe_supports);
   // the body exerts F - M A on the drive.
-  for (int c = 0; c < 3; ++c) {
-    const RigidDrive* d = drive_[c];
-    driving_[c] = d != nullptr && d->active(t) && loads.dt_avg > 0.0 && loads.dt_next > 0.0;
+  driving_.fill(false);
+  for (const RigidDrive& d : drives_) {
+    const int c = static_cast<int>(d.axis);
+    driving_[c] = d.active(t) && loads.dt_avg > 0.0 && loads.dt_next > 0.0;
     if (!driving_[c]) continue;
-    switch (d->kind) {
+    switch (d.kind) {
       case Prescribed::displacement:
-        v_drive_[c] = (d->scale * d->curve(t + loads.dt_next) - (com_[c] - com0_[c])) / loads.dt_next;
+        v_drive_[c] = (d.scale * d.curve(t + loads.dt_next) - (com_[c] - com0_[c])) / loads.dt_next;
         break;
-      case Prescribed::velocity: v_drive_[c] = d->scale * d->curve(t + 0.5 * loads.dt_next); break;
-      case Prescribed::acceleration: v_drive_[c] = vel_[c] + d->scale * d->curve(t) * loads.dt_avg; break;
+      case Prescribed::velocity: v_drive_[c] = d.scale * d.curve(t + 0.5 * loads.dt_next); break;
+      case Prescribed::acceleration: v_drive_[c] = vel_[c] + d.scale * d.curve(t) * loads.dt_avg; break;
     }
     acc[c] = (v_drive_[c] - vel_[c]) / loads.dt_avg;
     reaction_f_[c] = f[c] - mass_ * acc[c];

@@ -87,8 +87,7 @@ class RigidBody final : public NodalConstraint {
   Eigen::Quaternion<Real> q_ = Eigen::Quaternion<Real>::Identity();
   Vec3 reaction_f_ = Vec3::Zero();
   Vec3 reaction_m_ = Vec3::Zero();
-  std::array<const RigidDrive*, 3> drive_{};  // per axis, into drives_ (null: not driven)
-  std::vector<RigidDrive> drives_;
+  std::vector<RigidDrive> drives_;  // at most one per axis
   std::array<bool, 3> driving_{};   // per axis: the drive acts over the current step
   Vec3 v_drive_ = Vec3::Zero();     // the velocity it imposes over the current step
   Vec3 com0_ = Vec3::Zero();        // centre of mass at t = 0 (displacement drives)
