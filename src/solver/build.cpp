@@ -498,25 +498,24 @@ struct Builder {
     }
   }
 
-  /// *BOUNDARY_PRESCRIBED_MOTION_RIGID: drives the centre of mass of a *MAT_RIGID part.
+  /// *BOUNDARY_PRESCRIBED_MOTION_RIGID: drives the centre of mass of a *MAT_RIGID part (DOF 1-3)
+  /// or its angular velocity about a global axis (DOF 5-7).
   void build_rigid_motion(const model::PrescribedMotion& pm) {
     const std::string card = pm.keyword();
     const auto body = rigid_bodies.find(pm.nsid);
     if (body == rigid_bodies.end())
       throw InputError(describe(pm.src) + ": field PID of " + card + " refers to part " + std::to_string(pm.nsid) +
                        (part_nodes.count(pm.nsid) ? ", which is not a *MAT_RIGID part" : ", which has no elements in the deck"));
-    // The rigid body code has no angular-velocity drive: its rotations are free or fixed (CON2).
-    if (pm.dof >= 5 && pm.dof <= 7)
+    const bool rotation = pm.dof >= 5 && pm.dof <= 7;
+    if (!rotation && (pm.dof < 1 || pm.dof > 3))
       throw NotImplementedError(describe(pm.src) + ": field DOF of " + card + " = " + std::to_string(pm.dof) +
-                                ": prescribed rotations of a rigid body are not implemented (DOF 1-3 are)");
-    if (pm.dof < 1 || pm.dof > 3)
-      throw NotImplementedError(describe(pm.src) + ": field DOF of " + card + " = " + std::to_string(pm.dof) +
-                                " is not implemented (1-3, the translations, are)");
+                                " is not implemented (1-3, the translations, and 5-7, the rotations, are)");
     if (pm.vad == 1)
       throw InputError(describe(pm.src) + ": field VAD of " + card +
                        ": LS-DYNA prescribes accelerations (VAD 1) on nodes only, not on rigid bodies");
     RigidDrive d;
-    d.axis = static_cast<Axis>(pm.dof - 1);
+    d.axis = static_cast<Axis>(rotation ? pm.dof - 5 : pm.dof - 1);
+    d.rotation = rotation;
     d.kind = pm.vad == 0 ? Prescribed::velocity : Prescribed::displacement;
     d.curve = curve(pm.lcid, pm.src, "LCID");
     d.scale = pm.sf;

@@ -115,13 +115,14 @@ void check_controls(const model::Model& m, const BuildOptions& o, Problems& p) {
     else if (pm.vad == 1 && rigid)
       p.bad(pm.src, "field VAD of " + card +
                         ": LS-DYNA prescribes accelerations (VAD 1) on nodes only, not on rigid bodies");
-    // DOF: the translations 1-3 are run. Rotations 5-7 (the rigid body code has no angular
-    // velocity drive), 4/-4/8/-8 (along VID), 9-12 (rotation about an axis through the body, radial
-    // motion) and -1..-3 (not in the LS-DYNA manual's list) are not.
-    if (pm.dof < 1 || pm.dof > 3) {
+    // DOF: the translations 1-3 are run, and the rotations 5-7 of a rigid part. Rotations of
+    // nodes, 4/-4/8/-8 (along VID), 9-12 (rotation about an axis through the body, radial motion)
+    // and -1..-3 (not in the LS-DYNA manual's list) are not.
+    const bool rigid_rotation = rigid && pm.dof >= 5 && pm.dof <= 7;
+    if ((pm.dof < 1 || pm.dof > 3) && !rigid_rotation) {
       if (pm.dof >= -12 && pm.dof <= 12 && pm.dof != 0)
-        p.todo(pm.src, "field DOF of " + card + ": DOF " + std::to_string(pm.dof) +
-                           " is not implemented (DOF 1-3, the translations, are)");
+        p.todo(pm.src, "field DOF of " + card + ": DOF " + std::to_string(pm.dof) + " is not implemented (DOF 1-3, the translations, are" +
+                           (rigid ? ", and 5-7, the rotations)" : "; rotations 5-7 on _RIGID only)"));
       else
         p.bad(pm.src, "field DOF of " + card + " must be 1 to 12, -4 or -8 (got " + std::to_string(pm.dof) + ")");
     }

@@ -37,8 +37,9 @@ class RigidBody final : public NodalConstraint {
   /// x y z rx ry rz of the global axes (CMO = +1 CON1 / CON2).
   RigidBody(Id part_id, std::vector<Index> nodes, std::array<int, 6> fixed_dofs);
 
-  /// Prescribes the motion of the centre of mass along one axis (before initialize). Throws
-  /// InputError if the axis is fixed (CMO/CON1) or already driven; `where` names the card.
+  /// Prescribes the motion of the centre of mass along one axis, or the angular velocity about
+  /// one axis (before initialize). Throws InputError if that dof is fixed (CMO/CON1/CON2) or
+  /// already driven; `where` names the card.
   void add_drive(RigidDrive drive, const std::string& where);
 
   void initialize(NodalFields& nodes, std::span<const Real> mass) override;
@@ -70,6 +71,7 @@ class RigidBody final : public NodalConstraint {
 
  private:
   Vec3 solve_omega(const Mat3& inertia, const Vec3& l) const;
+  bool held_rotation(int c) const { return fixed_[3 + c] != 0 || driving_[3 + c]; }
   void reset_nodes(NodalFields& nodes) const;
 
   Id part_id_;
@@ -88,8 +90,10 @@ class RigidBody final : public NodalConstraint {
   Vec3 reaction_f_ = Vec3::Zero();
   Vec3 reaction_m_ = Vec3::Zero();
   std::vector<RigidDrive> drives_;  // at most one per axis
-  std::array<bool, 3> driving_{};   // per axis: the drive acts over the current step
+  std::array<bool, 6> driving_{};   // per dof (x y z rx ry rz): a drive acts over the current step
   Vec3 v_drive_ = Vec3::Zero();     // the velocity it imposes over the current step
+  Vec3 w_drive_ = Vec3::Zero();     // the angular velocity it imposes (global components)
+  Vec3 angle_ = Vec3::Zero();       // sum of dt omega^{n+1/2} (rotation-angle drives)
   Vec3 com0_ = Vec3::Zero();        // centre of mass at t = 0 (displacement drives)
   Real t_n_ = 0.0;       // time of the last constrain_accelerations
   Real dt_last_ = 0.0;   // the step that led to t^n

@@ -374,7 +374,7 @@ TEST(PrescribedMotionRigid, UnsupportedOrConflictingDrivesAreRefused) {
   };
   {
     model::Model m = punch_on_block(0.1);
-    m.prescribed_motions.push_back(rigid_motion(2, 6, 0, 1.0));  // a rotation about y
+    m.prescribed_motions.push_back(rigid_motion(2, 8, 0, 1.0));  // a rotation about VID
     const std::string e = error(m);
     EXPECT_NE(e.find("todo: "), std::string::npos) << e;
     EXPECT_NE(e.find("motion.k:40"), std::string::npos) << e;
@@ -443,4 +443,90 @@ TEST(PrescribedMotionRigid, PunchDrivenFromRestClosesTheBalance) {
   const Real coarse = run(0.9), fine = run(0.45);
   EXPECT_LT(coarse, 1e-3);
   EXPECT_LT(fine, coarse / 3.0);
+}
+
+namespace {
+
+/// Position of node `id` of the punch if it turned by `angle` about z through `com`.
+Vec3 turned(const Simulation& sim, Id id, const Vec3& com, Real angle) {
+  for (Index i = 0; i < static_cast<Index>(sim.nodes.size()); ++i)
+    if (sim.nodes.ids[i] == id) {
+      const Vec3 r = sim.nodes.x0.get(i) - com;
+      return com + Vec3(std::cos(angle) * r[0] - std::sin(angle) * r[1],
+                        std::sin(angle) * r[0] + std::cos(angle) * r[1], r[2]);
+    }
+  return Vec3::Constant(std::nan(""));
+}
+
+Vec3 position(const Simulation& sim, Id id) {
+  for (Index i = 0; i < static_cast<Index>(sim.nodes.size()); ++i)
+    if (sim.nodes.ids[i] == id) return sim.nodes.x.get(i);
+  return Vec3::Constant(std::nan(""));
+}
+
+}  // namespace
+
+TEST(PrescribedMotionRigid, RotationDrivesTurnTheBodyAboutItsCentreOfMass) {
+  // DOF 7 (about z) on the free punch: VAD 0 at omega = 2, and VAD 2 with the angle 0.5 t. Every
+  // node turns about the centre of mass by the prescribed angle (the exponential map of a
+  // rotation about one axis is exact), which stays where it was.
+  for (int vad : {0, 2}) {
+    model::Model m = punch_on_block(0.4);
+    m.contacts.clear();
+    model::Curve c;
+    c.lcid = 5;
+    c.points = vad == 0 ? std::vector<std::pair<Real, Real>>{{0.0, 2.0}, {10.0, 2.0}}
+                        : std::vector<std::pair<Real, Real>>{{0.0, 0.0}, {10.0, 5.0}};
+    m.curves.push_back(c);
+    auto p = rigid_motion(2, 7, vad, 1.0);
+    p.lcid = 5;
+    m.prescribed_motions.push_back(p);
+    auto sim = build_simulation(m);
+    sim->initialize();
+    const RigidBody& punch = body(*sim);
+    const Vec3 com0 = punch.center_of_mass();
+    Real worst = 0.0;
+    while (sim->step()) {
+      const Real angle = (vad == 0 ? 2.0 : 0.5) * sim->time();
+      for (Id id = 101; id <= 108; ++id)
+        worst = std::max(worst, (position(*sim, id) - turned(*sim, id, com0, angle)).norm());
+      EXPECT_LT((punch.center_of_mass() - com0).norm(), 1e-15);
+    }
+    EXPECT_LT(worst, 1e-14) << "VAD " << vad;
+    EXPECT_NEAR(punch.angular_velocity()[2], vad == 0 ? 2.0 : 0.5, 1e-13) << "VAD " << vad;
+    EXPECT_NEAR(punch.angular_velocity()[0], 0.0, 1e-15);  // round-off of the rotated inertia
+    EXPECT_NEAR(punch.angular_velocity()[1], 0.0, 1e-15);
+  }
+}
+
+TEST(PrescribedMotionRigid, SpinUpReactionMomentAndBalance) {
+  // omega_z = 3 t from rest: the moment the punch exerts on its drive is -I_zz * 3, with I_zz the
+  // point-mass inertia of its lumped nodes (sum m (x^2 + y^2) about the centre of mass); the
+  // drive's work (constraint term) is the body's kinetic energy.
+  model::Model m = punch_on_block(0.4);
+  m.contacts.clear();
+  model::Curve c;
+  c.lcid = 5;
+  c.points = {{0.0, 0.0}, {10.0, 10.0}};
+  m.curves.push_back(c);
+  auto p = rigid_motion(2, 7, 0, 3.0);
+  p.lcid = 5;
+  m.prescribed_motions.push_back(p);
+  auto sim = build_simulation(m);
+  sim->initialize();
+  const RigidBody& punch = body(*sim);
+  Real izz = 0.0;
+  for (Index i : punch.nodes()) {
+    const Vec3 r = sim->nodes.x0.get(i) - punch.center_of_mass();
+    izz += sim->nodes.mass[i] * (r[0] * r[0] + r[1] * r[1]);
+  }
+  EXPECT_NEAR(izz, punch.inertia()(2, 2), 1e-15);
+  Real worst = 0.0;
+  while (sim->step()) worst = std::max(worst, std::abs(punch.reaction_moment()[2] + izz * 3.0));
+  EXPECT_LT(worst, 1e-12 * izz * 3.0);
+  const EnergyReport& e = sim->energy();
+  std::printf("spin-up: %ld cycles, max |M_z + I_zz alpha| %.3g, drive work %.6g, kinetic %.6g, relative balance error %.3g\n",
+              sim->cycle(), worst, e.constraint, e.kinetic, e.relative_balance_error());
+  EXPECT_GT(e.kinetic, 0.0);
+  EXPECT_LT(std::abs(e.relative_balance_error()), 1e-3);
 }
