@@ -183,13 +183,17 @@ void read_mat_mooney_rivlin(const Context& ctx, Block& b, Model& m, bool titled)
   c.get(2, "PR", mat.pr);
   c.get(3, "A", mat.a);
   c.get(4, "B", mat.b);
-  // Card 2 (SGL SW ST LCID) fits A and B to test data; only given A and B are supported.
+  // Card 2 (SGL SW ST LCID) fits A and B to test data. LS-DYNA then computes A and B from the
+  // curve (the card's own A and B are not used), so running with the given A and B would be
+  // another material: refused.
   if (const Line* l2 = b.take()) {
     Card c2 = card_of(ctx, *l2, b);
     Id lcid = 0;
     c2.get(3, "LCID", lcid);
     if (lcid != 0)
-      ctx.warn(l2->number, b.keyword + ": fitting A, B to curve LCID is not supported; A and B used");
+      throw NotImplementedError(ctx.where(l2->number) + b.keyword +
+                                ": fitting A and B to the force-extension curve LCID is not implemented; "
+                                "give A and B and leave LCID blank");
   }
   mat.title = title;
   mat.src = ctx.source(l.number);
@@ -401,18 +405,29 @@ void read_damping_global(const Context& ctx, Block& b, Model& m) {
   });
 }
 
-void read_damping_part(const Context& ctx, Block& b, Model& m) {
+void read_damping_part(const Context& ctx, Block& b, Model& m, bool set) {
   while (const Line* l = next_record(b)) {
     Card c = card_of(ctx, *l, b);
     model::DampingPartMass d;
-    c.get(0, "PID", d.pid);
+    d.set = set;
+    c.get(0, set ? "PSID" : "PID", d.pid);
     c.get(1, "LCID", d.lcid);
     c.get(2, "SF", d.sf);
     c.get(3, "FLAG", d.flag);
-    // FLAG = 1 adds a card of per-direction scale factors, not modelled.
-    if (d.flag == 1 && b.take())
-      ctx.warn(l->number, b.keyword + ": per-direction scale factors (FLAG=1 card) ignored");
     d.src = ctx.source(l->number);
+    if (d.flag != 0 && d.flag != 1)
+      throw InputError(ctx.where(l->number) + "field FLAG of " + b.keyword + " must be 0 or 1 (got " +
+                       std::to_string(d.flag) + ")");
+    // FLAG = 1: a second card of per-direction scale factors (the builder decides what it can do).
+    if (d.flag == 1) {
+      const Line* s = next_record(b);
+      if (!s)
+        throw InputError(ctx.where(l->number) + b.keyword +
+                         " with FLAG = 1 needs a card of scale factors STX STY STZ SRX SRY SRZ");
+      Card k = card_of(ctx, *s, b);
+      static const char* const names[] = {"STX", "STY", "STZ", "SRX", "SRY", "SRZ"};
+      for (int q = 0; q < 6; ++q) k.get(q, names[q], d.stf[static_cast<std::size_t>(q)]);
+    }
     m.damping_parts.push_back(d);
   }
 }
@@ -445,14 +460,14 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     k.get(3, "TSLIMT", t.tslimt);
     k.get(4, "DT2MS", t.dt2ms);
     k.get(5, "LCTM", t.lctm);
-    // Read (the writer keeps them) but not honoured by the solver: say so.
+    // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
+    // step (the stable step is always respected); DT2MS (mass scaling: physics) and LCTM are the
+    // builder's business.
     const auto ignored = [&](bool set, const char* field, const char* what) {
       if (set)
         ctx.warn(l.number, std::string("*CONTROL_TIMESTEP: field ") + field + " (" + what +
                                ") is read but not honoured; the run does without it");
     };
-    ignored(t.dt2ms != 0.0, "DT2MS", "mass scaling");
-    ignored(t.lctm != 0, "LCTM", "time-step limit curve");
     ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
     ignored(t.isdo != 0, "ISDO", "shell time-step length option");
     ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
@@ -564,7 +579,7 @@ const std::vector<Entry>& table() {
       {"*DEFINE_CURVE", "_TITLE", read_curve},
       {"*DEFINE_BOX", "_TITLE", read_box},
       {"*DAMPING_GLOBAL", nullptr, plain(read_damping_global)},
-      {"*DAMPING_PART_MASS", nullptr, plain(read_damping_part)},
+      {"*DAMPING_PART_MASS", "_SET", read_damping_part},
       {"*DAMPING_PART_STIFFNESS", "_SET", read_damping_stiffness},
       {"*DATABASE_HISTORY_NODE", nullptr, plain([](const Context& c, Block& b, Model& m) {
          read_id_list(c, b, "ID", m.database.history_nodes);

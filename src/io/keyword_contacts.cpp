@@ -112,7 +112,10 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
     if (c.type == ContactType::one_way)
       c.sliding_only_option = true;
     else
-      ctx.warn(b.line, b.keyword + ": _SLIDING_ONLY applies to *CONTACT_ONE_WAY_SURFACE_TO_SURFACE only; ignored");
+      // The option changes the physics (no separation): refuse it where it means nothing.
+      throw InputError(ctx.where(b.line) + b.keyword +
+                       ": _SLIDING_ONLY is an option of *CONTACT_ONE_WAY_SURFACE_TO_SURFACE only (type 1 "
+                       "sliding is *CONTACT_SLIDING_ONLY)");
   }
 
   const Line* l = b.take();

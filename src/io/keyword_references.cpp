@@ -160,7 +160,10 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
   if (m.damping_global && m.damping_global->lcid != 0 && !curves.count(m.damping_global->lcid))
     ck.add(m.damping_global->src, "*DAMPING_GLOBAL refers to undefined curve " + std::to_string(m.damping_global->lcid));
   for (const auto& d : m.damping_parts) {
-    if (!parts.count(d.pid)) ck.add(d.src, "*DAMPING_PART_MASS refers to undefined part " + std::to_string(d.pid));
+    if (d.set && !part_sets.count(d.pid))
+      ck.add(d.src, "*DAMPING_PART_MASS_SET refers to undefined part set " + std::to_string(d.pid));
+    if (!d.set && !parts.count(d.pid))
+      ck.add(d.src, "*DAMPING_PART_MASS refers to undefined part " + std::to_string(d.pid));
     if (!curves.count(d.lcid)) ck.add(d.src, "*DAMPING_PART_MASS refers to undefined curve " + std::to_string(d.lcid));
   }
   for (const auto& d : m.damping_stiffness) {

@@ -258,9 +258,15 @@ std::string write_keyword_string(const model::Model& m) {
     o += c.str();
   }
   for (const auto& d : m.damping_parts) {
-    o += "*DAMPING_PART_MASS\n$#     PID      LCID        SF      FLAG\n";
+    o += d.set ? "*DAMPING_PART_MASS_SET\n$#    PSID      LCID        SF      FLAG\n"
+               : "*DAMPING_PART_MASS\n$#     PID      LCID        SF      FLAG\n";
     o += CardOut().i(d.pid).i(d.lcid).r(d.sf).i(d.flag).str();
-    if (d.flag == 1) o += "\n";  // the per-direction scale-factor card FLAG=1 asks for
+    if (d.flag == 1) {
+      o += "$#     STX       STY       STZ       SRX       SRY       SRZ\n";
+      CardOut c;
+      for (Real s : d.stf) c.r(s);
+      o += c.str();
+    }
   }
   for (const auto& d : m.damping_stiffness) {
     o += d.set ? "*DAMPING_PART_STIFFNESS_SET\n$#    PSID      COEF\n"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -20,6 +21,15 @@ std::string describe(const model::Source& src) {
 }
 
 namespace {
+
+/// The one scale factor of LS-DYNA's per-direction damping factors STX..SRZ when they all agree
+/// (all blank/0 means 1, as LS-DYNA reads them), else nothing: directions damped differently are
+/// not implemented.
+std::optional<Real> common_direction_factor(const std::array<Real, 6>& stf) {
+  if (std::all_of(stf.begin(), stf.end(), [](Real s) { return s == 0.0; })) return 1.0;
+  if (std::all_of(stf.begin(), stf.end(), [&](Real s) { return s == stf[0]; })) return stf[0];
+  return std::nullopt;
+}
 
 /// Id -> record lookups with errors that name the referring card.
 template <class T>
@@ -555,11 +565,12 @@ struct Builder {
       } else {
         md.alpha = d.valdmp;
       }
-      for (Real s : d.stf)
-        if (s != 0.0 && s != 1.0)
-          throw NotImplementedError(describe(d.src) +
-                                    ": per-direction damping scale factors STX..SRZ are not "
-                                    "implemented");
+      const auto factor = common_direction_factor(d.stf);
+      if (!factor)
+        throw NotImplementedError(describe(d.src) +
+                                  ": per-direction damping scale factors STX..SRZ are not implemented; "
+                                  "only one factor for every direction is accepted");
+      md.alpha *= *factor;
       sim->damping.push_back(std::move(md));
     }
     for (const auto& d : m.damping_parts) {
@@ -567,8 +578,14 @@ struct Builder {
       md.alpha = d.sf;
       md.has_curve = true;
       md.curve = curve(d.lcid, d.src, "LCID");
-      md.nodes = d.flag == 1 ? parts_nodes(part_set(d.pid, d.src, "PSID"), d.src)
-                             : parts_nodes({d.pid}, d.src);
+      // FLAG = 1 is LS-DYNA's per-direction scale-factor card, not a part set (that is _SET).
+      const auto factor = d.flag == 1 ? common_direction_factor(d.stf) : std::optional<Real>(1.0);
+      if (!factor)
+        throw NotImplementedError(describe(d.src) +
+                                  ": per-direction damping scale factors STX..SRZ (FLAG = 1) are not "
+                                  "implemented; only one factor for every direction is accepted");
+      md.alpha *= *factor;
+      md.nodes = d.set ? parts_nodes(part_set(d.pid, d.src, "PSID"), d.src) : parts_nodes({d.pid}, d.src);
       sim->damping.push_back(std::move(md));
     }
   }
@@ -592,6 +609,20 @@ struct Builder {
       throw InputError("*CONTROL_TERMINATION: ENDTIM must be positive (got " +
                        std::to_string(m.termination.endtim) + ")");
     c.dt_scale = m.timestep.tssfac > 0.0 ? m.timestep.tssfac : 0.9;
+    if (m.timestep.dt2ms != 0.0)
+      throw NotImplementedError(describe(m.timestep.src) +
+                                ": field DT2MS of *CONTROL_TIMESTEP (mass scaling) is not implemented; it "
+                                "adds mass, so running without it would be a different model (set it to 0)");
+    if (m.timestep.lctm != 0) {
+      c.has_dt_max_curve = true;
+      c.dt_max_curve = curve(m.timestep.lctm, m.timestep.src, "LCTM");
+      // The curve bounds the step; the stable step is still respected below it.
+      for (const auto& [t, v] : c.dt_max_curve.points())
+        if (!(v > 0.0))
+          throw InputError(describe(m.timestep.src) + ": curve " + std::to_string(m.timestep.lctm) +
+                           " (LCTM, the largest step against time) must be positive everywhere (got " +
+                           std::to_string(v) + " at t = " + std::to_string(t) + ")");
+    }
     Real hi = 0.0;
     for (Real v : {m.database.rcforc, m.database.spcforc, m.database.nodout, m.database.glstat})
       if (v > 0.0) hi = hi > 0.0 ? std::min(hi, v) : v;

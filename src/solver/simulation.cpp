@@ -332,6 +332,7 @@ StepPlan Simulation::plan_step() const {
   // The scaled stable step, divided so as to land exactly on the next output time.
   Real dt_new = controls.dt_scale * dt_crit_;
   if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
+  if (controls.has_dt_max_curve) dt_new = std::min(dt_new, controls.dt_max_curve(t_));
   Real target = end > 0.0 ? end : std::numeric_limits<Real>::infinity();
   if (controls.history_interval > 0.0)
     target = std::min(target, next_output_time(controls.history_interval, t_));

@@ -243,12 +243,15 @@ struct DampingGlobal {
   Source src;
 };
 
-/// *DAMPING_PART_MASS: mass-proportional damping of one part (or part set with FLAG=1).
+/// *DAMPING_PART_MASS[_SET]: mass-proportional damping of one part (or of the parts of a part set
+/// with _SET). FLAG = 1 adds a card of per-direction scale factors STX..SRZ.
 struct DampingPartMass {
-  Id pid = 0;
+  Id pid = 0;  ///< part id, or part set id when `set`
   Id lcid = 0;
   Real sf = 1.0;
   int flag = 0;
+  bool set = false;
+  std::array<Real, 6> stf{0, 0, 0, 0, 0, 0};  ///< STX..SRZ (read when FLAG = 1)
   Source src;
 };
 

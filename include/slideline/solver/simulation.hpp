@@ -32,6 +32,9 @@ struct SimulationControls {
   Real end_time = 0.0;
   Real dt_scale = 0.9;          ///< time-step scale factor applied to the stable element step
   Real dt_max = 0.0;            ///< upper bound on the step (0 = none)
+  /// Upper bound on the step against time (LS-DYNA LCTM of *CONTROL_TIMESTEP), when set.
+  bool has_dt_max_curve = false;
+  LoadCurve dt_max_curve;
   Real history_interval = 0.0;  ///< 0 = histories at every cycle
   Real state_interval = 0.0;    ///< 0 = no nodal states
   long max_cycles = 0;          ///< 0 = no limit

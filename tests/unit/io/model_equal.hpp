@@ -149,7 +149,7 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
     SL_EQ(boxid); SL_EQ(title); SL_EQ(min); SL_EQ(max);
   });
   d.list("damping_parts", ma.damping_parts, mb.damping_parts, [&](const std::string& w, const auto& a, const auto& b) {
-    SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag);
+    SL_EQ(pid); SL_EQ(lcid); SL_EQ(sf); SL_EQ(flag); SL_EQ(set); SL_EQ(stf);
   });
   d.list("damping_stiffness", ma.damping_stiffness, mb.damping_stiffness,
          [&](const std::string& w, const auto& a, const auto& b) { SL_EQ(pid); SL_EQ(coef); SL_EQ(set); });

@@ -239,7 +239,7 @@ TEST(KeywordReader, MalformedFieldNamesFileLineColumnsFieldAndCard) {
 
 TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
   const std::string deck =
-      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE_SLIDING_ONLY\n1,2\n*END\n";
+      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE\n1,2\n*END\n";
   std::vector<Diagnostic> warnings;
   try {
     read_keyword_string(deck, "w.k", &warnings);
@@ -250,9 +250,7 @@ TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
     EXPECT_NE(what.find("w.k:4: *CONTACT_ERODING_SINGLE_SURFACE (contact type) is not supported"), std::string::npos)
         << what;
   }
-  // The _SLIDING_ONLY warning was gathered before the error, for the caller to print.
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0].line, 6);
+  EXPECT_TRUE(warnings.empty());
 
   warnings.clear();
   ReadOptions ignore;
@@ -264,12 +262,44 @@ TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
   EXPECT_EQ(m.unsupported[0].keyword, "*FOO_BAR");
   EXPECT_EQ(m.unsupported[0].id, 1);
   EXPECT_EQ(m.unsupported[1].src.line, 4);
-  ASSERT_EQ(warnings.size(), 3u);
-  EXPECT_NE(to_string(warnings[1]).find("w.k:2: *FOO_BAR (keyword not in slideline's tables) dropped"), std::string::npos)
-      << to_string(warnings[1]);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(to_string(warnings[0]).find("w.k:2: *FOO_BAR (keyword not in slideline's tables) dropped"), std::string::npos)
+      << to_string(warnings[0]);
   const auto dropped = describe_dropped(m);
   ASSERT_EQ(dropped.size(), 2u);
   EXPECT_EQ(to_string(dropped[1]), "w.k:4: *CONTACT_ERODING_SINGLE_SURFACE (id 1) dropped, 1 card(s)");
+}
+
+// _SLIDING_ONLY (no separation) changes the physics: where it means nothing it is an error naming
+// the line, never a warning and a run without it.
+TEST(KeywordReader, SlidingOnlyOptionOutsideTypeTenIsAnError) {
+  try {
+    read_keyword_string("*KEYWORD\n*CONTACT_SURFACE_TO_SURFACE_SLIDING_ONLY\n1,2\n*END\n", "w.k");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("w.k:2: *CONTACT_SURFACE_TO_SURFACE_SLIDING_ONLY: _SLIDING_ONLY", 0), 0u)
+        << e.what();
+  }
+  const auto m = read_keyword_string("*KEYWORD\n*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_SLIDING_ONLY\n1,2\n*END\n", "w.k");
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_TRUE(m.contacts[0].sliding_only_option);
+}
+
+// *DAMPING_PART_MASS: FLAG = 1 reads the card of per-direction factors; _SET takes a part set.
+TEST(KeywordReader, PartMassDampingFactorCardAndSet) {
+  const auto m = read_keyword_string(
+      "*KEYWORD\n*DAMPING_PART_MASS\n1,2,0.5,1\n0.5,0.5,0.5,0.5,0.5,0.5\n3,2,1.0\n"
+      "*DAMPING_PART_MASS_SET\n4,2,2.0\n*END\n", "w.k");
+  ASSERT_EQ(m.damping_parts.size(), 3u);
+  EXPECT_EQ(m.damping_parts[0].flag, 1);
+  EXPECT_DOUBLE_EQ(m.damping_parts[0].stf[2], 0.5);
+  EXPECT_DOUBLE_EQ(m.damping_parts[0].stf[5], 0.5);
+  EXPECT_EQ(m.damping_parts[1].pid, 3);  // the card after the factor card is the next record
+  EXPECT_FALSE(m.damping_parts[1].set);
+  EXPECT_EQ(m.damping_parts[2].pid, 4);
+  EXPECT_TRUE(m.damping_parts[2].set);
+  EXPECT_THROW(read_keyword_string("*KEYWORD\n*DAMPING_PART_MASS\n1,2,0.5,1\n*END\n", "w.k"), InputError);
+  EXPECT_THROW(read_keyword_string("*KEYWORD\n*DAMPING_PART_MASS\n1,2,0.5,2\n*END\n", "w.k"), InputError);
 }
 
 TEST(KeywordReader, CheckReferencesNamesEveryMissingId) {

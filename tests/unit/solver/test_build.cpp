@@ -253,3 +253,93 @@ TEST(Build, StiffnessDampingErrorsNameTheCard) {
   EXPECT_NE(twice.find("deck.k:12"), std::string::npos) << twice;
   EXPECT_NE(twice.find("two *DAMPING_PART_STIFFNESS"), std::string::npos) << twice;
 }
+
+// LCTM of *CONTROL_TIMESTEP bounds the step against time: below the curve the stable step rules.
+TEST(Build, TimeStepLimitCurveBoundsTheStep) {
+  model::Model m = plate_model(false);
+  const auto free_run = build_simulation(m);
+  free_run->initialize();
+  const Real stable = free_run->controls.dt_scale * free_run->stable_dt();
+  ASSERT_GT(stable, 0.0);
+  // Half the stable step for 20 stable steps, then twice it (the stable step rules there).
+  const Real t1 = 20.0 * stable;
+  m.curves.push_back({7, "dt limit", 0, 1.0, 1.0, 0.0, 0.0, 0,
+                      {{0.0, 0.5 * stable}, {t1, 0.5 * stable}, {1.01 * t1, 2.0 * stable}, {1e3, 2.0 * stable}}, {}});
+  m.timestep.lctm = 7;
+  m.termination.endtim = 3.0 * t1;
+  const auto sim = build_simulation(m);
+  ASSERT_TRUE(sim->controls.has_dt_max_curve);
+  sim->initialize();
+  int limited = 0, free = 0;
+  for (;;) {
+    const Real t0 = sim->time();
+    if (!sim->step()) break;
+    const Real dt = sim->time() - t0;
+    EXPECT_LE(dt, sim->controls.dt_max_curve(t0) * (1.0 + 1e-12)) << "t = " << t0;
+    if (t0 < 0.9 * t1) limited += std::abs(dt - 0.5 * stable) < 1e-9 * stable;
+    if (t0 > 1.1 * t1 && t0 < 2.9 * t1) free += dt > 0.9 * stable;
+  }
+  EXPECT_GT(limited, 30);  // ~36 half steps
+  EXPECT_GT(free, 30);     // ~36 stable steps
+  m.curves.back().points[1].second = 0.0;  // a zero limit is an input error naming the field
+  m.timestep.src = {"deck.k", 6};
+  try {
+    build_simulation(m);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.k:6"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("LCTM"), std::string::npos) << e.what();
+  }
+}
+
+// DT2MS (mass scaling) adds mass: a run without it would be another model, so it is refused.
+TEST(Build, MassScalingIsRefusedNotDropped) {
+  model::Model m = plate_model(false);
+  m.timestep.dt2ms = -1e-4;
+  m.timestep.src = {"deck.k", 6};
+  try {
+    build_simulation(m);
+    FAIL() << "expected NotImplementedError";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.k:6"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("DT2MS"), std::string::npos) << e.what();
+  }
+}
+
+// *DAMPING_PART_MASS: FLAG = 1 is the per-direction factor card (not a part set); one common
+// factor scales the damping, differing factors are refused; _SET takes a part set.
+TEST(Build, PartMassDampingFactorsAndSets) {
+  const auto decay = [](const model::Model& m) {
+    auto sim = build_simulation(m);
+    sim->initialize();
+    for (Index i = 0; i < static_cast<Index>(sim->nodes.size()); ++i) sim->nodes.v.set(i, Vec3(1.0, 0.0, 0.0));
+    while (sim->step()) {
+    }
+    // A free plate translating: v = exp(-alpha t') for constant alpha, t' within a step of the
+    // end (the velocity is a half-step one).
+    return std::pair{sim->nodes.v.get(0).x(), sim->dt()};
+  };
+  model::Model m = plate_model(false);
+  m.termination.endtim = 0.05;
+  m.damping_parts.push_back({1, 1, 10.0, 0, false, {}, {"deck.k", 9}});
+  const auto [plain, dt] = decay(m);
+  EXPECT_NEAR(-std::log(plain) / 10.0, 0.05, dt);
+  m.damping_parts.back().flag = 1;
+  m.damping_parts.back().stf = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
+  // Half the coefficient: half the exponent, on the same steps, up to the scheme's per-step factor
+  // (1 - h) / (1 + h) = exp(-2h - 2h^3/3 ...), h = alpha dt / 2 ~ 0.01 here: ~3e-5.
+  EXPECT_NEAR(std::log(decay(m).first) / std::log(plain), 0.5, 1e-4);
+  m.damping_parts.back().stf = {0, 0, 0, 0, 0, 0};  // blank: every factor 1
+  EXPECT_DOUBLE_EQ(decay(m).first, plain);
+  m.damping_parts.back().stf = {1, 0, 1, 1, 1, 1};  // y undamped: not implemented, never dropped
+  try {
+    build_simulation(m);
+    FAIL() << "expected NotImplementedError";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.k:9"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("STX..SRZ"), std::string::npos) << e.what();
+  }
+  m.damping_parts.back() = {5, 1, 10.0, 0, true, {}, {"deck.k", 9}};  // _SET with part set 5
+  m.part_sets.push_back({5, "", {1}, {}});
+  EXPECT_DOUBLE_EQ(decay(m).first, plain);
+}
