@@ -12,8 +12,9 @@
 ///     change by exactly F dt and torque dt in the simulation's update, whatever damping it applies.
 ///  2. after_positions (t^{n+1}): projects the updated nodal velocities onto the body's linear
 ///     momentum P and angular momentum L about the centre of mass, applies the supports of the
-///     body, solves I omega = L at the mid-step orientation, advances the orientation with the
-///     exponential map (a unit quaternion), and resets every node's position and velocity
+///     body (fixed dofs, and prescribed motions: RigidDrive, add_drive), solves I omega = L at the
+///     mid-step orientation, advances the orientation with the exponential map (a unit
+///     quaternion), and resets every node's position and velocity
 ///     exactly from the body state (so the body stays rigid to round-off and P, L are conserved
 ///     to round-off in free flight).
 #include <array>
@@ -89,7 +90,7 @@ class RigidBody final : public NodalConstraint {
   Eigen::Quaternion<Real> q_ = Eigen::Quaternion<Real>::Identity();
   Vec3 reaction_f_ = Vec3::Zero();
   Vec3 reaction_m_ = Vec3::Zero();
-  std::vector<RigidDrive> drives_;  // at most one per axis
+  std::vector<RigidDrive> drives_;  // at most one per dof
   std::array<bool, 6> driving_{};   // per dof (x y z rx ry rz): a drive acts over the current step
   Vec3 v_drive_ = Vec3::Zero();     // the velocity it imposes over the current step
   Vec3 w_drive_ = Vec3::Zero();     // the angular velocity it imposes (global components)
