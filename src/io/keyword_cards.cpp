@@ -317,16 +317,22 @@ void read_spc(const Context& ctx, Block& b, Model& m, bool with_id, bool node) {
   }
 }
 
-void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id) {
+/// *BOUNDARY_PRESCRIBED_MOTION_SET / _NODE / _RIGID: one card each, the first field names the
+/// node set, the node or the rigid part.
+void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id,
+                     model::PrescribedMotion::Target target) {
+  using Target = model::PrescribedMotion::Target;
+  const char* first_field = target == Target::set ? "NSID" : target == Target::node ? "NID" : "PID";
   while (const Line* first = with_id ? next_record_keep_blank(b) : next_record(b)) {
     model::PrescribedMotion p;
+    p.target = target;
     const Line* l = first;
     if (with_id) {
       read_id_heading(ctx, *first, b.keyword, p.id, p.title);
-      l = &require(ctx, b, "NSID");
+      l = &require(ctx, b, first_field);
     }
     Card c = card_of(ctx, *l, b);
-    c.get(0, "NSID", p.nsid);
+    c.get(0, first_field, p.nsid);
     c.get(1, "DOF", p.dof);
     c.get(2, "VAD", p.vad);
     c.get(3, "LCID", p.lcid);
@@ -576,7 +582,18 @@ const std::vector<Entry>& table() {
        plain([](const Context& c, Block& b, Model& m) { read_load_node(c, b, m, false); })},
       {"*LOAD_NODE_SET", nullptr,
        plain([](const Context& c, Block& b, Model& m) { read_load_node(c, b, m, true); })},
-      {"*BOUNDARY_PRESCRIBED_MOTION_SET", "_ID", read_prescribed},
+      {"*BOUNDARY_PRESCRIBED_MOTION_SET", "_ID",
+       [](const Context& c, Block& b, Model& m, bool id) {
+         read_prescribed(c, b, m, id, model::PrescribedMotion::Target::set);
+       }},
+      {"*BOUNDARY_PRESCRIBED_MOTION_NODE", "_ID",
+       [](const Context& c, Block& b, Model& m, bool id) {
+         read_prescribed(c, b, m, id, model::PrescribedMotion::Target::node);
+       }},
+      {"*BOUNDARY_PRESCRIBED_MOTION_RIGID", "_ID",
+       [](const Context& c, Block& b, Model& m, bool id) {
+         read_prescribed(c, b, m, id, model::PrescribedMotion::Target::rigid);
+       }},
       {"*LOAD_BODY_X", nullptr,
        plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::x); })},
       {"*LOAD_BODY_Y", nullptr,

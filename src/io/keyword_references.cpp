@@ -152,10 +152,16 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
                         std::to_string(l.lcid));
   }
   for (const auto& p : m.prescribed_motions) {
-    if (!node_sets.count(p.nsid) && !dropped(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET", "node set", p.nsid))
-      ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined node set " + std::to_string(p.nsid));
-    if (!curves.count(p.lcid) && !dropped(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET", "curve", p.lcid))
-      ck.add(p.src, "*BOUNDARY_PRESCRIBED_MOTION_SET refers to undefined curve " + std::to_string(p.lcid));
+    using Target = model::PrescribedMotion::Target;
+    const std::string card = p.keyword();
+    const char* what = p.target == Target::set ? "node set" : p.target == Target::node ? "node" : "part";
+    const bool defined = p.target == Target::set    ? node_sets.count(p.nsid) != 0
+                         : p.target == Target::node ? nodes.count(p.nsid) != 0
+                                                    : parts.count(p.nsid) != 0;
+    if (!defined && !dropped(p.src, card, what, p.nsid))
+      ck.add(p.src, card + " refers to undefined " + what + " " + std::to_string(p.nsid));
+    if (!curves.count(p.lcid) && !dropped(p.src, card, "curve", p.lcid))
+      ck.add(p.src, card + " refers to undefined curve " + std::to_string(p.lcid));
   }
   for (const auto& l : m.body_loads)
     if (!curves.count(l.lcid))

@@ -270,10 +270,15 @@ std::string write_keyword_string(const model::Model& m) {
     o += c.str();
   }
   for (const auto& p : m.prescribed_motions) {
+    using Target = model::PrescribedMotion::Target;
     const bool with_id = p.id != 0 || !p.title.empty();
-    o += with_id ? "*BOUNDARY_PRESCRIBED_MOTION_SET_ID\n" + id_heading(p.id, p.title)
-                 : std::string("*BOUNDARY_PRESCRIBED_MOTION_SET\n");
-    o += "$#    NSID       DOF       VAD      LCID        SF       VID     DEATH     BIRTH\n";
+    const std::string kw = std::string("*BOUNDARY_PRESCRIBED_MOTION_") +
+                           (p.target == Target::set ? "SET" : p.target == Target::node ? "NODE" : "RIGID");
+    o += with_id ? kw + "_ID\n" + id_heading(p.id, p.title) : kw + "\n";
+    o += p.target == Target::set    ? "$#    NSID"
+         : p.target == Target::node ? "$#     NID"
+                                    : "$#     PID";
+    o += "       DOF       VAD      LCID        SF       VID     DEATH     BIRTH\n";
     o += CardOut().i(p.nsid).i(p.dof).i(p.vad).i(p.lcid).r(p.sf).i(p.vid).r(p.death).r(p.birth).str();
   }
   for (const auto& l : m.nodal_loads) {

@@ -81,6 +81,7 @@ struct Builder {
   std::map<Id, LoadCurve> curves;
   std::map<Id, std::vector<Index>> part_nodes;  // unique nodes of each part
   std::unordered_map<Index, Id> rigid_node_part;  // node -> the rigid part that moves it
+  std::map<Id, RigidBody*> rigid_bodies;          // part id -> its body (owned by sim->constraints)
 
   Index node(Id id, const model::Source& src, const char* field) const {
     const auto f = node_index.find(id);
@@ -366,7 +367,9 @@ struct Builder {
     ids.insert(ids.end(), g.quad_ids.begin(), g.quad_ids.end());
     sim->blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, mat.e, mat.pr, std::move(g.hex_conn),
                                                 std::move(g.quad_conn), thickness, std::move(ids)));
-    sim->constraints.push_back(make_rigid_body(part.pid, nodes, fixed));
+    auto body = std::make_unique<RigidBody>(part.pid, nodes, fixed);
+    rigid_bodies.emplace(part.pid, body.get());
+    sim->constraints.push_back(std::move(body));
     for (Index n : nodes) rigid_node_part.emplace(n, part.pid);
   }
 
@@ -377,7 +380,8 @@ struct Builder {
       if (const auto it = rigid_node_part.find(n); it != rigid_node_part.end())
         throw InputError(describe(src) + ": " + card + " constrains node " + std::to_string(sim->nodes.ids[n]) +
                          " of rigid part " + std::to_string(it->second) +
-                         "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) instead");
+                         "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) or move it with "
+                         "*BOUNDARY_PRESCRIBED_MOTION_RIGID instead");
   }
 
   static void check_positive(Real v, const char* field, const model::Source& src) {
@@ -474,19 +478,31 @@ struct Builder {
       sim->supports.push_back(std::move(g));
     }
     for (const auto& pm : m.prescribed_motions) {
-      if (pm.vad != 2 || pm.dof < 1 || pm.dof > 3)
-        throw NotImplementedError(
-            describe(pm.src) +
-            ": *BOUNDARY_PRESCRIBED_MOTION_SET is implemented for displacements (VAD=2) of "
-            "translations (DOF 1-3) only");
+      // validate_model refused the VAD and DOF values not run here; the checks below repeat the
+      // ones this code depends on, so that a model built without validation fails as clearly.
+      const std::string card = pm.keyword();
+      if (pm.vad < 0 || pm.vad > 2)
+        throw NotImplementedError(describe(pm.src) + ": field VAD of " + card + " = " +
+                                  std::to_string(pm.vad) +
+                                  " is not implemented (0 velocity, 1 acceleration, 2 displacement are)");
+      if (pm.target == model::PrescribedMotion::Target::rigid) {
+        build_rigid_motion(pm);
+        continue;
+      }
+      if (pm.dof < 1 || pm.dof > 3)
+        throw NotImplementedError(describe(pm.src) + ": field DOF of " + card + " = " + std::to_string(pm.dof) +
+                                  " is not implemented for nodes (1-3, the translations, are)");
       SupportGroup g;
       g.name = !pm.title.empty() ? pm.title
                                  : "motion_" + std::to_string(pm.id != 0 ? pm.id : pm.nsid);
       Support s;
       s.axis = static_cast<Axis>(pm.dof - 1);
-      s.nodes = node_set(pm.nsid, pm.src, "NSID");
-      check_not_rigid(s.nodes, pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET");
+      s.nodes = pm.target == model::PrescribedMotion::Target::node
+                    ? std::vector<Index>{node(pm.nsid, pm.src, "NID")}
+                    : node_set(pm.nsid, pm.src, "NSID");
+      check_not_rigid(s.nodes, pm.src, card.c_str());
       s.has_curve = true;
+      s.kind = pm.vad == 0 ? Prescribed::velocity : pm.vad == 1 ? Prescribed::acceleration : Prescribed::displacement;
       s.curve = curve(pm.lcid, pm.src, "LCID");
       s.scale = pm.sf;
       s.birth = pm.birth;
@@ -499,6 +515,32 @@ struct Builder {
   /// v(0) from the *INITIAL_VELOCITY cards (initial_velocity.cpp): after the sets and supports.
   void build_initial_velocities() {
     apply_initial_velocities({m, node_index, sim->sets, rigid_node_part, sim->supports}, sim->nodes);
+  }
+
+  /// *BOUNDARY_PRESCRIBED_MOTION_RIGID: drives the centre of mass of a *MAT_RIGID part (DOF 1-3)
+  /// or its angular velocity about a global axis (DOF 5-7).
+  void build_rigid_motion(const model::PrescribedMotion& pm) {
+    const std::string card = pm.keyword();
+    const auto body = rigid_bodies.find(pm.nsid);
+    if (body == rigid_bodies.end())
+      throw InputError(describe(pm.src) + ": field PID of " + card + " refers to part " + std::to_string(pm.nsid) +
+                       (part_nodes.count(pm.nsid) ? ", which is not a *MAT_RIGID part" : ", which has no elements in the deck"));
+    const bool rotation = pm.dof >= 5 && pm.dof <= 7;
+    if (!rotation && (pm.dof < 1 || pm.dof > 3))
+      throw NotImplementedError(describe(pm.src) + ": field DOF of " + card + " = " + std::to_string(pm.dof) +
+                                " is not implemented (1-3, the translations, and 5-7, the rotations, are)");
+    if (pm.vad == 1)
+      throw InputError(describe(pm.src) + ": field VAD of " + card +
+                       ": LS-DYNA prescribes accelerations (VAD 1) on nodes only, not on rigid bodies");
+    RigidDrive d;
+    d.axis = static_cast<Axis>(rotation ? pm.dof - 5 : pm.dof - 1);
+    d.rotation = rotation;
+    d.kind = pm.vad == 0 ? Prescribed::velocity : Prescribed::displacement;
+    d.curve = curve(pm.lcid, pm.src, "LCID");
+    d.scale = pm.sf;
+    d.birth = pm.birth;
+    d.death = pm.death;
+    body->second->add_drive(std::move(d), describe(pm.src) + ": " + card);
   }
 
   void build_loads() {

@@ -49,15 +49,31 @@ RigidBody::RigidBody(Id part_id, std::vector<Index> nodes, std::array<int, 6> fi
     throw InputError("rigid part " + std::to_string(part_id_) + " has no nodes");
 }
 
+void RigidBody::add_drive(RigidDrive drive, const std::string& where) {
+  const int c = static_cast<int>(drive.axis);
+  const std::string dof = std::string(drive.rotation ? "about " : "along ") + (c == 0 ? "x" : c == 1 ? "y" : "z");
+  if (fixed_[(drive.rotation ? 3 : 0) + c])
+    throw InputError(where + ": rigid part " + std::to_string(part_id_) + " is fixed " + dof + " by its *MAT_RIGID (CMO = 1, " +
+                     (drive.rotation ? "CON2" : "CON1") + ") and cannot also be driven " + dof);
+  for (const auto& d : drives_)
+    if (d.axis == drive.axis && d.rotation == drive.rotation)
+      throw InputError(where + ": rigid part " + std::to_string(part_id_) + " already has a prescribed motion " + dof);
+  drives_.push_back(std::move(drive));
+}
+
 Mat3 RigidBody::inertia() const { return rotate_tensor(q_, inertia0_); }
 
 Vec3 RigidBody::solve_omega(const Mat3& inertia, const Vec3& l) const {
-  // Fixed rotations: omega lies in the span of the free axes e_f, and only the free components
-  // of I omega = L hold (the support supplies the rest): solve (S I S + (1 - S)) w = S L.
-  Mat3 a = inertia;
-  Vec3 b = l;
+  // Held rotations (fixed: 0; driven: w_drive_) take their value w_p; only the free components of
+  // I omega = L hold (the support or the drive supplies the rest): with S selecting the free axes,
+  // solve (S I S + (1 - S)) w_f = S (L - I w_p) and omega = w_f + w_p.
+  Vec3 wp = Vec3::Zero();
   for (int c = 0; c < 3; ++c)
-    if (fixed_[3 + c]) {
+    if (driving_[3 + c]) wp[c] = w_drive_[c];
+  Mat3 a = inertia;
+  Vec3 b = l - inertia * wp;
+  for (int c = 0; c < 3; ++c)
+    if (held_rotation(c)) {
       a.row(c).setZero();
       a.col(c).setZero();
       a(c, c) = 1.0;
@@ -65,7 +81,7 @@ Vec3 RigidBody::solve_omega(const Mat3& inertia, const Vec3& l) const {
     }
   Vec3 w = solve_spd(a, b);
   for (int c = 0; c < 3; ++c)
-    if (fixed_[3 + c]) w[c] = 0.0;
+    if (held_rotation(c)) w[c] = wp[c];
   return w;
 }
 
@@ -83,6 +99,11 @@ void RigidBody::initialize(NodalFields& nodes, std::span<const Real> mass) {
     throw InputError("rigid part " + std::to_string(part_id_) +
                      " has no mass (its elements must add mass before the body initialises)");
   com_ = first / mass_;
+  com0_ = com_;
+  driving_.fill(false);
+  v_drive_.setZero();
+  w_drive_.setZero();
+  angle_.setZero();
   offset0_.resize(nodes_.size());
   point_inertia0_.setZero();
   Real rot = 0.0;
@@ -135,6 +156,41 @@ void RigidBody::constrain_accelerations(const ConstraintLoads& loads, NodalField
   Vec3 acc = f / mass_;
   for (int c = 0; c < 3; ++c)
     if (fixed_[c]) acc[c] = 0.0;
+  // A driven axis: the acceleration that lands the centre of mass on the drive's velocity over
+  // the coming step (the same rules as a nodal prescribed motion, Simulation::prescribe_supports);
+  // the body exerts F - M A on the drive.
+  driving_.fill(false);
+  for (const RigidDrive& d : drives_) {
+    const int c = static_cast<int>(d.axis);
+    const bool on = d.active(t) && loads.dt_avg > 0.0 && loads.dt_next > 0.0;
+    driving_[(d.rotation ? 3 : 0) + c] = on;
+    if (!on) continue;
+    if (d.rotation) {
+      // The angular velocity over the coming step, by the same rules; the moment the body exerts
+      // on the drive is the torque of its loads less the rate of change of its angular momentum,
+      // estimated with the current inertia: torque - (I omega_target - L^{n-1/2}) / dt_avg.
+      switch (d.kind) {
+        case Prescribed::displacement:
+          w_drive_[c] = (d.scale * d.curve(t + loads.dt_next) - angle_[c]) / loads.dt_next;
+          break;
+        case Prescribed::velocity: w_drive_[c] = d.scale * d.curve(t + 0.5 * loads.dt_next); break;
+        case Prescribed::acceleration: w_drive_[c] = omega_[c] + d.scale * d.curve(t) * loads.dt_avg; break;
+      }
+      Vec3 w_target = omega_;
+      w_target[c] = w_drive_[c];
+      reaction_m_[c] = torque_[c] - (inertia() * w_target - ang_mom_)[c] / loads.dt_avg;
+      continue;
+    }
+    switch (d.kind) {
+      case Prescribed::displacement:
+        v_drive_[c] = (d.scale * d.curve(t + loads.dt_next) - (com_[c] - com0_[c])) / loads.dt_next;
+        break;
+      case Prescribed::velocity: v_drive_[c] = d.scale * d.curve(t + 0.5 * loads.dt_next); break;
+      case Prescribed::acceleration: v_drive_[c] = vel_[c] + d.scale * d.curve(t) * loads.dt_avg; break;
+    }
+    acc[c] = (v_drive_[c] - vel_[c]) / loads.dt_avg;
+    reaction_f_[c] = f[c] - mass_ * acc[c];
+  }
   // The nodes' own moments change their own angular velocities in the simulation's update; the
   // point masses carry the torque of the forces.
   const Vec3 beta = solve_spd(rotate_tensor(q_, point_inertia0_), tau_p);
@@ -157,8 +213,10 @@ void RigidBody::after_positions(std::span<const Real> mass, NodalFields& nodes, 
     if (carries_rotation(nodes, i)) l += nodes.rot_inertia[i] * nodes.omega.get(i);
   }
   vel_ = p / mass_;
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < 3; ++c) {
     if (fixed_[c]) vel_[c] = 0.0;
+    if (driving_[c]) vel_[c] = v_drive_[c];  // exactly, whatever damping the update applied
+  }
   com_ += dt * vel_;
 
   // omega^{n+1/2} = I(t^{n+1/2})^{-1} L^{n+1/2}: the mid-step orientation depends on omega, so
@@ -172,15 +230,16 @@ void RigidBody::after_positions(std::span<const Real> mass, NodalFields& nodes, 
   // The nodal velocity field at x^{n+1} must carry L exactly: omega from the new inertia.
   const Mat3 inertia_new = rotate_tensor(q_, inertia0_);
   omega_ = solve_omega(inertia_new, l);
+  angle_ += dt * w;
   bool any_fixed_rotation = false;
-  for (int c = 0; c < 3; ++c) any_fixed_rotation = any_fixed_rotation || fixed_[3 + c];
+  for (int c = 0; c < 3; ++c) any_fixed_rotation = any_fixed_rotation || held_rotation(c);
   ang_mom_ = any_fixed_rotation ? Vec3(inertia_new * omega_) : l;
   dt_last_ = dt;
   reset_nodes(nodes);
 }
 
 void RigidBody::append_output_names(std::vector<std::string>& names) const {
-  if (std::none_of(fixed_.begin(), fixed_.end(), [](int f) { return f != 0; })) return;
+  if (std::none_of(fixed_.begin(), fixed_.end(), [](int f) { return f != 0; }) && drives_.empty()) return;
   const std::string base = "supports/rigid_" + std::to_string(part_id_);
   names.push_back(base + "/reaction");
   names.push_back(base + "/reaction_moment");

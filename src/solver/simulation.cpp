@@ -489,8 +489,10 @@ void Simulation::condense_ties() {
   });
 }
 
-void Simulation::constrain_rigid_bodies() {
-  const ConstraintLoads loads = constraint_loads();
+void Simulation::constrain_rigid_bodies(const StepPlan& plan) {
+  ConstraintLoads loads = constraint_loads();
+  loads.dt_avg = plan.dt_avg;
+  loads.dt_next = plan.dt_next;
   for (auto& c : constraints) c->constrain_accelerations(loads, nodes, t_);
 }
 
@@ -507,8 +509,11 @@ void Simulation::refresh_support_flags() {
 }
 
 void Simulation::prescribe_supports(const StepPlan& plan) {
-  // The velocity each supported component must have over the coming step: zero unless the support
-  // follows a displacement curve; then it lands the node exactly on u(t^{n+1}).
+  // The velocity each supported component must have over the coming step v^{n+1/2}: zero for a
+  // fixed component; a displacement curve lands the node exactly on u(t^{n+1}); a velocity curve
+  // gives v(t^{n+1/2}) (the midpoint rule: x follows the integral of the curve to second order,
+  // exactly while the curve is linear over the step); an acceleration curve is a(t^n), integrated
+  // by the same central difference as free nodes: v^{n+1/2} = v^{n-1/2} + a(t^n) dt_avg.
   const Real dt_new = plan.dt_next;
   if (has_timed_supports_) refresh_support_flags();
   for (auto& g : supports)
@@ -518,8 +523,13 @@ void Simulation::prescribe_supports(const StepPlan& plan) {
       for (Index i : s.nodes) {
         Real vnew = 0.0;
         if (s.has_curve) {
-          const Real u_now = nodes.x[c][i] - nodes.x0[c][i];
-          vnew = (s.scale * s.curve(t_ + dt_new) - u_now) / dt_new;
+          switch (s.kind) {
+            case Prescribed::displacement:
+              vnew = (s.scale * s.curve(t_ + dt_new) - (nodes.x[c][i] - nodes.x0[c][i])) / dt_new;
+              break;
+            case Prescribed::velocity: vnew = s.scale * s.curve(t_ + 0.5 * dt_new); break;
+            case Prescribed::acceleration: vnew = nodes.v[c][i] + s.scale * s.curve(t_) * plan.dt_avg; break;
+          }
         }
         nodes.a[c][i] = (vnew - nodes.v[c][i]) / plan.dt_avg;  // the velocity update lands on vnew
       }
@@ -554,7 +564,7 @@ void Simulation::apply_constraints(const StepPlan& plan) {
   // 5. support reactions from the final loads.
   // Tied slaves follow their masters after the velocity and position updates.
   if (!contacts.empty()) condense_ties();
-  constrain_rigid_bodies();
+  constrain_rigid_bodies(plan);
   prescribe_supports(plan);
   if (!contacts.empty()) {
     const StepTimes times{t_, dt_, plan.dt_avg, plan.dt_next, cycle_};
@@ -568,7 +578,7 @@ void Simulation::apply_constraints(const StepPlan& plan) {
                         nodes.f_contact};
     contacts.enforce(view, times);
     if (!constraints.empty()) {
-      constrain_rigid_bodies();
+      constrain_rigid_bodies(plan);
       prescribe_supports(plan);
     }
   }

@@ -101,12 +101,36 @@ void check_controls(const model::Model& m, const BuildOptions& o, Problems& p) {
             "no end time: the deck has no *CONTROL_TERMINATION with ENDTIM > 0");
   }
   for (const auto& pm : m.prescribed_motions) {
+    const std::string card = pm.keyword();
+    const bool rigid = pm.target == model::PrescribedMotion::Target::rigid;
+    // VAD: 0 velocity, 1 acceleration (nodes only in LS-DYNA), 2 displacement are run; 3 (velocity
+    // against displacement) and 4 (relative displacement) are LS-DYNA forms not implemented here.
+    if (pm.vad == 3 || pm.vad == 4)
+      p.todo(pm.src, "field VAD of " + card + ": " +
+                         (pm.vad == 3 ? "velocity against displacement" : "relative displacement") +
+                         " (VAD " + std::to_string(pm.vad) +
+                         ") is not implemented (0 velocity, 1 acceleration, 2 displacement are)");
+    else if (pm.vad < 0 || pm.vad > 4)
+      p.bad(pm.src, "field VAD of " + card + " must be 0 to 4 (got " + std::to_string(pm.vad) + ")");
+    else if (pm.vad == 1 && rigid)
+      p.bad(pm.src, "field VAD of " + card +
+                        ": LS-DYNA prescribes accelerations (VAD 1) on nodes only, not on rigid bodies");
+    // DOF: the translations 1-3 are run, and the rotations 5-7 of a rigid part. Rotations of
+    // nodes, 4/-4/8/-8 (along VID), 9-12 (rotation about an axis through the body, radial motion)
+    // and -1..-3 (not in the LS-DYNA manual's list) are not.
+    const bool rigid_rotation = rigid && pm.dof >= 5 && pm.dof <= 7;
+    if ((pm.dof < 1 || pm.dof > 3) && !rigid_rotation) {
+      if (pm.dof >= -12 && pm.dof <= 12 && pm.dof != 0)
+        p.todo(pm.src, "field DOF of " + card + ": DOF " + std::to_string(pm.dof) + " is not implemented (DOF 1-3, the translations, are" +
+                           (rigid ? ", and 5-7, the rotations)" : "; rotations 5-7 on _RIGID only)"));
+      else
+        p.bad(pm.src, "field DOF of " + card + " must be 1 to 12, -4 or -8 (got " + std::to_string(pm.dof) + ")");
+    }
     if (pm.vid != 0)
-      p.todo(pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET: VID (a motion along a vector) is not implemented (got VID " +
+      p.todo(pm.src, "field VID of " + card + ": a motion along a vector is not implemented (got VID " +
                          std::to_string(pm.vid) + ")");
     if (!(pm.death > pm.birth))
-      p.bad(pm.src, "*BOUNDARY_PRESCRIBED_MOTION_SET: DEATH (" + num(pm.death) + ") must be after BIRTH (" +
-                        num(pm.birth) + ")");
+      p.bad(pm.src, card + ": DEATH (" + num(pm.death) + ") must be after BIRTH (" + num(pm.birth) + ")");
   }
 }
 

@@ -7,6 +7,7 @@
 /// Units are whatever consistent set the deck uses (the spec's problems are unitless).
 /// A field left blank in a deck keeps the default given here, which is LS-DYNA's default.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
@@ -184,12 +185,15 @@ struct BoundarySpc {
   bool node = false;   ///< *BOUNDARY_SPC_NODE (last, so that {id, title, nsid, ...} still reads)
 };
 
-/// *BOUNDARY_PRESCRIBED_MOTION_SET: prescribed motion of a node set in one direction.
+/// *BOUNDARY_PRESCRIBED_MOTION_SET / _NODE / _RIGID: prescribed motion of a node set, a node or a
+/// rigid part in one direction.
 struct PrescribedMotion {
+  /// The card's option: what the first field names.
+  enum class Target : std::uint8_t { set, node, rigid };
   Id id = 0;
   std::string title;
-  Id nsid = 0;
-  int dof = 1;     ///< 1 x, 2 y, 3 z (translations only are supported)
+  Id nsid = 0;     ///< the first field: NSID (_SET), NID (_NODE) or PID (_RIGID), see `target`
+  int dof = 1;     ///< 1 x, 2 y, 3 z; 5-7 rotations about x, y, z (rigid parts only)
   int vad = 2;     ///< 0 velocity, 1 acceleration, 2 displacement
   Id lcid = 0;     ///< curve of the prescribed quantity against time
   Real sf = 1.0;   ///< curve scale factor
@@ -197,6 +201,13 @@ struct PrescribedMotion {
   Real death = 1e28;
   Real birth = 0.0;
   Source src;
+  Target target = Target::set;
+  /// The keyword without _ID, for messages.
+  const char* keyword() const {
+    return target == Target::set    ? "*BOUNDARY_PRESCRIBED_MOTION_SET"
+           : target == Target::node ? "*BOUNDARY_PRESCRIBED_MOTION_NODE"
+                                    : "*BOUNDARY_PRESCRIBED_MOTION_RIGID";
+  }
 };
 
 /// *LOAD_BODY_X / _Y / _Z: base acceleration. LS-DYNA semantics: a positive value gives inertial

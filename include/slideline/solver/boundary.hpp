@@ -1,5 +1,6 @@
 #pragma once
 /// Loads and supports in physical form (the builder converts deck semantics into these).
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -34,18 +35,23 @@ struct NodalLoad {
   std::string source;        ///< "deck.k:12: *LOAD_NODE_SET", for messages
 };
 
-/// Prescribed displacement of a node set along one axis: u(t) = scale * curve(t), or zero when
-/// `curve` is empty. Records the reaction: the total force the body exerts on the support.
+/// What a prescribed-motion curve gives (LS-DYNA VAD: 2, 0 and 1).
+enum class Prescribed : std::uint8_t { displacement, velocity, acceleration };
+
+/// Prescribed motion of a node set along one axis: zero displacement when `has_curve` is false,
+/// else scale * curve(t) is the displacement u(t), the velocity or the acceleration (`kind`).
+/// Records the reaction: the total force the body exerts on the support.
 struct Support {
   std::string name;  ///< output title, e.g. "spc_1" or the deck heading
   Axis axis = Axis::x;
   bool rotational = false;  ///< fixes the rotation about `axis` (zero only; no reaction moment recorded)
   std::vector<Index> nodes;
   bool has_curve = false;
+  Prescribed kind = Prescribed::displacement;  ///< what the curve gives (with has_curve)
   LoadCurve curve;
   Real scale = 1.0;
   /// The support acts for birth <= t <= death (LS-DYNA BIRTH/DEATH of a prescribed motion); outside
-  /// that window its components are free. The curve gives the absolute displacement u(t).
+  /// that window its components are free. A displacement curve gives the absolute u(t).
   Real birth = 0.0;
   Real death = std::numeric_limits<Real>::infinity();
   bool active(Real t) const { return t >= birth && t <= death; }

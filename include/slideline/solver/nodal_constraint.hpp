@@ -19,6 +19,10 @@ struct ConstraintLoads {
   const NodalFields& nodes;
   const Vec3Field* total_force = nullptr;   ///< set when contact keeps a total (else summed here)
   const Vec3Field* total_moment = nullptr;
+  /// The coming step: v^{n+1/2} = v^{n-1/2} + dt_avg a^n, x^{n+1} = x^n + dt_next v^{n+1/2}
+  /// (prescribed motions of a rigid body need them to land on their curve). 0 = not known.
+  Real dt_avg = 0.0;
+  Real dt_next = 0.0;
 
   Vec3 force(Index i) const {
     if (total_force != nullptr) return total_force->get(i);

@@ -12,8 +12,9 @@
 ///     change by exactly F dt and torque dt in the simulation's update, whatever damping it applies.
 ///  2. after_positions (t^{n+1}): projects the updated nodal velocities onto the body's linear
 ///     momentum P and angular momentum L about the centre of mass, applies the supports of the
-///     body, solves I omega = L at the mid-step orientation, advances the orientation with the
-///     exponential map (a unit quaternion), and resets every node's position and velocity
+///     body (fixed dofs, and prescribed motions: RigidDrive, add_drive), solves I omega = L at the
+///     mid-step orientation, advances the orientation with the exponential map (a unit
+///     quaternion), and resets every node's position and velocity
 ///     exactly from the body state (so the body stays rigid to round-off and P, L are conserved
 ///     to round-off in free flight).
 #include <array>
@@ -27,6 +28,7 @@
 #include "slideline/core/types.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
+#include "slideline/solver/rigid_drive.hpp"
 
 namespace slideline {
 
@@ -36,11 +38,16 @@ class RigidBody final : public NodalConstraint {
   /// x y z rx ry rz of the global axes (CMO = +1 CON1 / CON2).
   RigidBody(Id part_id, std::vector<Index> nodes, std::array<int, 6> fixed_dofs);
 
+  /// Prescribes the motion of the centre of mass along one axis, or the angular velocity about
+  /// one axis (before initialize). Throws InputError if that dof is fixed (CMO/CON1/CON2) or
+  /// already driven; `where` names the card.
+  void add_drive(RigidDrive drive, const std::string& where);
+
   void initialize(NodalFields& nodes, std::span<const Real> mass) override;
   void constrain_accelerations(const ConstraintLoads& loads, NodalFields& nodes, Real t) override;
   void after_positions(std::span<const Real> mass, NodalFields& nodes, Real t) override;
   std::span<const Index> constrained_nodes() const override { return nodes_; }
-  /// With any fixed dof: supports/rigid_<part id>/reaction (force) and
+  /// With any fixed or driven dof: supports/rigid_<part id>/reaction (force) and
   /// supports/rigid_<part id>/reaction_moment (moment about the centre of mass); see
   /// reaction_force(). A free body reports nothing.
   void append_output_names(std::vector<std::string>& names) const override;
@@ -58,12 +65,14 @@ class RigidBody final : public NodalConstraint {
   Mat3 inertia() const;
   const Eigen::Quaternion<Real>& orientation() const { return q_; }
   /// Force (x, y, z) and moment (rx, ry, rz, about the centre of mass) the body exerts on its
-  /// supports at the last step; zero in the free directions.
+  /// supports at the last step; zero in the free directions. Along a driven axis: the load on the
+  /// body less its mass times the acceleration the drive imposes, F - M A.
   const Vec3& reaction_force() const { return reaction_f_; }
   const Vec3& reaction_moment() const { return reaction_m_; }
 
  private:
   Vec3 solve_omega(const Mat3& inertia, const Vec3& l) const;
+  bool held_rotation(int c) const { return fixed_[3 + c] != 0 || driving_[3 + c]; }
   void reset_nodes(NodalFields& nodes) const;
 
   Id part_id_;
@@ -81,6 +90,12 @@ class RigidBody final : public NodalConstraint {
   Eigen::Quaternion<Real> q_ = Eigen::Quaternion<Real>::Identity();
   Vec3 reaction_f_ = Vec3::Zero();
   Vec3 reaction_m_ = Vec3::Zero();
+  std::vector<RigidDrive> drives_;  // at most one per dof
+  std::array<bool, 6> driving_{};   // per dof (x y z rx ry rz): a drive acts over the current step
+  Vec3 v_drive_ = Vec3::Zero();     // the velocity it imposes over the current step
+  Vec3 w_drive_ = Vec3::Zero();     // the angular velocity it imposes (global components)
+  Vec3 angle_ = Vec3::Zero();       // sum of dt omega^{n+1/2} (rotation-angle drives)
+  Vec3 com0_ = Vec3::Zero();        // centre of mass at t = 0 (displacement drives)
   Real t_n_ = 0.0;       // time of the last constrain_accelerations
   Real dt_last_ = 0.0;   // the step that led to t^n
 };

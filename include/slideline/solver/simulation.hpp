@@ -133,7 +133,7 @@ class Simulation {
 
   // Pieces of the constraint phase.
   void condense_ties();
-  void constrain_rigid_bodies();
+  void constrain_rigid_bodies(const StepPlan& plan);
   void prescribe_supports(const StepPlan& plan);
   void compute_reactions();
   void refresh_support_flags();

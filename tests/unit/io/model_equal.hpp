@@ -136,7 +136,7 @@ inline std::vector<std::string> model_differences(const model::Model& ma, const 
   d.list("prescribed_motions", ma.prescribed_motions, mb.prescribed_motions,
          [&](const std::string& w, const auto& a, const auto& b) {
            SL_EQ(id); SL_EQ(title); SL_EQ(nsid); SL_EQ(dof); SL_EQ(vad); SL_EQ(lcid); SL_EQ(sf); SL_EQ(vid);
-           SL_EQ(death); SL_EQ(birth);
+           SL_EQ(death); SL_EQ(birth); SL_EQ(target);
          });
   d.list("nodal_loads", ma.nodal_loads, mb.nodal_loads, [&](const std::string& w, const auto& a, const auto& b) {
     SL_EQ(set); SL_EQ(id); SL_EQ(dof); SL_EQ(lcid); SL_EQ(sf); SL_EQ(cid); SL_EQ(m);

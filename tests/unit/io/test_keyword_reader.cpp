@@ -161,6 +161,46 @@ TEST(KeywordReader, ReadsEveryContactCard) {
   EXPECT_TRUE(problems.empty()) << to_string(problems.front());
 }
 
+TEST(KeywordReader, PrescribedMotionNodeAndRigidForms) {
+  // The first field is NID (_NODE) or PID (_RIGID); the _ID heading comes first, as for _SET.
+  const auto m = read_keyword_string(
+      "*KEYWORD\n"
+      "*BOUNDARY_PRESCRIBED_MOTION_NODE\n"
+      "        12         3         0         5      -2.0\n"
+      "*BOUNDARY_PRESCRIBED_MOTION_RIGID_ID\n"
+      "         7punch drive\n"
+      "         4         1         2         6       0.5                 0.8       0.1\n"
+      "*NODE\n"
+      "1,0.0,0.0,0.0\n"
+      "*ELEMENT_SHELL\n"
+      "1,1,1,1,1,1\n"
+      "*END\n",
+      "motions.k", nullptr);
+  ASSERT_EQ(m.prescribed_motions.size(), 2u);
+  const auto& n = m.prescribed_motions[0];
+  EXPECT_EQ(n.target, model::PrescribedMotion::Target::node);
+  EXPECT_EQ(n.nsid, 12);
+  EXPECT_EQ(n.dof, 3);
+  EXPECT_EQ(n.vad, 0);
+  EXPECT_EQ(n.lcid, 5);
+  EXPECT_DOUBLE_EQ(n.sf, -2.0);
+  EXPECT_EQ(n.src.line, 3);
+  EXPECT_STREQ(n.keyword(), "*BOUNDARY_PRESCRIBED_MOTION_NODE");
+  const auto& r = m.prescribed_motions[1];
+  EXPECT_EQ(r.target, model::PrescribedMotion::Target::rigid);
+  EXPECT_EQ(r.id, 7);
+  EXPECT_EQ(r.title, "punch drive");
+  EXPECT_EQ(r.nsid, 4);
+  EXPECT_EQ(r.vad, 2);
+  EXPECT_DOUBLE_EQ(r.death, 0.8);
+  EXPECT_DOUBLE_EQ(r.birth, 0.1);
+  // References are checked against nodes and parts respectively.
+  std::string all;
+  for (const auto& d : check_references(m)) all += to_string(d) + "\n";
+  EXPECT_NE(all.find("motions.k:3: *BOUNDARY_PRESCRIBED_MOTION_NODE refers to undefined node 12"), std::string::npos) << all;
+  EXPECT_NE(all.find("motions.k:6: *BOUNDARY_PRESCRIBED_MOTION_RIGID refers to undefined part 4"), std::string::npos) << all;
+}
+
 TEST(KeywordReader, FreeFormatTwoCardSolidAndUnknownKeyword) {
   std::vector<Diagnostic> warnings;
   const auto m = read_keyword_file(deck_path("free_format_cube.k"), &warnings);

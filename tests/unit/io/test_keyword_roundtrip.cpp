@@ -44,6 +44,11 @@ model::Model full_model() {
   m.nodal_loads.push_back({true, 1, 6, 2, 0.125, 0, {}, {}});
   m.prescribed_motions.push_back({3, "pull", 2, 3, 0, 1, 2.5, 0, 0.45, 0.01, {}});
   m.prescribed_motions.push_back({0, "", 1, 1, 2, 2, 1.0, 0, 1e28, 0.0, {}});
+  // The _NODE and _RIGID forms (NID, PID in the first field), with and without _ID.
+  m.prescribed_motions.push_back({0, "", 100, 2, 0, 1, -0.5, 0, 1e28, 0.0, {}, PrescribedMotion::Target::node});
+  m.prescribed_motions.push_back({4, "node drive", 101, 3, 1, 2, 2.0, 0, 0.3, 0.1, {}, PrescribedMotion::Target::node});
+  m.prescribed_motions.push_back({0, "", 3, 3, 0, 1, 1.5, 0, 1e28, 0.0, {}, PrescribedMotion::Target::rigid});
+  m.prescribed_motions.push_back({9, "punch", 3, 1, 2, 2, 0.25, 0, 0.4, 0.05, {}, PrescribedMotion::Target::rigid});
   m.body_loads.push_back({Axis::y, 1, 10.0, 0, 0.0, 0.0, 0.0, 0, {}});
   m.body_loads.push_back({Axis::x, 2, -3.1, 0, 0.5, 0.25, 1.0 / 7.0, 0, {}});
   m.body_loads.push_back({Axis::z, 2, 1e-300, 0, 0.0, 0.0, 0.0, 0, {}});

@@ -103,11 +103,17 @@ TEST(MeshSets, BadSetsAreInputErrors) {
 TEST(MeshSets, ShellDeckSetsResolve) {
   model::Model m = read_keyword_file(deck_path("shells_all_contacts.k"));
   m.contacts.clear();            // not built yet
-  m.prescribed_motions.clear();  // this seed deck prescribes a velocity (VAD = 0), not implemented
   auto sim = build_simulation(m);
   const MeshSets& s = sim->sets;
   EXPECT_EQ(s.node_sets.at(1).size(), 9u);
   EXPECT_EQ(s.part_sets.at(2), (std::vector<Id>{2, 3}));
+  // Its two prescribed motions on node set 1: "pull" (DOF 2, VAD 2) and a velocity (DOF 1, VAD 0).
+  ASSERT_EQ(sim->supports.size(), 2u);
+  EXPECT_EQ(sim->supports[0].name, "pull");
+  EXPECT_EQ(sim->supports[0].supports.at(0).kind, Prescribed::displacement);
+  EXPECT_EQ(sim->supports[1].supports.at(0).kind, Prescribed::velocity);
+  EXPECT_EQ(sim->supports[1].supports.at(0).axis, Axis::x);
+  EXPECT_EQ(sim->supports[1].supports.at(0).nodes.size(), 9u);
   ASSERT_EQ(s.segment_sets.size(), 2u);
   // Segment set 1 (nodes 11 12 13 14) is shell 5 of part 2.
   const Surface ss1 = build_surface_from_segments(sim->blocks, sim->nodes, s.segment_set(1, "t"), "ss1");
