@@ -348,8 +348,11 @@ inline bool cannot_beat(const Vec3& p, const SegmentCorners& c, const Projection
                         const ProjectionOptions& opt = {}) {
   Vec3 lo = c[0], hi = c[0];
   for (int a = 1; a < 4; ++a) lo = lo.cwiseMin(c[a]), hi = hi.cwiseMax(c[a]);
-  const Real lower = (lo - p).cwiseMax(p - hi).cwiseMax(Vec3::Zero()).norm();
-  if (!(lower > best.distance)) return false;  // the common case near the best: no bound needed
+  const Real lower2 = (lo - p).cwiseMax(p - hi).cwiseMax(Vec3::Zero()).squaredNorm();
+  // The common case, a box not beyond the best distance: keep the candidate, no root, no bound
+  // (keeping one that could have been skipped costs a projection, never a different pick).
+  if (!(lower2 > best.distance * best.distance)) return false;
+  const Real lower = std::sqrt(lower2);
   const Real tol = opt.tie_tolerance * std::max(best.size, (hi - lo).sum());
   const Real scale = std::max({p.cwiseAbs().maxCoeff(), lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()});
   const Real round_off = 64 * std::numeric_limits<Real>::epsilon() * (scale + best.distance);
