@@ -2,7 +2,6 @@
 // contact. See include/slideline/contact/tiebreak_contact.hpp for the formulation.
 #include "slideline/contact/tiebreak_contact.hpp"
 
-#include <cstdio>
 
 #include "slideline/element/element_block.hpp"
 
@@ -22,24 +21,7 @@ Real stiffness_per_area(const Surface& master, Index s, const ContactContext& c,
 
 void TiebreakContact::initialize(const ContactContext& c) {
   const NodalFields& nodes = c.nodes;
-  std::vector<std::uint8_t> is_master(nodes.size(), 0);
-  for (Index m : master_.conn) is_master[m] = 1;
-  std::vector<Index> slaves;
-  for (Index s : candidates_)
-    if (!is_master[s]) slaves.push_back(s);
-  links_.clear();
-  untied_nodes_.clear();
-  for (const TiePoint& t : find_tie_points(slaves, master_, nodes.x)) {
-    if (t.segment >= 0) links_.push_back(t);
-    else untied_nodes_.push_back(t.slave);
-  }
-  if (!untied_nodes_.empty()) {
-    std::string ids;
-    for (std::size_t k = 0; k < untied_nodes_.size() && k < 10; ++k)
-      ids += (k ? ", " : "") + std::to_string(nodes.ids[untied_nodes_[k]]);
-    std::fprintf(stderr, "contact %s: %zu slave node(s) project outside every master segment and are left free "
-                 "(first ids: %s)\n", name_.c_str(), untied_nodes_.size(), ids.c_str());
-  }
+  tie_candidates(name_, candidates_, master_, nodes, {}, links_, untied_nodes_);
   const std::size_t n = links_.size();
   std::vector<Index> link_of(nodes.size(), -1);
   for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);

@@ -2,47 +2,37 @@
 /// DYNA3D Type 12 (*CONTACT_AUTOMATIC_SINGLE_SURFACE), penalty enforcement: one pass of every
 /// surface node of the parts against every segment, without a node's own segments and faces that
 /// do not face it (the pass's `automatic` option). DYNA3D's interface force is meaningless here
-/// (every node is a slave, spec section 4.3); this class reports the force transmitted between
+/// (every node is a slave, spec section 4.3); this interface reports the force transmitted between
 /// parts instead: "transmitted_force" (the second part on the first), or
 /// "transmitted_force/<a>_<b>" per pair for more than two parts. docs/contact.md, "Penalty contact".
-#include <memory>
+#include <cstddef>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "slideline/contact/contact_algorithm.hpp"
-#include "slideline/contact/friction/exponential_coulomb.hpp"
-#include "slideline/contact/friction/frictionless.hpp"
-#include "slideline/contact/penalty_passes.hpp"
+#include "slideline/contact/penalty_interface.hpp"
 
 namespace slideline {
 
-/// Friction: Frictionless or ExponentialCoulomb (compile-time policy).
-template <class Friction>
-class AutomaticContact final : public ContactAlgorithm {
+/// Kind of PenaltyInterface for Type 12: one pass of all surface nodes against all segments
+/// (the pass's slave_part() set per node), and the pairwise transmitted force between `parts`.
+class AutomaticKind {
  public:
-  /// pass: all surface nodes against all segments (slave_part() set per node); parts: the parts
-  /// whose pairwise transmitted force is reported.
-  AutomaticContact(std::string title, std::unique_ptr<PenaltyPass> pass, std::vector<Id> parts, Friction friction)
-      : core_(std::move(title), one(std::move(pass)), {false}), friction_(friction), parts_(std::move(parts)) {
+  static constexpr std::size_t pass_count = 1;
+
+  explicit AutomaticKind(std::vector<Id> parts) : parts_(std::move(parts)) {
     for (std::size_t a = 0; a < parts_.size(); ++a)
       for (std::size_t b = a + 1; b < parts_.size(); ++b) pairs_.emplace_back(a, b);
     transmitted_.assign(pairs_.size(), Vec3::Zero());
   }
 
-  const std::string& name() const override { return core_.name(); }
-  void initialize(const ContactContext& context) override { core_.initialize(context); }
-  void resolve_initial_penetrations(NodalFields& nodes) override { core_.resolve_initial_penetrations(nodes); }
-  void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override {
-    core_.apply_forces(nodes, times, out, friction_);
-    if (!pairs_.empty()) update_transmitted();
+  /// After each force evaluation: the transmitted forces from the pass's records.
+  void after_forces(const PenaltyPasses& core) {
+    if (!pairs_.empty()) update_transmitted(core.pass(0));
   }
-  Real stable_dt() const override { return core_.stable_dt(); }
-  Vec3 slave_force() const override { return core_.slave_force(); }
-  Vec3 master_force() const override { return core_.master_force(); }
-  Real friction_work() const override { return core_.friction_work(); }
 
-  void append_output_names(std::vector<std::string>& names) const override {
+  void append_output_names(std::vector<std::string>& names) const {
     if (pairs_.size() == 1) {
       names.emplace_back("transmitted_force");
       return;
@@ -51,23 +41,15 @@ class AutomaticContact final : public ContactAlgorithm {
       names.push_back("transmitted_force/" + std::to_string(parts_[a]) + "_" + std::to_string(parts_[b]));
   }
   /// Per part pair (a, b): the force part b exerts on part a (force), 3 values each.
-  void write_output_values(std::span<Real> out) const override {
+  void write_output_values(std::span<Real> out) const {
     for (std::size_t k = 0; k < transmitted_.size(); ++k)
       for (int c = 0; c < 3; ++c) out[3 * k + static_cast<std::size_t>(c)] = transmitted_[k][c];
   }
 
-  /// The passes (state, records, initial penetrations), for tests and diagnostics.
-  const PenaltyPasses& passes() const { return core_; }
   /// Force that parts_[b] exerts on parts_[a] for the k-th pair (a < b) at the last cycle.
   const std::vector<Vec3>& transmitted_forces() const { return transmitted_; }
 
  private:
-  static std::vector<std::unique_ptr<PenaltyPass>> one(std::unique_ptr<PenaltyPass> a) {
-    std::vector<std::unique_ptr<PenaltyPass>> v;
-    v.push_back(std::move(a));
-    return v;
-  }
-
   std::size_t pair_index(Id pa, Id pb, bool& flip) const {
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
       const Id a = parts_[pairs_[k].first], b = parts_[pairs_[k].second];
@@ -77,9 +59,8 @@ class AutomaticContact final : public ContactAlgorithm {
     return pairs_.size();
   }
 
-  void update_transmitted() {
+  void update_transmitted(const PenaltyPass& p) {
     for (Vec3& t : transmitted_) t.setZero();
-    const PenaltyPass& p = core_.pass(0);
     const auto records = p.records();
     const Surface& m = p.master();
     for (std::size_t i = 0; i < records.size(); ++i) {
@@ -95,11 +76,13 @@ class AutomaticContact final : public ContactAlgorithm {
     }
   }
 
-  PenaltyPasses core_;
-  Friction friction_;
   std::vector<Id> parts_;
   std::vector<std::pair<std::size_t, std::size_t>> pairs_;
   std::vector<Vec3> transmitted_;
 };
+
+/// Friction: Frictionless or ExponentialCoulomb (compile-time policy).
+template <class Friction>
+using AutomaticContact = PenaltyInterface<AutomaticKind, Friction>;
 
 }  // namespace slideline

@@ -2,49 +2,19 @@
 /// DYNA3D Type 10 (*CONTACT_ONE_WAY_SURFACE_TO_SURFACE), penalty enforcement: one pass of the
 /// slave nodes on the master segments; with "sliding only" (_SLIDING_ONLY, set in the pass's
 /// options) a node that has touched does not separate. docs/contact.md, "Penalty contact".
-#include <memory>
-#include <string>
-#include <utility>
-#include <vector>
+#include <cstddef>
 
-#include "slideline/contact/contact_algorithm.hpp"
-#include "slideline/contact/friction/exponential_coulomb.hpp"
-#include "slideline/contact/friction/frictionless.hpp"
-#include "slideline/contact/penalty_passes.hpp"
+#include "slideline/contact/penalty_interface.hpp"
 
 namespace slideline {
 
+/// Kind of PenaltyInterface for Type 10: one pass of the card's slave nodes.
+struct OneWayKind {
+  static constexpr std::size_t pass_count = 1;
+};
+
 /// Friction: Frictionless or ExponentialCoulomb (compile-time policy).
 template <class Friction>
-class OneWayContact final : public ContactAlgorithm {
- public:
-  /// pass: the card's slave nodes on its master surface.
-  OneWayContact(std::string title, std::unique_ptr<PenaltyPass> pass, Friction friction)
-      : core_(std::move(title), one(std::move(pass)), {false}), friction_(friction) {}
-
-  const std::string& name() const override { return core_.name(); }
-  void initialize(const ContactContext& context) override { core_.initialize(context); }
-  void resolve_initial_penetrations(NodalFields& nodes) override { core_.resolve_initial_penetrations(nodes); }
-  void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override {
-    core_.apply_forces(nodes, times, out, friction_);
-  }
-  Real stable_dt() const override { return core_.stable_dt(); }
-  Vec3 slave_force() const override { return core_.slave_force(); }
-  Vec3 master_force() const override { return core_.master_force(); }
-  Real friction_work() const override { return core_.friction_work(); }
-
-  /// The passes (state, records, initial penetrations), for tests and diagnostics.
-  const PenaltyPasses& passes() const { return core_; }
-
- private:
-  PenaltyPasses core_;
-  Friction friction_;
-
-  static std::vector<std::unique_ptr<PenaltyPass>> one(std::unique_ptr<PenaltyPass> a) {
-    std::vector<std::unique_ptr<PenaltyPass>> v;
-    v.push_back(std::move(a));
-    return v;
-  }
-};
+using OneWayContact = PenaltyInterface<OneWayKind, Friction>;
 
 }  // namespace slideline

@@ -1,7 +1,7 @@
 #pragma once
-/// The penalty interfaces (DYNA3D Types 3, 5, 10, 12), one final class per type, each with its
-/// friction law as a compile-time policy (Frictionless or ExponentialCoulomb) and its pass logic in
-/// a PenaltyPasses member (penalty_passes.hpp):
+/// The penalty interfaces (DYNA3D Types 3, 5, 10, 12): PenaltyInterface<Kind, Friction>
+/// (penalty_interface.hpp), one final class per type and friction law (Frictionless or
+/// ExponentialCoulomb), its pass logic in a PenaltyPasses member (penalty_passes.hpp):
 /// - SurfaceToSurfaceContact (Type 3, surface_to_surface_contact.hpp): two passes;
 /// - OneWayContact (Type 10, one_way_contact.hpp): one pass, optionally "sliding only";
 /// - NodesToSurfaceContact (Type 5, nodes_to_surface_contact.hpp): one pass of nodes with a radius;
@@ -34,8 +34,8 @@ inline const PenaltyPasses* penalty_passes_of(const ContactAlgorithm& c) {
 
 /// The transmitted forces of an automatic (Type 12) interface; null for another interface.
 inline const std::vector<Vec3>* transmitted_forces_of(const ContactAlgorithm& c) {
-  if (const auto* p = dynamic_cast<const AutomaticContact<Frictionless>*>(&c)) return &p->transmitted_forces();
-  if (const auto* p = dynamic_cast<const AutomaticContact<ExponentialCoulomb>*>(&c)) return &p->transmitted_forces();
+  if (const auto* p = dynamic_cast<const AutomaticContact<Frictionless>*>(&c)) return &p->kind().transmitted_forces();
+  if (const auto* p = dynamic_cast<const AutomaticContact<ExponentialCoulomb>*>(&c)) return &p->kind().transmitted_forces();
   return nullptr;
 }
 

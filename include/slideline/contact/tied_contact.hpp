@@ -14,7 +14,6 @@
 /// same per-slave force spread with N_a and negated (sum N_a = 1, so the two totals are equal and
 /// opposite to round-off).
 #include <algorithm>
-#include <cstdio>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,26 +49,7 @@ class TiedInterface final : public ContactAlgorithm {
 
   void initialize(const ContactContext& context) override {
     const NodalFields& nodes = context.nodes;
-    // A slave that is also a master node of this interface (a shared node) is not tied to itself.
-    std::vector<std::uint8_t> is_master(nodes.size(), 0);
-    for (Index m : master_.conn) is_master[m] = 1;
-    std::vector<Index> slaves;
-    for (Index s : candidates_)
-      if (!is_master[s]) slaves.push_back(s);
-    std::vector<TiePoint> found = find_tie_points(slaves, master_, nodes.x, options_);
-    links_.clear();
-    untied_nodes_.clear();
-    for (const TiePoint& t : found) {
-      if (t.segment >= 0) links_.push_back(t);
-      else untied_nodes_.push_back(t.slave);
-    }
-    if (!untied_nodes_.empty()) {
-      std::string ids;
-      for (std::size_t k = 0; k < untied_nodes_.size() && k < 10; ++k)
-        ids += (k ? ", " : "") + std::to_string(nodes.ids[untied_nodes_[k]]);
-      std::fprintf(stderr, "contact %s: %zu slave node(s) project outside every master segment and are left free "
-                   "(first ids: %s)\n", name_.c_str(), untied_nodes_.size(), ids.c_str());
-    }
+    tie_candidates(name_, candidates_, master_, nodes, options_, links_, untied_nodes_);
     rotation_.assign(links_.size(), 0);
     slaves_.clear();
     masters_.clear();

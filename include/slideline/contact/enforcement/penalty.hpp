@@ -128,7 +128,7 @@ class PenaltyPass {
 
  private:
   void search(const Vec3Field& x);
-  bool accepted(std::size_t i, Index s, const Vec3Field& x) const;
+  bool accepted(std::size_t i, Index s, const Vec3Field& x, const Vec3& node_n) const;
   Vec3 node_normal(std::size_t i, const Vec3Field& x) const;
   Real master_offset(Index s) const {
     if (!opt_.shell_thickness || master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) return 0.0;

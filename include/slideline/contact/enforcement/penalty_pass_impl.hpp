@@ -138,13 +138,14 @@ inline Vec3 PenaltyPass::node_normal(std::size_t i, const Vec3Field& x) const {
 
 /// Single-surface filters (automatic pass): a solid node only meets solid faces that face it
 /// (normals opposed by more than 60 degrees); a shell node or shell segment never meets its own
-/// part (no self-contact of a shell part).
-inline bool PenaltyPass::accepted(std::size_t i, Index s, const Vec3Field& x) const {
+/// part (no self-contact of a shell part). node_n: node_normal(i, x), formed once per node by the
+/// caller (the same for all its candidates).
+inline bool PenaltyPass::accepted(std::size_t i, Index s, const Vec3Field& x, const Vec3& node_n) const {
   if (!opt_.automatic) return true;
   const std::size_t su = static_cast<std::size_t>(s);
   const bool shell_segment = master_.kind[su] == SegmentKind::shell;
   if (slave_solid_[i] && !shell_segment) {
-    return node_normal(i, x).dot(segment_normal(master_, s, x)) < -0.5;
+    return node_n.dot(segment_normal(master_, s, x)) < -0.5;
   }
   return slave_part_[i] != master_.part[su];
 }
@@ -164,16 +165,23 @@ inline void PenaltyPass::search(const Vec3Field& x) {
 }
 
 /// Per slave: the nearest accepted segment of its candidate run (closest point, ties broken as in
-/// is_better_projection); a change of segment resets the side memory.
+/// is_better_projection); a change of segment resets the side memory. A candidate whose corner
+/// box is already farther than the best so far cannot replace it (cannot_beat) and is not
+/// projected: the same pick, without most of the Newton solves of an automatic pass, whose nodes
+/// re-pick among all their candidates every cycle.
 inline void PenaltyPass::pick_nearest_candidates(const Vec3Field& x) {
   parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
     const std::size_t i = static_cast<std::size_t>(ii);
     const Vec3 p = x.get(slaves_[i]);
+    const bool facing_rule = opt_.automatic && slave_solid_[i] && run_begin_[i] < run_end_[i];
+    const Vec3 node_n = facing_rule ? node_normal(i, x) : Vec3::Zero();
     SegmentProjection best;
     for (std::size_t k = run_begin_[i]; k < run_end_[i]; ++k) {
       const Index s = candidates_[k].segment;
-      if (!accepted(i, s, x)) continue;
-      const Projection pr = project_point_to_segment(p, master_, s, x);
+      if (!accepted(i, s, x, node_n)) continue;
+      const SegmentCorners c = segment_corners(master_, s, x);
+      if (best.segment >= 0 && cannot_beat(p, c, best.projection)) continue;
+      const Projection pr = master_.is_triangle(s) ? project_point_to_triangle(p, c) : project_point_to_quad(p, c);
       if (best.segment < 0 || is_better_projection(pr, s, best.projection, best.segment, ProjectionOptions{})) {
         best.segment = s;
         best.projection = pr;

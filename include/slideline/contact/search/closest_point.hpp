@@ -29,6 +29,7 @@
 ///   larger segment size count as equal, and the lower segment index wins.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -121,29 +122,62 @@ inline void finish(Projection& r, const Vec3& p, Vec3 n, const SegmentCorners& c
   r.gap = (p - r.point).dot(r.normal);
 }
 
-/// Newton on grad(1/2 |x(xi, eta) - p|^2) = 0 from (xi, eta), kept within [-2, 2]^2 so that a far
-/// point cannot run away. Returns true when converged; (xi, eta) hold the last iterate.
+enum class NewtonStep { moved, converged, singular };
+
+/// One Newton step on grad(1/2 |x(xi, eta) - p|^2) = 0 from (xi, eta), the new iterate clamped to
+/// [-2, 2]^2 so that a far point cannot run away. A function of (xi, eta) alone (p, c and
+/// x_xe = d2x / dxi deta fixed). singular: (xi, eta) left as they were.
+inline NewtonStep quad_newton_step(const Vec3& p, const SegmentCorners& c, const Vec3& x_xe, Real& xi, Real& eta) {
+  const Vec3 x_xi = 0.25 * ((1 - eta) * (c[1] - c[0]) + (1 + eta) * (c[2] - c[3]));
+  const Vec3 x_eta = 0.25 * ((1 - xi) * (c[3] - c[0]) + (1 + xi) * (c[2] - c[1]));
+  const Vec3 res = combine(c, bilinear_shape(xi, eta)) - p;
+  const Real g0 = x_xi.dot(res), g1 = x_eta.dot(res);
+  const Real a = x_xi.squaredNorm(), d = x_eta.squaredNorm();
+  Real b = x_xi.dot(x_eta) + res.dot(x_xe);
+  Real det = a * d - b * b;
+  if (!(det > 1e-12 * a * d)) {  // not positive definite: Gauss-Newton
+    b = x_xi.dot(x_eta);
+    det = a * d - b * b;
+  }
+  if (!(det > 0.0)) return NewtonStep::singular;  // degenerate segment: the edges decide
+  const Real dxi = -(d * g0 - b * g1) / det;
+  const Real deta = -(a * g1 - b * g0) / det;
+  xi = std::clamp(xi + dxi, Real(-2), Real(2));
+  eta = std::clamp(eta + deta, Real(-2), Real(2));
+  // Quadratic convergence: after a step below 1e-10 the error is at round-off level.
+  return std::max(std::abs(dxi), std::abs(deta)) < 1e-10 ? NewtonStep::converged : NewtonStep::moved;
+}
+
+/// True when a and b are the same double to the bit (so that -0.0 and +0.0 differ).
+inline bool same_bits(Real a, Real b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+/// Up to max_iterations Newton steps (quad_newton_step) from (xi, eta). Returns true when
+/// converged; (xi, eta) hold the last iterate.
+///
+/// A point whose stationary point lies beyond the clamp never converges: the clamped iterate
+/// lands on the same (xi, eta) again and again (or alternates between two), up to
+/// max_iterations. A step is a function of (xi, eta) alone, so an iterate equal to the one before
+/// it (a fixed point) or to the one two before (a 2-cycle), bit for bit, repeats for good: the
+/// loop stops there and returns what the remaining steps would have left, the same bits (false,
+/// and the fixed point, or the member of the 2-cycle the count's parity lands on). On a contact
+/// surface these are ~40 % of the projections and three quarters of the Newton steps.
 inline bool quad_newton(const Vec3& p, const SegmentCorners& c, const Vec3& x_xe, int max_iterations,
                         Real& xi, Real& eta) {
+  Real xi1 = std::numeric_limits<Real>::quiet_NaN(), eta1 = xi1;  // the iterate before (xi, eta)
+  Real xi2 = xi1, eta2 = xi1;                                      // the one before that
   for (int it = 0; it < max_iterations; ++it) {
-    const Vec3 x_xi = 0.25 * ((1 - eta) * (c[1] - c[0]) + (1 + eta) * (c[2] - c[3]));
-    const Vec3 x_eta = 0.25 * ((1 - xi) * (c[3] - c[0]) + (1 + xi) * (c[2] - c[1]));
-    const Vec3 res = combine(c, bilinear_shape(xi, eta)) - p;
-    const Real g0 = x_xi.dot(res), g1 = x_eta.dot(res);
-    const Real a = x_xi.squaredNorm(), d = x_eta.squaredNorm();
-    Real b = x_xi.dot(x_eta) + res.dot(x_xe);
-    Real det = a * d - b * b;
-    if (!(det > 1e-12 * a * d)) {  // not positive definite: Gauss-Newton
-      b = x_xi.dot(x_eta);
-      det = a * d - b * b;
+    if (it >= 1 && same_bits(xi, xi1) && same_bits(eta, eta1)) return false;
+    if (it >= 2 && same_bits(xi, xi2) && same_bits(eta, eta2)) {
+      // Iterates it-1 and it alternate: the last one, max_iterations, is iterate it when
+      // max_iterations - it is even, else iterate it-1.
+      if ((max_iterations - it) % 2 != 0) xi = xi1, eta = eta1;
+      return false;
     }
-    if (!(det > 0.0)) return false;  // degenerate segment: the edges decide
-    const Real dxi = -(d * g0 - b * g1) / det;
-    const Real deta = -(a * g1 - b * g0) / det;
-    xi = std::clamp(xi + dxi, Real(-2), Real(2));
-    eta = std::clamp(eta + deta, Real(-2), Real(2));
-    // Quadratic convergence: after a step below 1e-10 the error is at round-off level.
-    if (std::max(std::abs(dxi), std::abs(deta)) < 1e-10) return true;
+    xi2 = xi1, eta2 = eta1;
+    xi1 = xi, eta1 = eta;
+    const NewtonStep step = quad_newton_step(p, c, x_xe, xi, eta);
+    if (step == NewtonStep::singular) return false;
+    if (step == NewtonStep::converged) return true;
   }
   return false;
 }
@@ -301,6 +335,28 @@ inline bool is_better_projection(const Projection& a, Index sa, const Projection
   if (a.distance < b.distance - tol) return true;
   if (b.distance < a.distance - tol) return false;
   return sa < sb;
+}
+
+/// True when no projection of p onto the segment with corners c can replace `best` under
+/// is_better_projection (the candidate visited after best): every point of the segment lies in
+/// the box of its corners, so the box's distance bounds its projection's distance from below, and
+/// when that bound is farther than best by more than the tie tolerance (taken with the box's
+/// extent, >= the segment's size) and a margin for round-off (the computed closest point and
+/// distances err by a few ulps of the coordinates), the candidate's projection would lose. Lets a
+/// search skip the projection (a Newton solve) of segments that cannot win, with the same result.
+inline bool cannot_beat(const Vec3& p, const SegmentCorners& c, const Projection& best,
+                        const ProjectionOptions& opt = {}) {
+  Vec3 lo = c[0], hi = c[0];
+  for (int a = 1; a < 4; ++a) lo = lo.cwiseMin(c[a]), hi = hi.cwiseMax(c[a]);
+  const Real lower2 = (lo - p).cwiseMax(p - hi).cwiseMax(Vec3::Zero()).squaredNorm();
+  // The common case, a box not beyond the best distance: keep the candidate, no root, no bound
+  // (keeping one that could have been skipped costs a projection, never a different pick).
+  if (!(lower2 > best.distance * best.distance)) return false;
+  const Real lower = std::sqrt(lower2);
+  const Real tol = opt.tie_tolerance * std::max(best.size, (hi - lo).sum());
+  const Real scale = std::max({p.cwiseAbs().maxCoeff(), lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()});
+  const Real round_off = 64 * std::numeric_limits<Real>::epsilon() * (scale + best.distance);
+  return lower > best.distance + tol + round_off;
 }
 
 }  // namespace slideline

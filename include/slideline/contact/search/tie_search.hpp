@@ -11,7 +11,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <span>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -90,6 +92,32 @@ inline std::vector<TiePoint> find_tie_points(std::span<const Index> slaves, cons
     t.size = best.size;
   }
   return out;
+}
+
+/// The ties of an interface at initialisation (Types 2, 6, 7, 8, 9 alike): find_tie_points for
+/// each of `candidates` that is not itself a node of `master` (a shared node is not tied to
+/// itself); the tied ones go to `links`, the others to `untied` (both cleared first) and, when
+/// there are any, to a stderr line naming the interface and the first ten node ids: an untied
+/// slave is free, which the user must hear about.
+inline void tie_candidates(const std::string& name, std::span<const Index> candidates, const Surface& master,
+                           const NodalFields& nodes, const TieSearchOptions& opt, std::vector<TiePoint>& links,
+                           std::vector<Index>& untied) {
+  std::vector<std::uint8_t> is_master(nodes.size(), 0);
+  for (Index m : master.conn) is_master[m] = 1;
+  std::vector<Index> slaves;
+  for (Index s : candidates)
+    if (!is_master[s]) slaves.push_back(s);
+  links.clear();
+  untied.clear();
+  for (const TiePoint& t : find_tie_points(slaves, master, nodes.x, opt)) {
+    if (t.segment >= 0) links.push_back(t);
+    else untied.push_back(t.slave);
+  }
+  if (untied.empty()) return;
+  std::string ids;
+  for (std::size_t k = 0; k < untied.size() && k < 10; ++k) ids += (k ? ", " : "") + std::to_string(nodes.ids[untied[k]]);
+  std::fprintf(stderr, "contact %s: %zu slave node(s) project outside every master segment and are left free "
+               "(first ids: %s)\n", name.c_str(), untied.size(), ids.c_str());
 }
 
 /// x at the master point of t: sum_a N_a f(master_a).
