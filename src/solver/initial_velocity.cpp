@@ -1,7 +1,6 @@
 // Initial velocities (see initial_velocity.hpp and docs/keywords.md for the semantics).
 #include "initial_velocity.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +11,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/rigid_body.hpp"
 
 namespace slideline {
 namespace {
@@ -185,16 +185,6 @@ void apply_node_cards(const InitialVelocityInputs& in, Assignment& a) {
   }
 }
 
-/// Pseudo-inverse solve of a symmetric positive semi-definite 3x3 system (collinear nodes leave
-/// the rotation about their line undetermined: it is taken as zero).
-Vec3 solve_psd(const Mat3& a, const Vec3& b) {
-  Eigen::SelfAdjointEigenSolver<Mat3> es(a);
-  const Vec3 ev = es.eigenvalues();
-  const Real cut = 1e-12 * std::max(ev.cwiseAbs().maxCoeff(), std::numeric_limits<Real>::min());
-  Vec3 y = es.eigenvectors().transpose() * b;
-  for (int k = 0; k < 3; ++k) y[k] = ev[k] > cut ? y[k] / ev[k] : 0.0;
-  return es.eigenvectors() * y;
-}
 
 /// A rigid part moves as one body: RigidBody::initialize projects its nodes' velocities onto the
 /// body's momentum and angular momentum, which reproduces them only if they already are one

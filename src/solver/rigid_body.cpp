@@ -17,18 +17,6 @@ bool carries_rotation(const NodalFields& nodes, Index i) {
   return nodes.has_rotation[i] != 0 && nodes.rot_inertia[i] > 0.0;
 }
 
-/// Pseudo-inverse of a symmetric positive semi-definite 3x3 matrix times b. A rigid body whose
-/// nodes are collinear has no inertia about that line; the pseudo-inverse leaves it at rest there
-/// instead of dividing by zero.
-Vec3 solve_spd(const Mat3& a, const Vec3& b) {
-  Eigen::SelfAdjointEigenSolver<Mat3> es(a);
-  const Vec3 ev = es.eigenvalues();
-  const Real cut = 1e-12 * std::max(ev.cwiseAbs().maxCoeff(), std::numeric_limits<Real>::min());
-  Vec3 y = es.eigenvectors().transpose() * b;
-  for (int k = 0; k < 3; ++k) y[k] = ev[k] > cut ? y[k] / ev[k] : 0.0;
-  return es.eigenvectors() * y;
-}
-
 /// exp of the rotation vector `phi` as a unit quaternion.
 Eigen::Quaternion<Real> quaternion_exp(const Vec3& phi) {
   const Real angle = phi.norm();
@@ -42,6 +30,18 @@ Mat3 rotate_tensor(const Eigen::Quaternion<Real>& q, const Mat3& a) {
 }
 
 }  // namespace
+
+/// Pseudo-inverse of a symmetric positive semi-definite 3x3 matrix times b. A rigid body whose
+/// nodes are collinear has no inertia about that line; the pseudo-inverse leaves it at rest there
+/// instead of dividing by zero.
+Vec3 solve_psd(const Mat3& a, const Vec3& b) {
+  Eigen::SelfAdjointEigenSolver<Mat3> es(a);
+  const Vec3 ev = es.eigenvalues();
+  const Real cut = 1e-12 * std::max(ev.cwiseAbs().maxCoeff(), std::numeric_limits<Real>::min());
+  Vec3 y = es.eigenvectors().transpose() * b;
+  for (int k = 0; k < 3; ++k) y[k] = ev[k] > cut ? y[k] / ev[k] : 0.0;
+  return es.eigenvectors() * y;
+}
 
 RigidBody::RigidBody(Id part_id, std::vector<Index> nodes, std::array<int, 6> fixed_dofs)
     : part_id_(part_id), nodes_(std::move(nodes)), fixed_(fixed_dofs) {
@@ -79,7 +79,7 @@ Vec3 RigidBody::solve_omega(const Mat3& inertia, const Vec3& l) const {
       a(c, c) = 1.0;
       b[c] = 0.0;
     }
-  Vec3 w = solve_spd(a, b);
+  Vec3 w = solve_psd(a, b);
   for (int c = 0; c < 3; ++c)
     if (held_rotation(c)) w[c] = wp[c];
   return w;
@@ -193,7 +193,7 @@ void RigidBody::constrain_accelerations(const ConstraintLoads& loads, NodalField
   }
   // The nodes' own moments change their own angular velocities in the simulation's update; the
   // point masses carry the torque of the forces.
-  const Vec3 beta = solve_spd(rotate_tensor(q_, point_inertia0_), tau_p);
+  const Vec3 beta = solve_psd(rotate_tensor(q_, point_inertia0_), tau_p);
   for (std::size_t k = 0; k < nodes_.size(); ++k)
     nodes.a.set(nodes_[k], acc + beta.cross(r * offset0_[k]));
 }

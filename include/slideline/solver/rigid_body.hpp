@@ -32,6 +32,11 @@
 
 namespace slideline {
 
+/// Pseudo-inverse of a symmetric positive semi-definite 3x3 matrix times b (the inertia solves of
+/// rigid bodies: nodes on one line have no inertia about it, and are left at rest about it
+/// instead of dividing by zero).
+Vec3 solve_psd(const Mat3& a, const Vec3& b);
+
 class RigidBody final : public NodalConstraint {
  public:
   /// `nodes`: unique internal node indices of the part; `fixed_dofs`: 1 = fixed, in the order
