@@ -91,6 +91,9 @@ class PairingEvaluator {
       has_reaction_ = true;
     }
     rel_ = sslide_relative_displacement(p, h);
+    has_rel_ = h.has(sslide_node_channel(p.monitor.slave_node)) && !p.monitor.path.empty();
+    for (const auto& seg : p.monitor.path)
+      for (Id n : seg.nodes) has_rel_ = has_rel_ && h.has(sslide_node_channel(n));
   }
 
   void evaluate() {
@@ -144,7 +147,8 @@ class PairingEvaluator {
   /// missing channel, no record in the window, a NaN record).
   std::optional<Peak> stats(const std::string& name, const std::string& bound, const std::vector<Real>& x,
                             char which, Real t0, Real t1, std::optional<Real> dyna = {}) {
-    if (x.empty()) {
+    const bool recorded = which == 'F' ? force_ != nullptr : which == 'R' ? has_reaction_ : has_rel_;
+    if (!recorded) {
       unmeasured(name, bound, missing(which), dyna);
       return std::nullopt;
     }
@@ -296,6 +300,7 @@ class PairingEvaluator {
   std::vector<Vec3> reaction_;
   bool has_reaction_ = false;
   std::vector<Vec3> rel_;
+  bool has_rel_ = false;  // every node channel of the monitor is recorded
 };
 
 /// Types 8 and 9 in tension: the peak, when it comes, and nothing transmitted after the failure.

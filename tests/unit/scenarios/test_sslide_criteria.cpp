@@ -87,7 +87,9 @@ History synthesise(const SslideProblem& pr, const Perturbation& dp = {}) {
       put(sslide_node_channel(p.monitor.slave_node),
           common + rel + Vec3(0, face(p.monitor.slave_x0.x() + common.x() + rel.x()), 0));
       if (pr.type == model::ContactType::tiebreak_surface && t >= pr.failure_time)
-        put(sslide_first_failure_channel(p), Vec3(9.0, 9.0, 1.0));  // uniform traction at failure
+        // The last record before the closed form drops is 8.9 (t = 0.089): a mean traction of 8.9
+        // when the most loaded segment reaches 9.0.
+        put(sslide_first_failure_channel(p), Vec3(9.0, 8.9, 9.0 / 8.9));
     }
     h.write_history(t, values);
   }
@@ -229,7 +231,7 @@ TEST(SslideCriteria, TensileFailureHasNoChatterRowsAfterFailure) {
 
 TEST(SslideCriteria, TypeNineTensionPeakMustMatchTheStressRatio) {
   const auto pr = make_sslide_problem("sslide9pt");
-  // Peak 8.6 (inside [8.55, 9.36]) but the recorded max/mean traction 1.0 predicts 9.0.
+  // Peak 8.6 (inside [8.55, 9.36]) but the recorded max/mean traction 9.0 / 8.9 predicts 8.9.
   const auto rows = evaluate(pr, {.force = [](Real, Vec3& f) { f.y() = std::max(f.y(), -8.6); }});
   EXPECT_TRUE(failed(rows, "peak x max/mean stress"));
   EXPECT_FALSE(failed(rows, "peak |F_y|"));
@@ -353,15 +355,16 @@ TEST(SslideCriteria, EmptySeriesFailsTheBalance) {
   expect_failed_with(rows_after("sslide2kc", "mean F_y", empty), "no record");
 }
 
+constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+
 TEST(SslideCriteria, NaNRecordsFail) {
-  constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
   // A NaN first record of the monitor used to give an interpenetration of 0.
   const auto nan_monitor = [](const SslideProblem& pr, SslideHistories& h) {
-    for (const auto& p : pr.pairings) h.channels.at(sslide_node_channel(p.monitor.slave_node))[0].y() = nan;
+    for (const auto& p : pr.pairings) h.channels.at(sslide_node_channel(p.monitor.slave_node))[0].y() = kNaN;
   };
   expect_failed_with(rows_after("sslide3p", "interpenetration", nan_monitor), "NaN record at t = 0");
   const auto nan_force = [](const SslideProblem& pr, SslideHistories& h) {
-    for (const auto& p : pr.pairings) h.channels.at(sslide_force_channel(pr, p))[250] = Vec3::Constant(nan);
+    for (const auto& p : pr.pairings) h.channels.at(sslide_force_channel(pr, p))[250] = Vec3::Constant(kNaN);
   };
   expect_failed_with(rows_after("sslide2kc", "balance", nan_force), "NaN record at t = 0.25");
   expect_failed_with(rows_after("sslide2kc", "mean F_y", nan_force), "NaN record at t = 0.25");
