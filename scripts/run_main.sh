@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the main job: the 19 verification problems of the spec
-# (../shared/spec/, docs/verification.md) through `blockcontact verify --all`, which prints the
+# (DYNA3D verification report, McMichael 2006; docs/verification.md) through `blockcontact verify --all`, which prints the
 # table of criteria (ours beside DYNA3D's) and writes out/verify/report.md with its plots.
 # Exit code: verify's (0 only when every criterion of every problem holds).
 set -euo pipefail

@@ -136,8 +136,10 @@ void write_report(const std::vector<ProblemOutcome>& outcomes, const std::string
                   const std::string& path) {
   std::string md = "# sslide verification report\n\n";
   md += "The 19 problems of the DYNA3D basic-contact verification report (McMichael 2006), run by "
-        "`blockcontact verify`; criteria as in docs/verification.md. DYNA3D's figures from `" +
-        spec_dir + "/dyna3d_reported.json`.\n\n";
+        "`blockcontact verify`; criteria as in docs/verification.md. DYNA3D's figures from " +
+        (spec_dir.empty() ? std::string("the copy compiled in (src/scenarios/dyna3d_reported.json)")
+                          : "`" + spec_dir + "/dyna3d_reported.json`") +
+        ".\n\n";
   md += all_pass(outcomes) ? "**Every criterion holds.**\n\n" : "**Some criteria fail or problems did not run.**\n\n";
   md += "| problem | status | wall time (s) | criteria failed |\n|---|---|---:|---:|\n";
   double total = 0.0;

@@ -80,7 +80,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   tie_force_.assign(n, Vec3::Zero());
   for (std::size_t k = 0; k < n; ++k) track_[k] = links_[k].segment;
   friction_work_ = 0.0;
-  slave_ = master_total_ = Vec3::Zero();
+  slave_ = master_total_ = first_failure_stress_ = Vec3::Zero();
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
   dt_ = std::numeric_limits<Real>::max();
   for (std::size_t k = 0; k < n; ++k) {
@@ -98,6 +98,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
 
 void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
   Vec3 slave = Vec3::Zero();
+  master_total_ = Vec3::Zero();  // summed where forces are added to master nodes
   const std::size_t n = links_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const TiePoint& t = links_[k];
@@ -113,11 +114,10 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     tie_force_[k] = f;
     out.force.add(t.slave, f);
     for (int a = 0; a < 4; ++a)
-      if (t.shape[a] != 0.0) out.force.add(t.master[a], -t.shape[a] * f);
+      if (t.shape[a] != 0.0) add_to_master(out, t.master[a], -t.shape[a] * f);
     slave += f;
   }
   slave_ = slave;
-  master_total_ = -slave;  // every slave force is spread with shape functions that sum to 1
 
   // Failure checks on this cycle's forces (effective from the next cycle).
   if (p_.unit == TiebreakParameters::FailureUnit::node) {
@@ -134,17 +134,13 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
   for (Index j = 0; j < nseg; ++j) {
     if (segment_failed_[j]) continue;
     Vec3 fj = Vec3::Zero(), nj = Vec3::Zero();
-    for (int q = 0; q < 4; ++q) {
-      const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
-      if (l < 0) continue;
-      fj -= kappa_[l] * segment_share_[j] * delta_[l];
-      nj += oriented_normal(static_cast<std::size_t>(l), nodes.x);
-    }
+    segment_tie_force(j, nodes.x, fj, nj);
     segment_force_[j] = fj;
     const Real nn = nj.norm();
     if (!(nn > 0.0)) continue;
     const Real a = segment_area_[j];
     if (failure_index(fj, nj / nn, p_.normal_failure * a, p_.shear_failure * a, 2.0, 2.0) < 1.0) continue;
+    if (!(first_failure_stress_.z() > 0.0)) record_first_failure_stress(nodes.x);
     segment_failed_[j] = 1;
     segment_force_[j] = Vec3::Zero();
     for (int q = 0; q < 4; ++q) {
@@ -157,6 +153,32 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
       }
     }
   }
+}
+
+void TiebreakContact::segment_tie_force(Index j, const Vec3Field& x, Vec3& fj, Vec3& nj) const {
+  for (int q = 0; q < 4; ++q) {
+    const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
+    if (l < 0) continue;
+    fj -= kappa_[l] * segment_share_[j] * delta_[l];
+    nj += oriented_normal(static_cast<std::size_t>(l), x);
+  }
+}
+
+void TiebreakContact::record_first_failure_stress(const Vec3Field& x) {
+  Real largest = 0.0, sum = 0.0;
+  int count = 0;
+  for (Index j = 0; j < slave_surface_.segment_count(); ++j) {
+    if (segment_failed_[j]) continue;
+    Vec3 fj = Vec3::Zero(), nj = Vec3::Zero();
+    segment_tie_force(j, x, fj, nj);
+    const Real nn = nj.norm();
+    const Real sn = nn > 0.0 ? std::max(0.0, -fj.dot(nj / nn)) / segment_area_[j] : 0.0;
+    largest = std::max(largest, sn);
+    sum += sn;
+    ++count;
+  }
+  const Real mean = count > 0 ? sum / count : 0.0;
+  first_failure_stress_ = {largest, mean, mean > 0.0 ? largest / mean : 0.0};
 }
 
 void TiebreakContact::release(std::size_t k, const Vec3& n) {
@@ -207,7 +229,7 @@ void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& no
   const Vec3 f = fn * n + r.force;
   out.force.add(t.slave, f);
   for (int a = 0; a < 4; ++a)
-    if (best.shape[a] != 0.0) out.force.add(m[a], -best.shape[a] * f);
+    if (best.shape[a] != 0.0) add_to_master(out, m[a], -best.shape[a] * f);
 }
 
 }  // namespace slideline

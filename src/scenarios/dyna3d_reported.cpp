@@ -2,7 +2,7 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <filesystem>
+#include <string>
 #include <fstream>
 #include <sstream>
 
@@ -143,32 +143,41 @@ Dyna3dReported Dyna3dReported::load(const std::string& path) {
   }
 }
 
-std::optional<Real> Dyna3dReported::figure(const std::string& problem, const std::string& key,
-                                           const std::string& pairing) const {
+Dyna3dReported Dyna3dReported::builtin() {
+  try {
+    return Dyna3dReported(parse_json(dyna3d_reported_json()));
+  } catch (const InputError& e) {
+    throw InputError(std::string("built-in dyna3d_reported.json: ") + e.what());
+  }
+}
+
+const JsonValue* Dyna3dReported::entry(const std::string& problem, const std::string& key,
+                                       const std::string& pairing) const {
   const JsonValue* p = root_.find(problem);
   const JsonValue* v = p ? p->find(key) : nullptr;
-  if (!v) return std::nullopt;
-  if (v->kind == JsonValue::Kind::number) return v->number;
-  if (v->kind == JsonValue::Kind::object) {
-    const JsonValue* e = pairing.empty() ? nullptr : v->find(pairing);
-    if (!e) e = v->find("all");
-    if (e && e->kind == JsonValue::Kind::number) return e->number;
-  }
+  if (!v || v->kind != JsonValue::Kind::object) return v;
+  const JsonValue* e = pairing.empty() ? nullptr : v->find(pairing);
+  return e ? e : v->find("all");
+}
+
+std::optional<Real> Dyna3dReported::figure(const std::string& problem, const std::string& key,
+                                           const std::string& pairing) const {
+  const JsonValue* v = entry(problem, key, pairing);
+  if (v && v->kind == JsonValue::Kind::number) return v->number;
   return std::nullopt;
 }
 
-std::string find_spec_dir(const std::string& start) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::path dir = fs::absolute(start, ec);
-  if (ec) return {};
-  for (;;) {
-    for (const fs::path& cand : {dir / "shared" / "spec", dir / "spec", dir})
-      if (fs::exists(cand / "dyna3d_reported.json", ec)) return cand.string();
-    if (!dir.has_parent_path() || dir.parent_path() == dir) break;
-    dir = dir.parent_path();
-  }
-  return {};
+std::string Dyna3dReported::text(const std::string& problem, const std::string& key,
+                                 const std::string& pairing) const {
+  const JsonValue* v = entry(problem, key, pairing);
+  return v && v->kind == JsonValue::Kind::string ? v->string : std::string();
+}
+
+std::string Dyna3dReported::section(const std::string& problem, const std::string& key) const {
+  const JsonValue* p = root_.find(problem);
+  const JsonValue* s = p ? p->find("sections") : nullptr;
+  const JsonValue* v = s ? s->find(key) : nullptr;
+  return v && v->kind == JsonValue::Kind::string ? v->string : std::string();
 }
 
 }  // namespace slideline::scenarios

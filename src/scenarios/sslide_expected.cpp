@@ -2,6 +2,8 @@
 // read, and loading those channels from a run (in memory or HDF5).
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/hdf5_reader.hpp"
@@ -52,6 +54,9 @@ std::string sslide_force_channel(const SslideProblem& problem, const SslidePairi
 }
 std::string sslide_master_channel(const SslidePairing& p) { return "interfaces/" + p.contact_title + "/master_force"; }
 std::string sslide_support_channel(const std::string& title) { return "supports/" + title + "/reaction"; }
+std::string sslide_first_failure_channel(const SslidePairing& p) {
+  return "interfaces/" + p.contact_title + "/first_failure_stress";
+}
 std::string sslide_node_channel(Id node) { return "nodes/" + std::to_string(node) + "/displacement"; }
 
 std::vector<std::string> sslide_channels(const SslideProblem& problem) {
@@ -59,6 +64,7 @@ std::vector<std::string> sslide_channels(const SslideProblem& problem) {
   for (const auto& p : problem.pairings) {
     v.push_back(sslide_force_channel(problem, p));
     if (problem.type != model::ContactType::automatic) v.push_back(sslide_master_channel(p));
+    if (problem.type == model::ContactType::tiebreak_surface) v.push_back(sslide_first_failure_channel(p));
     v.push_back(sslide_support_channel(p.bottom_support));
     v.push_back(sslide_support_channel(p.right_support));
     v.push_back(sslide_node_channel(p.monitor.slave_node));
@@ -117,6 +123,60 @@ std::vector<Vec3> sslide_relative_displacement(const SslidePairing& p, const Ssl
     rel[r] = tracked_relative_displacement(p.monitor, s->second[r], u);
   }
   return rel;
+}
+
+namespace {
+/// Current x extent and, per segment of the monitor's row, its nodes' current positions at record r.
+bool current_row(const SslidePairing& p, const SslideHistories& h, std::size_t r,
+                 std::vector<std::array<Vec3, 4>>& x) {
+  x.assign(p.monitor.path.size(), {});
+  for (std::size_t g = 0; g < x.size(); ++g)
+    for (std::size_t k = 0; k < 4; ++k) {
+      const auto f = h.channels.find(sslide_node_channel(p.monitor.path[g].nodes[k]));
+      if (f == h.channels.end() || r >= f->second.size()) return false;
+      x[g][k] = p.monitor.path[g].x0[k] + f->second[r];
+    }
+  return !x.empty();
+}
+}  // namespace
+
+std::optional<std::pair<Real, Real>> sslide_master_slope_range(const SslidePairing& p, const SslideHistories& h,
+                                                                std::size_t r) {
+  std::vector<std::array<Vec3, 4>> x;
+  if (!current_row(p, h, r, x)) return std::nullopt;
+  Real xmin = 1e300;
+  for (const auto& seg : p.monitor.path)
+    for (const auto& x0 : seg.x0) xmin = std::min(xmin, x0.x());
+  Real lo = 1e300, hi = -1e300;
+  for (std::size_t g = 0; g < x.size(); ++g) {
+    const auto& x0 = p.monitor.path[g].x0;
+    Real left = 1e300, right = -1e300;
+    for (const auto& c : x0) left = std::min(left, c.x()), right = std::max(right, c.x());
+    // The upper body spans [xmin + 0.03, xmin + 1.03] (sslide.hpp, "Geometry"): take the segments
+    // it covers by more than half.
+    if (std::min(right, xmin + 1.03) - std::max(left, xmin + 0.03) < 0.5 * (right - left)) continue;
+    Real y_left = 0.0, y_right = 0.0, x_left = 0.0, x_right = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const bool is_left = x0[k].x() < 0.5 * (left + right);
+      (is_left ? y_left : y_right) += 0.5 * x[g][k].y();
+      (is_left ? x_left : x_right) += 0.5 * x[g][k].x();
+    }
+    const Real s = (y_right - y_left) / (x_right - x_left);
+    lo = std::min(lo, s), hi = std::max(hi, s);
+  }
+  if (lo > hi) return std::nullopt;
+  return std::make_pair(lo, hi);
+}
+
+std::optional<bool> sslide_monitor_over_master(const SslidePairing& p, const SslideHistories& h, std::size_t r) {
+  std::vector<std::array<Vec3, 4>> x;
+  const auto s = h.channels.find(sslide_node_channel(p.monitor.slave_node));
+  if (s == h.channels.end() || r >= s->second.size() || !current_row(p, h, r, x)) return std::nullopt;
+  Real left = 1e300, right = -1e300;
+  for (const auto& seg : x)
+    for (const auto& c : seg) left = std::min(left, c.x()), right = std::max(right, c.x());
+  const Real xs = p.monitor.slave_x0.x() + s->second[r].x();
+  return xs >= left && xs <= right;
 }
 
 }  // namespace slideline::scenarios

@@ -21,3 +21,18 @@ add_test(NAME cli.verify.plots COMMAND blockcontact verify sslide7k --drop-conta
 set_tests_properties(cli.verify.plots PROPERTIES PASS_REGULAR_EXPRESSION "plot_sslide: 1 problem\\(s\\) plotted")
 set_tests_properties(cli.generate.all cli.generate.list cli.generate.unknown cli.verify.help cli.verify.unknown
   cli.verify.pipeline cli.verify.plots PROPERTIES LABELS "unit;cli")
+
+# Exit codes (issue 17): 0 when every criterion of a real run holds, 1 when a perturbed copy of its
+# histories fails one (the bottom support's R_y 5% high over [0.2, 0.3]: only "mean R_y" fails).
+if(EXISTS /usr/bin/python3)
+  set(VERIFY_PYTHON /usr/bin/python3)
+else()
+  set(VERIFY_PYTHON python3)
+endif()
+add_test(NAME cli.verify.exit_code COMMAND ${CMAKE_COMMAND} -DBIN=$<TARGET_FILE:blockcontact>
+  -DPYTHON=${VERIFY_PYTHON} -DPERTURB=${CMAKE_CURRENT_SOURCE_DIR}/perturb_history.py
+  -DOUT=${CMAKE_CURRENT_BINARY_DIR}/verify_exit_code -DPROBLEM=sslide2kc
+  -DDATASET=/supports/solid_on_solid_bottom/reaction -DCOMPONENT=1 -DFACTOR=1.05 -DT0=0.2 -DT1=0.3
+  "-DFAILS=solid_on_solid +mean R_y \\[0.2,0.3\\]"
+  -P ${CMAKE_CURRENT_SOURCE_DIR}/verify_exit_code.cmake)
+set_tests_properties(cli.verify.exit_code PROPERTIES LABELS "unit;cli")

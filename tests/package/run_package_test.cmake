@@ -30,7 +30,9 @@ if(WITH_CLI)
   if(NOT EXISTS ${cli})
     message(FATAL_ERROR "blockcontact was not installed to ${cli}")
   endif()
-  foreach(args "--help" "check;${SOURCE_DIR}/tests/data/decks/unit_cube.k")
+  # verify: DYNA3D's figures are compiled into the installed library (no file to find).
+  foreach(args "--help" "verify;sslide7k;--no-plots;-o;${WORK_DIR}/verify"
+               "check;${SOURCE_DIR}/tests/data/decks/unit_cube.k")  # check last: its "ok" is tested below
     execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH ${cli} ${args}
                     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message(STATUS "installed blockcontact ${args}:\n${out}${err}")

@@ -106,7 +106,7 @@ class ContactAlgorithm {
 
   /// Largest step this interface allows (penalty springs), before the global scale factor.
   virtual Real stable_dt() const { return std::numeric_limits<Real>::max(); }
-  /// Total interface force on the slave side and on the master side at the last cycle.
+  /// Total force on the slave side and on the master side (summed where added to master nodes).
   virtual Vec3 slave_force() const = 0;
   virtual Vec3 master_force() const = 0;
   /// Energy dissipated by friction so far (>= 0), for the energy ledger's friction term.

@@ -197,10 +197,11 @@ class LagrangeInterface final : public ContactAlgorithm {
     opt.tolerance = tolerance_;
     update_rigid_groups(view, times);
     const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
-    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_);
+    LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_, &master_force_);
     for (int pass = 1; pass < s_.projection_passes; ++pass) {
       reproject(view, times, groups);
-      const LagrangeSolveResult r2 = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_);
+      const LagrangeSolveResult r2 =
+          solve_forward_increment(constraints_, view, times, opt, groups, &workspace_, &master_force_);
       r.sweeps += r2.sweeps;
       r.correction = r2.correction;
       r.converged = r2.converged;
@@ -370,7 +371,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   void reproject(const ConstraintView& view, const StepTimes& times, const RigidGroups* groups) {
     for (Index n : master_.nodes) predicted_.set(n, predicted_position(view, times, groups, n));
     for (Index n : slaves_) predicted_.set(n, predicted_position(view, times, groups, n));
-    withdraw_constraint_forces(constraints_, view, times, groups);
+    withdraw_constraint_forces(constraints_, view, times, groups, &master_force_);
     for (std::size_t k = 0; k < constraints_.size(); ++k) {
       LagrangeConstraint& c = constraints_[k];
       const auto i = static_cast<std::size_t>(owner_[k]);
@@ -476,7 +477,6 @@ class LagrangeInterface final : public ContactAlgorithm {
       for (int a = 0; a < 4; ++a) {
         if (c.shape[static_cast<std::size_t>(a)] == 0.0) continue;
         const Vec3 fm = -c.shape[static_cast<std::size_t>(a)] * f;
-        master_force_ += fm;
         if (s_.transmitted_output && in_first_[static_cast<std::size_t>(c.master[static_cast<std::size_t>(a)])])
           transmitted_ += fm;
         v_rel -= c.shape[static_cast<std::size_t>(a)] * view.nodes.v.get(c.master[static_cast<std::size_t>(a)]);

@@ -75,6 +75,15 @@ class TiebreakContact final : public ContactAlgorithm {
   Vec3 slave_force() const override { return slave_; }
   Vec3 master_force() const override { return master_total_; }
   Real friction_work() const override { return friction_work_; }
+  /// Type 9: `first_failure_stress` = (max, mean, max/mean) of the slave segments' normal traction
+  /// (stress) in the cycle the first segment fails; zero until then (docs/output.md).
+  void append_output_names(std::vector<std::string>& names) const override {
+    if (p_.unit == TiebreakParameters::FailureUnit::segment) names.push_back("first_failure_stress");
+  }
+  void write_output_values(std::span<Real> out) const override {
+    if (p_.unit != TiebreakParameters::FailureUnit::segment) return;
+    for (int c = 0; c < 3; ++c) out[static_cast<std::size_t>(c)] = first_failure_stress_[c];
+  }
 
   /// Slave nodes tied at initialize (each with its master point).
   const std::vector<TiePoint>& links() const { return links_; }
@@ -101,6 +110,14 @@ class TiebreakContact final : public ContactAlgorithm {
     return side_[k] * segment_normal(master_, links_[k].segment, x);
   }
   void release(std::size_t k, const Vec3& n);
+  /// Adds f to master node i and to the master total (master_force: what the masters received).
+  void add_to_master(ContactForceView out, Index i, const Vec3& f) {
+    out.force.add(i, f);
+    master_total_ += f;
+  }
+  /// Type 9: the tie force on slave segment j (slave side) and the sum of its links' oriented normals.
+  void segment_tie_force(Index j, const Vec3Field& x, Vec3& fj, Vec3& nj) const;
+  void record_first_failure_stress(const Vec3Field& x);
   void contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times, ContactForceView out);
 
   std::string name_;
@@ -126,6 +143,7 @@ class TiebreakContact final : public ContactAlgorithm {
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
+  Vec3 first_failure_stress_ = Vec3::Zero();  ///< Type 9: (max, mean, max/mean) normal traction
 };
 
 }  // namespace slideline

@@ -10,9 +10,10 @@
 ///
 /// Kinematics: x_s = sum N_a x_a + d_s (d_s, the offset at tie time, kept constant),
 /// v_s = sum N_a v_a, omega_s = sum N_a omega_a. Interface force on the slave side: the force the
-/// tie applies to the slaves, sum (m_s a_s - f_s) with a_s = sum N_a a_a; on the master side: the
-/// same per-slave force spread with N_a and negated (sum N_a = 1, so the two totals are equal and
-/// opposite to round-off).
+/// tie applies to the slaves, sum (m_s a_s - f_s) with a_s = sum N_a a_a; on the master side: what
+/// the condensation actually added to each master node, its force df_a less its mass dm_a times its
+/// final acceleration, sum (df_a - dm_a a_a) (equal and opposite to the slave total to round-off
+/// when the scatter is right: sum N_a = 1).
 #include <algorithm>
 #include <span>
 #include <string>
@@ -66,12 +67,18 @@ class TiedInterface final : public ContactAlgorithm {
     masters_.erase(std::unique(masters_.begin(), masters_.end()), masters_.end());
     force_.assign(links_.size(), Vec3::Zero());
     mass_.assign(links_.size(), 0.0);
+    master_df_.assign(masters_.size(), Vec3::Zero());
+    master_dm_.assign(masters_.size(), 0.0);
     slave_ = master_total_ = Vec3::Zero();
   }
 
   bool condenses() const override { return true; }
 
   void condense(const NodalFields& /*nodes*/, CondenseView v) override {
+    for (std::size_t m = 0; m < masters_.size(); ++m) {  // before: what follows is this tie's
+      master_df_[m] = v.force.get(masters_[m]);
+      master_dm_[m] = v.mass[masters_[m]];
+    }
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const TiePoint& t = links_[k];
       const Real ms = v.mass[t.slave];
@@ -85,17 +92,22 @@ class TiedInterface final : public ContactAlgorithm {
         kinematic::scatter(t, v.moment, v.moment.get(t.slave));
       }
     }
+    for (std::size_t m = 0; m < masters_.size(); ++m) {
+      master_df_[m] = v.force.get(masters_[m]) - master_df_[m];
+      master_dm_[m] = v.mass[masters_[m]] - master_dm_[m];
+    }
   }
 
   void follow_velocities(NodalFields& nodes) override {
     // The tie force on each slave, from the masters' final accelerations (idempotent: the
     // simulation may call this twice in a cycle when a rigid body resets its nodes).
     Vec3 slave = Vec3::Zero(), master = Vec3::Zero();
+    for (std::size_t m = 0; m < masters_.size(); ++m)
+      master += master_df_[m] - master_dm_[m] * nodes.a.get(masters_[m]);
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const TiePoint& t = links_[k];
       const Vec3 tie = mass_[k] * tie_point_value(t, nodes.a) - force_[k];
       slave += tie;
-      for (int a = 0; a < 4; ++a) master -= t.shape[a] * tie;
       nodes.v.set(t.slave, tie_point_value(t, nodes.v));
       if (rotation_[k]) nodes.omega.set(t.slave, tie_point_value(t, nodes.omega));
     }
@@ -128,6 +140,8 @@ class TiedInterface final : public ContactAlgorithm {
   std::vector<std::uint8_t> rotation_;
   std::vector<Vec3> force_;   ///< total force on each slave at the last condensation
   std::vector<Real> mass_;    ///< effective mass of each slave at the last condensation
+  std::vector<Vec3> master_df_;  ///< per entry of masters_: force the last condensation added
+  std::vector<Real> master_dm_;  ///< per entry of masters_: mass the last condensation added
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
 };
 

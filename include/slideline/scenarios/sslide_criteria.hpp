@@ -59,11 +59,28 @@ struct SslideCriterion {
   std::string note;             ///< why a row failed to measure, or where a bound comes from
 };
 
-/// Evaluates every criterion of every pairing. A channel that is missing fails the rows that need
-/// it (measured = NaN, note names the channel); nothing is skipped silently.
+/// Evaluates every criterion of every pairing. A channel that is missing, a window with no record
+/// and a NaN record fail the rows that need them (measured = NaN, the note says why); nothing is
+/// skipped silently.
 std::vector<SslideCriterion> evaluate_sslide_criteria(const SslideProblem& problem,
                                                       const SslideHistories& histories,
                                                       const Dyna3dReported& reported);
+
+/// Slope dy/dx (current coordinates, output record r) of the master segments of the monitor's row
+/// that the upper body covers by more than half at t = 0: the smallest and largest. Frictionless
+/// contact transmits force along the master normal, so -F_x / F_y lies in this range (sslide1k's
+/// tilt criterion). nullopt when a node channel of the row is missing or no segment qualifies.
+std::optional<std::pair<Real, Real>> sslide_master_slope_range(const SslidePairing& pairing,
+                                                                const SslideHistories& histories, std::size_t r);
+
+/// Whether the monitored slave node lies over the master row at record r (its current x within
+/// the row's current x extent); nullopt when a node channel is missing.
+std::optional<bool> sslide_monitor_over_master(const SslidePairing& pairing, const SslideHistories& histories,
+                                               std::size_t r);
+
+/// Channel of the Type 9 interface's normal traction at its first segment failure:
+/// (max, mean, max/mean) over the slave segments, zero until a segment fails (docs/output.md).
+std::string sslide_first_failure_channel(const SslidePairing& pairing);
 
 /// The relative displacement series of a pairing's monitor; empty when a node channel is missing.
 std::vector<Vec3> sslide_relative_displacement(const SslidePairing& pairing, const SslideHistories& histories);

@@ -87,5 +87,27 @@ TEST(LagrangeSolve, CachedSweepsMatchTheReferenceLoop) {
   }
 }
 
+/// The interface's master_force is what the solve added to master nodes: the change of their
+/// contact force, summed (not the slave forces negated), on both paths and through a withdrawal.
+TEST(LagrangeSolve, MasterAddedIsTheForceTheMasterNodesReceived) {
+  for (const bool cached : {false, true}) {
+    Plate p(6);
+    const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100};
+    LagrangeWorkspace ws;
+    ws.dx.assign(p.nodes.size(), Vec3::Zero());
+    ws.rows.reserve(p.cs.size());
+    Vec3 master_added = Vec3::Zero();
+    solve_forward_increment(p.cs, p.view(), t, {}, nullptr, cached ? &ws : nullptr, &master_added);
+    const Index nm = p.cs.front().slave;  // master nodes come first (Plate)
+    Vec3 on_masters = Vec3::Zero(), on_slaves = Vec3::Zero();
+    for (Index k = 0; k < static_cast<Index>(p.nodes.size()); ++k) (k < nm ? on_masters : on_slaves) += p.fc.get(k);
+    ASSERT_GT(on_slaves.norm(), 1.0) << cached;
+    EXPECT_LT((master_added - on_masters).norm(), 1e-12 * on_slaves.norm()) << cached;
+    EXPECT_LT((on_slaves + on_masters).norm(), 1e-12 * on_slaves.norm()) << cached;
+    withdraw_constraint_forces(p.cs, p.view(), t, nullptr, &master_added);
+    EXPECT_LT(master_added.norm(), 1e-12 * on_slaves.norm()) << cached;
+  }
+}
+
 }  // namespace
 }  // namespace slideline

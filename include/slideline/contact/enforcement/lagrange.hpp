@@ -101,6 +101,7 @@ struct Predictor {
   ConstraintView& view;
   Real dt_next, dt_avg;
   const RigidGroups* rigid = nullptr;
+  Vec3* master_added = nullptr;  ///< when set: sum of the forces added to master nodes
 
   Index group(Index i) const {
     return rigid && !rigid->group.empty() ? rigid->group[static_cast<std::size_t>(i)] : Index(-1);
@@ -133,8 +134,12 @@ struct Predictor {
   }
   void apply(const LagrangeConstraint& k, const Vec3& df) const {
     apply(k.slave, df);
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) apply(k.master[a], -k.shape[a] * df);
+    for (int a = 0; a < 4; ++a) {
+      if (k.shape[a] == 0.0) continue;
+      const Vec3 fm = -k.shape[a] * df;
+      apply(k.master[a], fm);
+      if (master_added) *master_added += fm;
+    }
   }
   /// Relative predicted increment of the slave against its master point (length).
   Vec3 relative_increment(const LagrangeConstraint& k) const {
@@ -196,9 +201,11 @@ inline Vec3 predicted_position(ConstraintView view, const StepTimes& times, cons
 
 /// Takes the forces lambda n + tau of `cs` out of `view` again (before the geometry of the
 /// constraints is changed and they are solved once more).
+/// `master_added`, when given, accumulates the forces added to (here: taken from) master nodes.
 inline void withdraw_constraint_forces(std::span<const LagrangeConstraint> cs, ConstraintView view,
-                                       const StepTimes& times, const RigidGroups* rigid = nullptr) {
-  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+                                       const StepTimes& times, const RigidGroups* rigid = nullptr,
+                                       Vec3* master_added = nullptr) {
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid, master_added};
   for (const auto& k : cs)
     if (k.lambda != 0.0 || k.tau.squaredNorm() > 0.0) p.apply(k, -(k.lambda * k.normal + k.tau));
 }
@@ -305,14 +312,16 @@ inline LagrangeSolveResult solve_cached(std::span<LagrangeConstraint> cs, const 
 /// forces of the nodes involved). On entry lambda and tau hold the warm start (0 for none); on
 /// exit the converged multipliers and `slip`. Returns the sweep count and the last correction.
 /// With a workspace (and no rigid groups) the sweeps run on cached data (detail::solve_cached):
-/// the same iteration, several times cheaper per sweep.
+/// the same iteration, several times cheaper per sweep. `master_added`, when given, accumulates
+/// every force added to a master node (the interface's master_force: what the masters received).
 inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint> cs, ConstraintView view,
                                                    const StepTimes& times, const LagrangeSolveOptions& opt = {},
                                                    const RigidGroups* rigid = nullptr,
-                                                   LagrangeWorkspace* workspace = nullptr) {
+                                                   LagrangeWorkspace* workspace = nullptr,
+                                                   Vec3* master_added = nullptr) {
   if (rigid)
     for (Vec3& f : rigid->force) f.setZero();
-  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid};
+  const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid, master_added};
   LagrangeSolveResult result;
   for (auto& k : cs) {
     if (!k.bilateral) k.lambda = std::max(k.lambda, Real(0));
