@@ -77,7 +77,6 @@ void TiebreakContact::initialize(const ContactContext& c) {
   delta_.assign(n, Vec3::Zero());
   track_.assign(n, -1);
   friction_force_.assign(n, Vec3::Zero());
-  tie_force_.assign(n, Vec3::Zero());
   for (std::size_t k = 0; k < n; ++k) track_[k] = links_[k].segment;
   friction_work_ = 0.0;
   slave_ = master_total_ = Vec3::Zero();
@@ -97,27 +96,31 @@ void TiebreakContact::initialize(const ContactContext& c) {
 }
 
 void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
-  Vec3 slave = Vec3::Zero();
+  Vec3 slave = Vec3::Zero(), master = Vec3::Zero();
   const std::size_t n = links_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const TiePoint& t = links_[k];
-    if (released_[k]) {
-      const Vec3 before = out.force.get(t.slave);
-      contact_after_failure(k, nodes, times, out);
-      slave += out.force.get(t.slave) - before;
-      continue;
+    // The failed share of the node's area is in contact (normal penalty and friction) with the
+    // same stiffness per unit area as the tie: the normal force is continuous through a failure.
+    const Real contact_area = area0_[k] - area_[k];
+    if (contact_area > 0.0) {
+      const ContactPair f = contact_after_failure(k, kappa_[k] * contact_area, nodes, times, out);
+      slave += f.slave, master += f.master;
     }
+    if (released_[k]) continue;
     const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
     delta_[k] = d;
     const Vec3 f = -(kappa_[k] * area_[k]) * d;
-    tie_force_[k] = f;
     out.force.add(t.slave, f);
     for (int a = 0; a < 4; ++a)
-      if (t.shape[a] != 0.0) out.force.add(t.master[a], -t.shape[a] * f);
+      if (t.shape[a] != 0.0) {
+        out.force.add(t.master[a], -t.shape[a] * f);
+        master -= t.shape[a] * f;
+      }
     slave += f;
   }
   slave_ = slave;
-  master_total_ = -slave;  // every slave force is spread with shape functions that sum to 1
+  master_total_ = master;
 
   // Failure checks on this cycle's forces (effective from the next cycle).
   if (p_.unit == TiebreakParameters::FailureUnit::node) {
@@ -126,7 +129,7 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
       const Vec3 f = -(kappa_[k] * area_[k]) * delta_[k];
       const Vec3 nk = oriented_normal(k, nodes.x);
       if (failure_index(f, nk, p_.normal_failure, p_.shear_failure, p_.normal_exponent, p_.shear_exponent) >= 1.0)
-        release(k, nk);
+        hand_over(k, area_[k], nk);
     }
     return;
   }
@@ -150,26 +153,27 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     for (int q = 0; q < 4; ++q) {
       const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
       if (l < 0) continue;
-      area_[l] -= segment_share_[j];
-      if (area_[l] <= 1e-12 * area0_[l]) {
-        area_[l] = 0.0;
-        release(static_cast<std::size_t>(l), oriented_normal(static_cast<std::size_t>(l), nodes.x));
-      }
+      const auto k = static_cast<std::size_t>(l);
+      hand_over(k, segment_share_[j], oriented_normal(k, nodes.x));
     }
   }
 }
 
-void TiebreakContact::release(std::size_t k, const Vec3& n) {
-  released_[k] = 1;
-  // The friction stick force starts from the tie's last tangential force (the return map of the
-  // next cycle caps it at mu N): the shear the tie carried is handed over instead of dropping to
-  // zero and being rebuilt, which would jolt the bodies at the failure.
-  const Vec3 f = tie_force_[k];
-  friction_force_[k] = f - f.dot(n) * n;
+void TiebreakContact::hand_over(std::size_t k, Real share, const Vec3& n) {
+  // The friction stick force of the contact share starts from the tie's last tangential force on
+  // that share (the return map of the next cycle caps it at mu N): the shear the tie carried is
+  // handed over instead of dropping to zero and being rebuilt, which would jolt the bodies.
+  const Vec3 f = -(kappa_[k] * share) * delta_[k];
+  friction_force_[k] += f - f.dot(n) * n;
+  area_[k] -= share;
+  if (area_[k] <= 1e-12 * area0_[k]) {
+    area_[k] = 0.0;
+    released_[k] = 1;
+  }
 }
 
-void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times,
-                                            ContactForceView out) {
+TiebreakContact::ContactPair TiebreakContact::contact_after_failure(std::size_t k, Real kk, const NodalFields& nodes,
+                                                                   const StepTimes& times, ContactForceView out) {
   const TiePoint& t = links_[k];
   const Vec3 p = nodes.x.get(t.slave);
   // Track the segment: stay on the current one while the point projects inside it, else take the
@@ -188,11 +192,9 @@ void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& no
   const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
   const Real side = side_[k];
   const Real gap = side * best.gap - side * t.gap;  // penetration past the tie-time stand-off
-  // The tie spring's stiffness at tie time: continuous through the release (no kick).
-  const Real kk = kappa_[k] * area0_[k];
-  if (gap >= 0.0 || tangential > 1e-3 * best.size) {
+  if (gap >= 0.0 || tangential > 1e-3 * best.size || !(kk > 0.0)) {
     friction_force_[k] = Vec3::Zero();
-    return;
+    return {};
   }
   const Vec3 n = side * best.normal;
   const Real fn = -kk * gap;  // > 0, pushes the slave out along n
@@ -206,8 +208,13 @@ void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& no
   friction_force_[k] = r.force;
   const Vec3 f = fn * n + r.force;
   out.force.add(t.slave, f);
+  ContactPair sum{f, Vec3::Zero()};
   for (int a = 0; a < 4; ++a)
-    if (best.shape[a] != 0.0) out.force.add(m[a], -best.shape[a] * f);
+    if (best.shape[a] != 0.0) {
+      out.force.add(m[a], -best.shape[a] * f);
+      sum.master -= best.shape[a] * f;
+    }
+  return sum;
 }
 
 }  // namespace slideline

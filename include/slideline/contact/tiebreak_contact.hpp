@@ -23,13 +23,20 @@
 ///   Type 8 (per node):    (F_n / NFLF)^NEN + (F_s / SFLF)^MES >= 1
 ///   Type 9 (per segment): (F_n / (NFLF A_j))^2 + (F_s / (SFLF A_j))^2 >= 1
 /// A zero or negative failure force or stress disables its term. Failure is permanent; it takes
-/// effect from the next cycle. A Type 9 node is released when all of its slave segments failed.
+/// effect from the next cycle.
 ///
-/// After failure a node is in penalty node-on-segment contact with the master surface, with
-/// exponential Coulomb friction (Type 8 then behaves as Type 5, Type 9 as Type 3): the node tracks
-/// its segment through the master's edge neighbours, pushes out along the normal when it
-/// penetrates the surface through its tie point (gap below the tie-time gap) with the tie spring's
-/// stiffness, and carries a stick spring in the tangent plane capped at mu N.
+/// Hand-over: a failed segment's share of each corner's area leaves the tie and enters penalty
+/// node-on-segment contact with exponential Coulomb friction (Type 8 then behaves as Type 5,
+/// Type 9 as Type 3), with the same stiffness per unit area (kappa x the failed share). So a Type 9
+/// node with some of its segments failed is tied on the rest of its area and in contact on the
+/// failed part: in compression the normal force kappa (tied + failed area) x gap does not jump
+/// when a segment fails, and the failed area keeps carrying friction (mu N of its share) instead of
+/// nothing. The tie's tangential force on the failed share starts the contact's friction stick
+/// force (capped at mu N by the next cycle's return map). A node is released (tie gone) when all
+/// of its slave segments failed. The contact tracks the node's segment through the master's edge
+/// neighbours, pushes out along the normal when the node penetrates the surface through its tie
+/// point (gap below the tie-time gap) and carries a stick spring in the tangent plane.
+/// master_force() is the sum of the forces added to master nodes (tie and contact).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -79,7 +86,7 @@ class TiebreakContact final : public ContactAlgorithm {
   /// Slave nodes tied at initialize (each with its master point).
   const std::vector<TiePoint>& links() const { return links_; }
   const std::vector<Index>& untied_nodes() const { return untied_nodes_; }
-  /// Per link: 1 once the node is released from its tie.
+  /// Per link: 1 once the node is released from its tie (all of its area in contact).
   const std::vector<std::uint8_t>& released() const { return released_; }
   /// Per slave segment (Type 9): 1 once it failed.
   const std::vector<std::uint8_t>& failed_segments() const { return segment_failed_; }
@@ -100,8 +107,16 @@ class TiebreakContact final : public ContactAlgorithm {
   Vec3 oriented_normal(std::size_t k, const Vec3Field& x) const {
     return side_[k] * segment_normal(master_, links_[k].segment, x);
   }
-  void release(std::size_t k, const Vec3& n);
-  void contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times, ContactForceView out);
+  /// The forces one call added on the slave node and (summed) on the master nodes.
+  struct ContactPair {
+    Vec3 slave = Vec3::Zero(), master = Vec3::Zero();
+  };
+  /// Moves `share` of link k's area from the tie to the contact, handing its tangential force
+  /// over to the friction stick force; releases the node when no tied area is left.
+  void hand_over(std::size_t k, Real share, const Vec3& n);
+  /// Penalty contact with friction of link k's failed share (stiffness kk).
+  ContactPair contact_after_failure(std::size_t k, Real kk, const NodalFields& nodes, const StepTimes& times,
+                                    ContactForceView out);
 
   std::string name_;
   std::vector<Index> candidates_;
@@ -120,9 +135,8 @@ class TiebreakContact final : public ContactAlgorithm {
   std::vector<Real> segment_share_;  ///< per slave segment: area per corner (A/4, A/3 on triangles)
   std::vector<std::uint8_t> segment_failed_;
   std::vector<Vec3> segment_force_;
-  std::vector<Index> track_;         ///< per link: master segment tracked after release
-  std::vector<Vec3> friction_force_; ///< per link: tangential force after release (history)
-  std::vector<Vec3> tie_force_;      ///< per link: the tie's force on the slave at the last cycle
+  std::vector<Index> track_;         ///< per link: master segment tracked by the contact share
+  std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
