@@ -17,6 +17,19 @@ Real stiffness_per_area(const Surface& master, Index s, const ContactContext& c,
   return d.element_volume > 0.0 ? factor * d.bulk_modulus * d.face_area / d.element_volume : 0.0;
 }
 
+/// In compression: the total of the penalty node springs kappa A_master that the contact taking
+/// over (Type 3 / 5) gives these slave nodes, over their tie springs' total kappa x area (1 for
+/// Type 8, whose area is A_master; never below 1).
+Real compression_factor(const std::vector<TiePoint>& links, const std::vector<Real>& kappa,
+                        const std::vector<Real>& area, const Surface& master, const Vec3Field& x) {
+  Real springs = 0.0, tied = 0.0;
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    springs += kappa[k] * segment_area(master, links[k].segment, x);
+    tied += kappa[k] * area[k];
+  }
+  return tied > 0.0 ? std::max(1.0, springs / tied) : 1.0;
+}
+
 }  // namespace
 
 void TiebreakContact::initialize(const ContactContext& c) {
@@ -73,6 +86,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
     else if (slave_side[k].squaredNorm() > 0.0) side_[k] = slave_side[k].dot(t.normal) > 0.0 ? -1.0 : 1.0;
   }
   area0_ = area_;
+  compression_ = compression_factor(links_, kappa_, area_, master_, nodes.x);
   released_.assign(n, 0);
   delta_.assign(n, Vec3::Zero());
   track_.assign(n, -1);
@@ -83,7 +97,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
   dt_ = std::numeric_limits<Real>::max();
   for (std::size_t k = 0; k < n; ++k) {
-    const Real kk = kappa_[k] * area_[k];
+    const Real kk = compression_ * kappa_[k] * area_[k];
     if (!(kk > 0.0)) continue;
     Real mm = std::numeric_limits<Real>::max();
     for (int a = 0; a < 4; ++a)
@@ -101,16 +115,22 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
   for (std::size_t k = 0; k < n; ++k) {
     const TiePoint& t = links_[k];
     // The failed share of the node's area is in contact (normal penalty and friction) with the
-    // same stiffness per unit area as the tie: the normal force is continuous through a failure.
+    // same stiffnesses per unit area as the tie: the normal force is continuous through a failure.
     const Real contact_area = area0_[k] - area_[k];
     if (contact_area > 0.0) {
-      const ContactPair f = contact_after_failure(k, kappa_[k] * contact_area, nodes, times, out);
+      const Real kk = kappa_[k] * contact_area;
+      const ContactPair f = contact_after_failure(k, compression_ * kk, kk, nodes, times, out);
       slave += f.slave, master += f.master;
     }
     if (released_[k]) continue;
     const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
     delta_[k] = d;
-    const Vec3 f = -(kappa_[k] * area_[k]) * d;
+    Vec3 f = -(kappa_[k] * area_[k]) * d;
+    if (compression_ > 1.0) {  // the normal part pushes compression_ times stiffer in compression
+      const Vec3 nk = oriented_normal(k, nodes.x);
+      const Real dn = d.dot(nk);
+      if (dn < 0.0) f -= ((compression_ - 1.0) * kappa_[k] * area_[k] * dn) * nk;
+    }
     out.force.add(t.slave, f);
     for (int a = 0; a < 4; ++a)
       if (t.shape[a] != 0.0) {
@@ -172,8 +192,9 @@ void TiebreakContact::hand_over(std::size_t k, Real share, const Vec3& n) {
   }
 }
 
-TiebreakContact::ContactPair TiebreakContact::contact_after_failure(std::size_t k, Real kk, const NodalFields& nodes,
-                                                                   const StepTimes& times, ContactForceView out) {
+TiebreakContact::ContactPair TiebreakContact::contact_after_failure(std::size_t k, Real kn, Real kk,
+                                                                   const NodalFields& nodes, const StepTimes& times,
+                                                                   ContactForceView out) {
   const TiePoint& t = links_[k];
   const Vec3 p = nodes.x.get(t.slave);
   // Track the segment: stay on the current one while the point projects inside it, else take the
@@ -197,7 +218,7 @@ TiebreakContact::ContactPair TiebreakContact::contact_after_failure(std::size_t 
     return {};
   }
   const Vec3 n = side * best.normal;
-  const Real fn = -kk * gap;  // > 0, pushes the slave out along n
+  const Real fn = -kn * gap;  // > 0, pushes the slave out along n
   const Index* m = &master_.conn[4 * static_cast<std::size_t>(best_s)];
   Vec3 vm = Vec3::Zero();
   for (int a = 0; a < 4; ++a) vm += best.shape[a] * nodes.v.get(m[a]);

@@ -17,6 +17,12 @@
 ///   same stress (DYNA3D uses the master segment stiffness for every node, which puts 21 % too much
 ///   force on corner nodes at factor 10, report 6.8.1). The force of segment j is the sum of its
 ///   corners' shares -kappa_s (A_j / 4) delta_s.
+/// Compression: the normal part of the spring pushes c times stiffer when the slave is pressed
+///   into the master, c = sum over the links of kappa A_master / sum of kappa x tributary area
+///   (>= 1): the total stiffness of the penalty node springs of the contact that takes over after
+///   failure (Type 3 / 5, kappa A_master per slave node, DYNA3D's rule), spread by tributary area so
+///   that a uniform pressure still needs a uniform gap. c = 1 for Type 8 (its spring is already
+///   kappa A_master); 4.1 on sslide9ps (16 slave nodes on master faces of 0.257, unit area).
 ///
 /// Failure: F_n = tensile normal part (0 in compression: a compressed tie does not fail in
 /// tension), F_s = |tangential part|, with n the master normal oriented towards the slave side.
@@ -27,9 +33,10 @@
 ///
 /// Hand-over: a failed segment's share of each corner's area leaves the tie and enters penalty
 /// node-on-segment contact with exponential Coulomb friction (Type 8 then behaves as Type 5,
-/// Type 9 as Type 3), with the same stiffness per unit area (kappa x the failed share). So a Type 9
+/// Type 9 as Type 3), with the same stiffnesses per unit area (normal c kappa, stick kappa, times
+/// the failed share). So a Type 9
 /// node with some of its segments failed is tied on the rest of its area and in contact on the
-/// failed part: in compression the normal force kappa (tied + failed area) x gap does not jump
+/// failed part: in compression the normal force c kappa (tied + failed area) x gap does not jump
 /// when a segment fails, and the failed area keeps carrying friction (mu N of its share) instead of
 /// nothing. The tie's tangential force on the failed share starts the contact's friction stick
 /// force (capped at mu N by the next cycle's return map). A node is released (tie gone) when all
@@ -114,8 +121,8 @@ class TiebreakContact final : public ContactAlgorithm {
   /// Moves `share` of link k's area from the tie to the contact, handing its tangential force
   /// over to the friction stick force; releases the node when no tied area is left.
   void hand_over(std::size_t k, Real share, const Vec3& n);
-  /// Penalty contact with friction of link k's failed share (stiffness kk).
-  ContactPair contact_after_failure(std::size_t k, Real kk, const NodalFields& nodes, const StepTimes& times,
+  /// Penalty contact with friction of link k's failed share (normal stiffness kn, stick kk).
+  ContactPair contact_after_failure(std::size_t k, Real kn, Real kk, const NodalFields& nodes, const StepTimes& times,
                                     ContactForceView out);
 
   std::string name_;
@@ -137,6 +144,7 @@ class TiebreakContact final : public ContactAlgorithm {
   std::vector<Vec3> segment_force_;
   std::vector<Index> track_;         ///< per link: master segment tracked by the contact share
   std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
+  Real compression_ = 1.0;           ///< normal stiffness in compression / kappa x area (>= 1)
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
