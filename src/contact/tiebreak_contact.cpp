@@ -17,6 +17,19 @@ Real stiffness_per_area(const Surface& master, Index s, const ContactContext& c,
   return d.element_volume > 0.0 ? factor * d.bulk_modulus * d.face_area / d.element_volume : 0.0;
 }
 
+/// In compression: the total of the penalty node springs kappa A_master that the contact taking
+/// over (Type 3 / 5) gives these slave nodes, over their tie springs' total kappa x area (1 for
+/// Type 8, whose area is A_master; never below 1).
+Real compression_factor(const std::vector<TiePoint>& links, const std::vector<Real>& kappa,
+                        const std::vector<Real>& area, const Surface& master, const Vec3Field& x) {
+  Real springs = 0.0, tied = 0.0;
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    springs += kappa[k] * segment_area(master, links[k].segment, x);
+    tied += kappa[k] * area[k];
+  }
+  return tied > 0.0 ? std::max(1.0, springs / tied) : 1.0;
+}
+
 }  // namespace
 
 void TiebreakContact::initialize(const ContactContext& c) {
@@ -73,18 +86,18 @@ void TiebreakContact::initialize(const ContactContext& c) {
     else if (slave_side[k].squaredNorm() > 0.0) side_[k] = slave_side[k].dot(t.normal) > 0.0 ? -1.0 : 1.0;
   }
   area0_ = area_;
+  compression_ = compression_factor(links_, kappa_, area_, master_, nodes.x);
   released_.assign(n, 0);
   delta_.assign(n, Vec3::Zero());
   track_.assign(n, -1);
   friction_force_.assign(n, Vec3::Zero());
-  tie_force_.assign(n, Vec3::Zero());
   for (std::size_t k = 0; k < n; ++k) track_[k] = links_[k].segment;
   friction_work_ = 0.0;
   slave_ = master_total_ = first_failure_stress_ = Vec3::Zero();
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
   dt_ = std::numeric_limits<Real>::max();
   for (std::size_t k = 0; k < n; ++k) {
-    const Real kk = kappa_[k] * area_[k];
+    const Real kk = compression_ * kappa_[k] * area_[k];
     if (!(kk > 0.0)) continue;
     Real mm = std::numeric_limits<Real>::max();
     for (int a = 0; a < 4; ++a)
@@ -102,16 +115,22 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
   const std::size_t n = links_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const TiePoint& t = links_[k];
-    if (released_[k]) {
-      const Vec3 before = out.force.get(t.slave);
-      contact_after_failure(k, nodes, times, out);
-      slave += out.force.get(t.slave) - before;
-      continue;
+    // The failed share of the node's area is in contact (normal penalty and friction) with the
+    // same stiffnesses per unit area as the tie: the normal force is continuous through a failure.
+    const Real contact_area = area0_[k] - area_[k];
+    if (contact_area > 0.0) {
+      const Real kk = kappa_[k] * contact_area;
+      slave += contact_after_failure(k, compression_ * kk, kk, nodes, times, out);
     }
+    if (released_[k]) continue;
     const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
     delta_[k] = d;
-    const Vec3 f = -(kappa_[k] * area_[k]) * d;
-    tie_force_[k] = f;
+    Vec3 f = -(kappa_[k] * area_[k]) * d;
+    if (compression_ > 1.0) {  // the normal part pushes compression_ times stiffer in compression
+      const Vec3 nk = oriented_normal(k, nodes.x);
+      const Real dn = d.dot(nk);
+      if (dn < 0.0) f -= ((compression_ - 1.0) * kappa_[k] * area_[k] * dn) * nk;
+    }
     out.force.add(t.slave, f);
     for (int a = 0; a < 4; ++a)
       if (t.shape[a] != 0.0) add_to_master(out, t.master[a], -t.shape[a] * f);
@@ -126,7 +145,7 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
       const Vec3 f = -(kappa_[k] * area_[k]) * delta_[k];
       const Vec3 nk = oriented_normal(k, nodes.x);
       if (failure_index(f, nk, p_.normal_failure, p_.shear_failure, p_.normal_exponent, p_.shear_exponent) >= 1.0)
-        release(k, nk);
+        hand_over(k, area_[k], nk);
     }
     return;
   }
@@ -146,11 +165,8 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     for (int q = 0; q < 4; ++q) {
       const Index l = segment_links_[4 * static_cast<std::size_t>(j) + q];
       if (l < 0) continue;
-      area_[l] -= segment_share_[j];
-      if (area_[l] <= 1e-12 * area0_[l]) {
-        area_[l] = 0.0;
-        release(static_cast<std::size_t>(l), oriented_normal(static_cast<std::size_t>(l), nodes.x));
-      }
+      const auto k = static_cast<std::size_t>(l);
+      hand_over(k, segment_share_[j], oriented_normal(k, nodes.x));
     }
   }
 }
@@ -181,17 +197,21 @@ void TiebreakContact::record_first_failure_stress(const Vec3Field& x) {
   first_failure_stress_ = {largest, mean, mean > 0.0 ? largest / mean : 0.0};
 }
 
-void TiebreakContact::release(std::size_t k, const Vec3& n) {
-  released_[k] = 1;
-  // The friction stick force starts from the tie's last tangential force (the return map of the
-  // next cycle caps it at mu N): the shear the tie carried is handed over instead of dropping to
-  // zero and being rebuilt, which would jolt the bodies at the failure.
-  const Vec3 f = tie_force_[k];
-  friction_force_[k] = f - f.dot(n) * n;
+void TiebreakContact::hand_over(std::size_t k, Real share, const Vec3& n) {
+  // The friction stick force of the contact share starts from the tie's last tangential force on
+  // that share (the return map of the next cycle caps it at mu N): the shear the tie carried is
+  // handed over instead of dropping to zero and being rebuilt, which would jolt the bodies.
+  const Vec3 f = -(kappa_[k] * share) * delta_[k];
+  friction_force_[k] += f - f.dot(n) * n;
+  area_[k] -= share;
+  if (area_[k] <= 1e-12 * area0_[k]) {
+    area_[k] = 0.0;
+    released_[k] = 1;
+  }
 }
 
-void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times,
-                                            ContactForceView out) {
+Vec3 TiebreakContact::contact_after_failure(std::size_t k, Real kn, Real kk, const NodalFields& nodes,
+                                           const StepTimes& times, ContactForceView out) {
   const TiePoint& t = links_[k];
   const Vec3 p = nodes.x.get(t.slave);
   // Track the segment: stay on the current one while the point projects inside it, else take the
@@ -210,14 +230,12 @@ void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& no
   const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
   const Real side = side_[k];
   const Real gap = side * best.gap - side * t.gap;  // penetration past the tie-time stand-off
-  // The tie spring's stiffness at tie time: continuous through the release (no kick).
-  const Real kk = kappa_[k] * area0_[k];
-  if (gap >= 0.0 || tangential > 1e-3 * best.size) {
+  if (gap >= 0.0 || tangential > 1e-3 * best.size || !(kk > 0.0)) {
     friction_force_[k] = Vec3::Zero();
-    return;
+    return Vec3::Zero();
   }
   const Vec3 n = side * best.normal;
-  const Real fn = -kk * gap;  // > 0, pushes the slave out along n
+  const Real fn = -kn * gap;  // > 0, pushes the slave out along n
   const Index* m = &master_.conn[4 * static_cast<std::size_t>(best_s)];
   Vec3 vm = Vec3::Zero();
   for (int a = 0; a < 4; ++a) vm += best.shape[a] * nodes.v.get(m[a]);
@@ -230,6 +248,7 @@ void TiebreakContact::contact_after_failure(std::size_t k, const NodalFields& no
   out.force.add(t.slave, f);
   for (int a = 0; a < 4; ++a)
     if (best.shape[a] != 0.0) add_to_master(out, m[a], -best.shape[a] * f);
+  return f;
 }
 
 }  // namespace slideline

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace slideline::scenarios {
 
@@ -98,6 +99,7 @@ class PairingEvaluator {
 
   void evaluate() {
     if (pr_.type != model::ContactType::automatic) balance();
+    if (pr_.idealization != Ideal::tied && pr_.idealization != Ideal::tension_failure) edge();
     switch (pr_.idealization) {
       case Ideal::frictionless:
         normal();
@@ -137,6 +139,7 @@ class PairingEvaluator {
   void add(std::string criterion, Real measured, std::string bound, bool pass, std::optional<Real> dyna = {},
            std::string note = {}) {
     if (std::isnan(measured)) pass = false;
+    if (!cut_note_.empty()) note += (note.empty() ? "" : "; ") + std::exchange(cut_note_, {});
     rows_.push_back({pr_.name, p_.name, std::move(criterion), measured, std::move(bound), dyna, pass, std::move(note)});
   }
   void unmeasured(std::string criterion, std::string bound, std::string note, std::optional<Real> dyna = {}) {
@@ -144,9 +147,16 @@ class PairingEvaluator {
   }
 
   /// The statistics of x over [t0, t1], or a failing row naming why they cannot be judged (a
-  /// missing channel, no record in the window, a NaN record).
+  /// missing channel, no record in the window, a NaN record). A window that reaches past the time
+  /// the upper body's leading edge passes the lower block's edge ends before it (the row's note
+  /// says so).
   std::optional<Peak> stats(const std::string& name, const std::string& bound, const std::vector<Real>& x,
                             char which, Real t0, Real t1, std::optional<Real> dyna = {}) {
+    cut_note_.clear();
+    if (t1 >= t_edge_ - kEps) {
+      t1 = t_edge_ - 2 * kEps;
+      cut_note_ = fmt::format("leading edge passes the lower block's edge at t = {:.4g}: judged before it", t_edge_);
+    }
     const bool recorded = which == 'F' ? force_ != nullptr : which == 'R' ? has_reaction_ : has_rel_;
     if (!recorded) {
       unmeasured(name, bound, missing(which), dyna);
@@ -283,6 +293,16 @@ class PairingEvaluator {
         d_.figure(pr_.name, "failure_time", p_.name));
   }
 
+  /// The time the sliding body's leading edge passes the lower block's edge (issue 17: the rows
+  /// are judged only up to it); a failing row when it cannot be told.
+  void edge() {
+    const SslideEdgeCrossing e = sslide_edge_crossing(p_, h_);
+    if (!e.recorded)
+      return unmeasured("leading edge seated", "recorded", "missing, short or NaN channel of the leading node " +
+                                                             std::to_string(p_.monitor.leading_node) + " or the row");
+    if (e.time) t_edge_ = *e.time;
+  }
+
   void tension_failure();
   void stress_ratio(Real peak);
   void tied();
@@ -301,6 +321,8 @@ class PairingEvaluator {
   bool has_reaction_ = false;
   std::vector<Vec3> rel_;
   bool has_rel_ = false;  // every node channel of the monitor is recorded
+  Real t_edge_ = kInf;    // the leading edge passes the lower block's edge (kInf: never)
+  std::string cut_note_;  // set by stats() when it shortened the window, taken by the next row
 };
 
 /// Types 8 and 9 in tension: the peak, when it comes, and nothing transmitted after the failure.
@@ -416,8 +438,9 @@ Real PairingEvaluator::interpenetration_bound(std::string& note) const {
   return *figure;
 }
 
-/// Most negative relative y of the monitor while its slave node is over the master surface (a
-/// block that slides past the lower block's edge is judged up to that time, which the note gives).
+/// Most negative relative y of the monitor while its slave node is over the master surface and the
+/// upper body's leading edge has not passed the lower block's edge (the note gives the time that
+/// ends the window).
 void PairingEvaluator::interpenetration() {
   const std::string name = "interpenetration max(-rel y)";
   const std::optional<Real> dyna = d_.figure(pr_.name, "interpenetration", p_.name);
@@ -430,6 +453,7 @@ void PairingEvaluator::interpenetration() {
     const auto over = sslide_monitor_over_master(p_, h_, r);
     if (!over) return unmeasured(name, b, missing('u'), dyna);
     if (!*over) {
+      if (h_.time[r] >= t_edge_ - kEps) break;  // the leading edge passed first: stats() ends there
       t_end = h_.time[r] - 2 * kEps;
       note += fmt::format("{}slave node leaves the master surface at t = {:.4g}: judged before it",
                           note.empty() ? "" : "; ", h_.time[r]);

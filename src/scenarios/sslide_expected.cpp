@@ -68,6 +68,7 @@ std::vector<std::string> sslide_channels(const SslideProblem& problem) {
     v.push_back(sslide_support_channel(p.bottom_support));
     v.push_back(sslide_support_channel(p.right_support));
     v.push_back(sslide_node_channel(p.monitor.slave_node));
+    v.push_back(sslide_node_channel(p.monitor.leading_node));
     for (Id n : p.monitor.master_nodes) v.push_back(sslide_node_channel(n));
     for (const auto& seg : p.monitor.path)
       for (Id n : seg.nodes) v.push_back(sslide_node_channel(n));
@@ -177,6 +178,28 @@ std::optional<bool> sslide_monitor_over_master(const SslidePairing& p, const Ssl
     for (const auto& c : seg) left = std::min(left, c.x()), right = std::max(right, c.x());
   const Real xs = p.monitor.slave_x0.x() + s->second[r].x();
   return xs >= left && xs <= right;
+}
+
+SslideEdgeCrossing sslide_edge_crossing(const SslidePairing& p, const SslideHistories& h) {
+  SslideEdgeCrossing e;
+  const auto lead = h.channels.find(sslide_node_channel(p.monitor.leading_node));
+  if (lead == h.channels.end()) return e;
+  std::vector<std::array<Vec3, 4>> x;
+  for (std::size_t r = 0; r < h.time.size(); ++r) {
+    if (r >= lead->second.size() || !current_row(p, h, r, x)) return e;
+    Real edge = -1e300;  // the +x end of the lower block's top face in the slave's row, now
+    for (const auto& seg : x)
+      for (const auto& c : seg) edge = std::max(edge, c.x());
+    const Real xl = p.monitor.leading_x0.x() + lead->second[r].x();
+    if (std::isnan(xl) || std::isnan(edge)) return e;  // unjudgeable: the rows that need it fail
+    if (xl > edge) {
+      e.recorded = true;
+      e.time = h.time[r];
+      return e;
+    }
+  }
+  e.recorded = true;
+  return e;
 }
 
 }  // namespace slideline::scenarios

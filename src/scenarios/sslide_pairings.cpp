@@ -140,7 +140,13 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
     }
     p.monitor.path.push_back(seg);
   }
+  // The leading edge: the contact node at the upper body's +x end in the slave's row (the edge
+  // plate's own x: it is its own leading edge).
+  p.monitor.leading_node = nearest_in_layer(upper, 0, xu + 1.0, p.monitor.slave_x0.z());
+  p.monitor.leading_x0 = Vec3(coordinate(m, p.monitor.leading_node, 0), coordinate(m, p.monitor.leading_node, 1),
+                              coordinate(m, p.monitor.leading_node, 2));
   m.database.history_nodes.push_back(slave);
+  if (p.monitor.leading_node != slave) m.database.history_nodes.push_back(p.monitor.leading_node);
   for (Id n : p.monitor.master_nodes) m.database.history_nodes.push_back(n);
   for (const auto& seg : p.monitor.path)
     for (Id n : seg.nodes)

@@ -17,19 +17,33 @@
 ///   same stress (DYNA3D uses the master segment stiffness for every node, which puts 21 % too much
 ///   force on corner nodes at factor 10, report 6.8.1). The force of segment j is the sum of its
 ///   corners' shares -kappa_s (A_j / 4) delta_s.
+/// Compression: the normal part of the spring pushes c times stiffer when the slave is pressed
+///   into the master, c = sum over the links of kappa A_master / sum of kappa x tributary area
+///   (>= 1): the total stiffness of the penalty node springs of the contact that takes over after
+///   failure (Type 3 / 5, kappa A_master per slave node, DYNA3D's rule), spread by tributary area so
+///   that a uniform pressure still needs a uniform gap. c = 1 for Type 8 (its spring is already
+///   kappa A_master); 4.1 on sslide9ps (16 slave nodes on master faces of 0.257, unit area).
 ///
 /// Failure: F_n = tensile normal part (0 in compression: a compressed tie does not fail in
 /// tension), F_s = |tangential part|, with n the master normal oriented towards the slave side.
 ///   Type 8 (per node):    (F_n / NFLF)^NEN + (F_s / SFLF)^MES >= 1
 ///   Type 9 (per segment): (F_n / (NFLF A_j))^2 + (F_s / (SFLF A_j))^2 >= 1
 /// A zero or negative failure force or stress disables its term. Failure is permanent; it takes
-/// effect from the next cycle. A Type 9 node is released when all of its slave segments failed.
+/// effect from the next cycle.
 ///
-/// After failure a node is in penalty node-on-segment contact with the master surface, with
-/// exponential Coulomb friction (Type 8 then behaves as Type 5, Type 9 as Type 3): the node tracks
-/// its segment through the master's edge neighbours, pushes out along the normal when it
-/// penetrates the surface through its tie point (gap below the tie-time gap) with the tie spring's
-/// stiffness, and carries a stick spring in the tangent plane capped at mu N.
+/// Hand-over: a failed segment's share of each corner's area leaves the tie and enters penalty
+/// node-on-segment contact with exponential Coulomb friction (Type 8 then behaves as Type 5,
+/// Type 9 as Type 3), with the same stiffnesses per unit area (normal c kappa, stick kappa, times
+/// the failed share). So a Type 9
+/// node with some of its segments failed is tied on the rest of its area and in contact on the
+/// failed part: in compression the normal force c kappa (tied + failed area) x gap does not jump
+/// when a segment fails, and the failed area keeps carrying friction (mu N of its share) instead of
+/// nothing. The tie's tangential force on the failed share starts the contact's friction stick
+/// force (capped at mu N by the next cycle's return map). A node is released (tie gone) when all
+/// of its slave segments failed. The contact tracks the node's segment through the master's edge
+/// neighbours, pushes out along the normal when the node penetrates the surface through its tie
+/// point (gap below the tie-time gap) and carries a stick spring in the tangent plane.
+/// master_force() is the sum of the forces added to master nodes (tie and contact).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -88,7 +102,7 @@ class TiebreakContact final : public ContactAlgorithm {
   /// Slave nodes tied at initialize (each with its master point).
   const std::vector<TiePoint>& links() const { return links_; }
   const std::vector<Index>& untied_nodes() const { return untied_nodes_; }
-  /// Per link: 1 once the node is released from its tie.
+  /// Per link: 1 once the node is released from its tie (all of its area in contact).
   const std::vector<std::uint8_t>& released() const { return released_; }
   /// Per slave segment (Type 9): 1 once it failed.
   const std::vector<std::uint8_t>& failed_segments() const { return segment_failed_; }
@@ -109,7 +123,6 @@ class TiebreakContact final : public ContactAlgorithm {
   Vec3 oriented_normal(std::size_t k, const Vec3Field& x) const {
     return side_[k] * segment_normal(master_, links_[k].segment, x);
   }
-  void release(std::size_t k, const Vec3& n);
   /// Adds f to master node i and to the master total (master_force: what the masters received).
   void add_to_master(ContactForceView out, Index i, const Vec3& f) {
     out.force.add(i, f);
@@ -118,7 +131,13 @@ class TiebreakContact final : public ContactAlgorithm {
   /// Type 9: the tie force on slave segment j (slave side) and the sum of its links' oriented normals.
   void segment_tie_force(Index j, const Vec3Field& x, Vec3& fj, Vec3& nj) const;
   void record_first_failure_stress(const Vec3Field& x);
-  void contact_after_failure(std::size_t k, const NodalFields& nodes, const StepTimes& times, ContactForceView out);
+  /// Moves `share` of link k's area from the tie to the contact, handing its tangential force
+  /// over to the friction stick force; releases the node when no tied area is left.
+  void hand_over(std::size_t k, Real share, const Vec3& n);
+  /// Penalty contact with friction of link k's failed share (normal stiffness kn, stick kk);
+  /// returns the force on the slave node (the master side goes through add_to_master).
+  Vec3 contact_after_failure(std::size_t k, Real kn, Real kk, const NodalFields& nodes, const StepTimes& times,
+                             ContactForceView out);
 
   std::string name_;
   std::vector<Index> candidates_;
@@ -137,9 +156,9 @@ class TiebreakContact final : public ContactAlgorithm {
   std::vector<Real> segment_share_;  ///< per slave segment: area per corner (A/4, A/3 on triangles)
   std::vector<std::uint8_t> segment_failed_;
   std::vector<Vec3> segment_force_;
-  std::vector<Index> track_;         ///< per link: master segment tracked after release
-  std::vector<Vec3> friction_force_; ///< per link: tangential force after release (history)
-  std::vector<Vec3> tie_force_;      ///< per link: the tie's force on the slave at the last cycle
+  std::vector<Index> track_;         ///< per link: master segment tracked by the contact share
+  std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
+  Real compression_ = 1.0;           ///< normal stiffness in compression / kappa x area (>= 1)
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();

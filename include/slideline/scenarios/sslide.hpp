@@ -48,6 +48,10 @@ struct SslideMonitor {
   std::array<Real, 4> weights{};     ///< N_k(xi, eta), summing to 1
   Vec3 slave_x0 = Vec3::Zero();      ///< the slave node's initial coordinates
   std::vector<SslideMonitorSegment> path;  ///< the master segments along the slave's path (+x)
+  /// The upper body's leading contact node (largest x, nearest the slave's z) and its initial
+  /// coordinates: the criteria judge sliding rows only until it passes the lower block's edge.
+  Id leading_node = 0;
+  Vec3 leading_x0 = Vec3::Zero();
 };
 
 /// One element pairing of a problem.

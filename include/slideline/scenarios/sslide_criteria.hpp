@@ -78,6 +78,17 @@ std::optional<std::pair<Real, Real>> sslide_master_slope_range(const SslidePairi
 std::optional<bool> sslide_monitor_over_master(const SslidePairing& pairing, const SslideHistories& histories,
                                                std::size_t r);
 
+/// When the upper body's leading edge (monitor.leading_node, its current x) first passes the
+/// +x end of the lower block's top face (the current x of the monitor's row): from then on the
+/// block is no longer seated on the interface the criteria judge (issue 17, sslide9ps).
+/// `recorded` is false when a channel it needs is missing, short or NaN; `time` is empty when the
+/// edge is never passed.
+struct SslideEdgeCrossing {
+  bool recorded = false;
+  std::optional<Real> time;
+};
+SslideEdgeCrossing sslide_edge_crossing(const SslidePairing& pairing, const SslideHistories& histories);
+
 /// Channel of the Type 9 interface's normal traction at its first segment failure:
 /// (max, mean, max/mean) over the slave segments, zero until a segment fails (docs/output.md).
 std::string sslide_first_failure_channel(const SslidePairing& pairing);

@@ -1,6 +1,7 @@
 // Penalty ties with failure (Types 8, 9): TiebreakContact on a block tied to a fixed block.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -111,6 +112,38 @@ TEST(TiebreakSurface, UniformTractionGivesTheSameStressOnEverySegment) {
   EXPECT_LT((hi - lo) / hi, 0.01);
   EXPECT_NEAR(total, g * TiebreakBlocks::kMass, 0.01 * g * TiebreakBlocks::kMass);
   EXPECT_NEAR(lo, g * TiebreakBlocks::kMass, 0.01 * g * TiebreakBlocks::kMass);
+}
+
+/// In compression a Type 9 tie pushes with the stiffness of the penalty contact that takes over
+/// after failure: the total of the node springs kappa A_master (16 slave nodes on master faces of
+/// 0.25: 16 x 166.7 x 0.25 = 666.7), spread by tributary area so that the gap stays uniform. The
+/// same in a rotated copy (every node and the load turned by R; the lower block is fixed in x, y, z).
+TEST(TiebreakSurface, CompressionUsesTheContactStiffnessSpreadByArea) {
+  const Real kappa = 0.1 * (1000.0 / 1.2) / 0.5;  // f K / h of the lower block's top elements
+  const Real expected = -1.5 / (16 * kappa * 0.25);
+  for (const Mat3 r : {Mat3(Mat3::Identity()), Mat3(Eigen::AngleAxis<Real>(0.7, Vec3(1, 2, 3).normalized()))}) {
+    TiebreakBlocks m(parameters(TiebreakParameters::FailureUnit::segment, 0.0, 0.0), 3);
+    for (std::size_t i = 0; i < m.sim.nodes.size(); ++i) {
+      m.sim.nodes.x0.set(static_cast<Index>(i), r * m.sim.nodes.x0.get(static_cast<Index>(i)));
+      m.sim.nodes.x.set(static_cast<Index>(i), r * m.sim.nodes.x.get(static_cast<Index>(i)));
+    }
+    const Vec3 up = r * Vec3(0, 1, 0), g = -5.0 * up;  // total 1.5 pressing the upper block down
+    for (int c = 0; c < 3; ++c) m.sim.body_loads.push_back(ramped_load(static_cast<Axis>(c), g[c], 2, 0.0, 0.3));
+    m.sim.controls.end_time = 2.0;
+    m.sim.initialize();
+    while (m.sim.step()) {
+    }
+    Real lo = 1e300, hi = -1e300;
+    for (Index n : m.upper.layer(0)) {
+      const Real gap = m.sim.nodes.x.get(n).dot(up) - 0.5;
+      lo = std::min(lo, gap), hi = std::max(hi, gap);
+    }
+    const Real fn = m.tie->slave_force().dot(up);
+    std::printf("type 9 compression: gap %.5e..%.5e vs %.5e, F_n %.5f\n", lo, hi, expected, fn);
+    EXPECT_NEAR(fn, 1.5, 0.01 * 1.5);
+    EXPECT_NEAR(lo, expected, 0.02 * std::abs(expected));
+    EXPECT_NEAR(hi, expected, 0.02 * std::abs(expected));
+  }
 }
 
 TEST(TiebreakSurface, FailsInTensionAtTheAnalyticalLoad) {
@@ -242,6 +275,70 @@ TEST(TiebreakSurface, ShellsKeepTheirThicknessOffsetAfterFailure) {
   EXPECT_NEAR(f[1], 3.0, 0.02 * 3.0);   // the compression carried by the contact
   EXPECT_NEAR(f[0], -1.2, 0.05 * 1.2);  // friction holds the mean shear load on [1.4, 1.6]
   EXPECT_LT(std::abs(slip), 0.005);     // stuck: mu N = 1.5 > 1.3
+}
+
+/// Progressive Type 9 failure (issue 17): a 1 x 1 x 1 block (3 x 2 x 3 hexahedra) pressed (3) onto
+/// the top of a deformable 1.5 x 0.5 x 1 block supported on its bottom (y, z) and its right face
+/// (x), then sheared in +x. Shear lag (the lower block's top shortens towards its support) loads the
+/// right column of segments most: it fails first, the rest later, so corner nodes are partly
+/// failed for a while. The failed share of a node is in contact with the same stiffness as the tie:
+/// the total normal force must not jump when segments fail (before the hand-over it dropped by the
+/// failed share until the node's last segment failed), and the failed area keeps carrying friction.
+TEST(TiebreakSurface, NormalForceIsContinuousThroughAProgressiveFailure) {
+  Simulation sim;
+  TieMesh mesh;
+  const TieBox lower = mesh.add_box({0, 0, 0}, {1.5, 0.5, 1}, 3, 1, 2);
+  const TieBox upper = mesh.add_box({0.02, 0.5, 0.01}, {1, 1, 0.98}, 3, 2, 3);
+  mesh.fill(sim.nodes);
+  sim.blocks.push_back(elastic_hexes(1, lower, 1.0, 1000.0, 0.1));
+  sim.blocks.push_back(elastic_hexes(2, upper, 1.0, 1000.0, 0.1));
+  TiebreakParameters p = parameters(TiebreakParameters::FailureUnit::segment, 1e4, 0.7);
+  p.penalty_factor = 1.0;
+  p.friction.mu_s = p.friction.mu_k = 0.2;
+  auto t = std::make_unique<TiebreakContact>("tiebreak", upper.layer(0), part_surface(sim, 2), part_surface(sim, 1), p);
+  TiebreakContact* tie = t.get();
+  sim.contacts.add(std::move(t));
+  sim.supports.push_back(tie_support("bottom", lower.layer(0), {0, 1, 1}));
+  std::vector<Index> right;
+  for (Index n : lower.all())
+    if (sim.nodes.x0.get(n)[0] > 1.5 - 1e-9) right.push_back(n);
+  sim.supports.push_back(tie_support("right", right, {1, 0, 0}));
+  MassDamping d;
+  d.alpha = 20.0;
+  sim.damping = {d};
+  sim.controls.dt_scale = 0.8;
+  const Real mass = 0.98;  // the upper block, rho = 1
+  sim.body_loads.push_back(ramped_load(Axis::y, -3.0 / mass, 2, 0.0, 0.5));
+  sim.body_loads.push_back(ramped_load(Axis::x, 1.0 / mass, 2, 1.0, 3.0));  // 1.0 at t = 3
+  sim.controls.end_time = 3.0;
+  sim.initialize();
+  Real first = -1.0, last = -1.0, fy_lo = 1e300, fy_hi = -1e300, balance = 0.0, fx_partial = 0.0;
+  while (sim.step()) {
+    const auto& failed = tie->failed_segments();
+    const auto& released = tie->released();
+    const long n_failed = std::count(failed.begin(), failed.end(), std::uint8_t{1});
+    const long n_released = std::count(released.begin(), released.end(), std::uint8_t{1});
+    const Vec3 f = tie->slave_force();
+    balance = std::max(balance, (f + tie->master_force()).norm() / std::max(f.norm(), 1e-30));
+    const long n_tied = static_cast<long>(failed.size()) - 9;  // segments off the interface never tie
+    if (n_failed > n_tied && first < 0.0) first = sim.time();
+    if (first >= 0.0 && n_released < static_cast<long>(released.size())) {
+      fy_lo = std::min(fy_lo, f[1]), fy_hi = std::max(fy_hi, f[1]);
+      fx_partial = std::max(fx_partial, -f[0]);
+    }
+    if (n_released == static_cast<long>(released.size()) && last < 0.0) last = sim.time();
+  }
+  std::printf("type 9 progressive: first failure t %.4f, all released t %.4f, F_y during failure %.4f..%.4f, "
+              "peak -F_x %.4f, balance %.1e\n",
+              first, last, fy_lo, fy_hi, fx_partial, balance);
+  ASSERT_GT(first, 1.0);
+  ASSERT_GT(last, first + 0.02);  // progressive: the failure spreads over many cycles
+  EXPECT_NEAR(fy_lo, 3.0, 0.02 * 3.0);
+  EXPECT_NEAR(fy_hi, 3.0, 0.02 * 3.0);
+  // The failed area keeps its friction, so the interface still reaches the failure load tau A
+  // (0.559, 19 % short, when a failed share carried nothing until its node was released).
+  EXPECT_NEAR(fx_partial, 0.7 * mass, 0.03 * 0.7 * mass);
+  EXPECT_LT(balance, 1e-12);  // master force: the sum of what was added to the master nodes
 }
 
 }  // namespace

@@ -187,6 +187,12 @@ TEST(Sslide, GeometryOfEveryPairing) {
       }
       EXPECT_TRUE(holds_start);
       EXPECT_GE(mon.path.back().x0[2].x(), mon.slave_x0.x() + 0.45);
+      // The leading edge: a recorded contact node at the upper body's largest x, in the slave's z.
+      EXPECT_NE(std::find(hist.begin(), hist.end(), mon.leading_node), hist.end());
+      EXPECT_EQ((mon.leading_x0 - x.at(mon.leading_node)).norm(), 0.0);
+      EXPECT_EQ(mon.leading_x0.x(), xhi);
+      EXPECT_EQ(mon.leading_x0.y(), ymin);
+      EXPECT_EQ(mon.leading_x0.z(), mon.slave_x0.z());
       // Named contact and supports.
       const auto c = std::find_if(p.model.contacts.begin(), p.model.contacts.end(),
                                   [&](const model::Contact& cc) { return cc.title == pr.name; });

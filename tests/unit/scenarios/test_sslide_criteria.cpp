@@ -86,6 +86,8 @@ History synthesise(const SslideProblem& pr, const Perturbation& dp = {}) {
         if (!row.count(n)) put(sslide_node_channel(n), common);
       put(sslide_node_channel(p.monitor.slave_node),
           common + rel + Vec3(0, face(p.monitor.slave_x0.x() + common.x() + rel.x()), 0));
+      if (p.monitor.leading_node != p.monitor.slave_node)  // the upper body moves as one
+        put(sslide_node_channel(p.monitor.leading_node), common + rel);
       if (pr.type == model::ContactType::tiebreak_surface && t >= pr.failure_time)
         // The last record before the closed form drops is 8.9 (t = 0.089): a mean traction of 8.9
         // when the most loaded segment reaches 9.0.
@@ -255,8 +257,8 @@ TEST(SslideCriteria, TypeEightFailureTimeIsTheFirstRecordNearThePeak) {
 
 TEST(SslideCriteria, InterpenetrationIsJudgedWhileTheNodeIsOverTheMaster) {
   const auto pr = make_sslide_problem("sslide9ps");
-  // The block slides 2.0 past the lower block's end from t = 0.45 and then sinks 0.01: judged up to
-  // the time it leaves, with the time in the note.
+  // The block jumps 2.0 past the lower block's end at t = 0.45 and sinks 0.01: judged up to the
+  // time its leading edge passes the end, with the time in the note.
   const auto rows = evaluate(pr, {.relative = [](Real t, Vec3& u) {
                                     if (t >= 0.45) u.x() = 2.0, u.y() = -0.01;
                                   }});
@@ -264,12 +266,66 @@ TEST(SslideCriteria, InterpenetrationIsJudgedWhileTheNodeIsOverTheMaster) {
   for (const auto& r : rows)
     if (r.criterion.rfind("interpenetration", 0) == 0) {
       EXPECT_TRUE(r.pass) << r.measured;
-      EXPECT_NE(r.note.find("leaves the master surface at t = 0.45"), std::string::npos) << r.note;
+      EXPECT_NE(r.note.find("passes the lower block's edge at t = 0.45"), std::string::npos) << r.note;
       seen = true;
     }
   EXPECT_TRUE(seen);
   EXPECT_TRUE(failed(evaluate(pr, {.relative = [](Real t, Vec3& u) { if (t >= 0.45) u.y() = -0.01; }}),
                      "interpenetration"));
+}
+
+/// Slides at 5 per unit time from t = 0.4: the leading edge (x0 + 1.03 from the lower block's left
+/// end, which is 1.51 long) passes the end when the slide exceeds 0.48, at the record t = 0.497.
+void slide_off_at_0497(Real t, Vec3& u) {
+  if (t > 0.4) u.x() = 5.0 * (t - 0.4);
+}
+
+TEST(SslideCriteria, EdgeCrossingIsWhenTheLeadingNodePassesTheLowerBlocksEnd) {
+  const auto pr = make_sslide_problem("sslide9ps");
+  const auto h = sslide_histories(synthesise(pr, {.relative = slide_off_at_0497}), pr);
+  for (const auto& p : pr.pairings) {
+    const auto e = sslide_edge_crossing(p, h);
+    EXPECT_TRUE(e.recorded);
+    ASSERT_TRUE(e.time.has_value());
+    EXPECT_NEAR(*e.time, 0.497, 1e-12);
+    // The monitored (centre) node is still 0.5 inside at that time: the leading node, not the
+    // monitor, tells when the body leaves its seat.
+    EXPECT_TRUE(*sslide_monitor_over_master(p, h, 497));
+  }
+  // The closed form slides 6e-3 by t = 0.5: never passes.
+  const auto h0 = sslide_histories(synthesise(pr), pr);
+  for (const auto& p : pr.pairings) EXPECT_FALSE(sslide_edge_crossing(p, h0).time.has_value());
+}
+
+TEST(SslideCriteria, RowsAfterTheEdgeCrossingAreJudgedOnlyBeforeIt) {
+  const auto pr = make_sslide_problem("sslide9ps");
+  // After the edge: the block sinks 0.01 and F_y swings +-2 (tipping off the end).
+  const auto after = [](Real t) { return t >= 0.497 - 1e-9; };
+  const Perturbation tipping{.force = [&](Real t, Vec3& f) { if (after(t)) f.y() += (static_cast<int>(t * 1e3 + 0.5) % 2 ? 2.0 : -2.0); },
+                             .relative = [&](Real t, Vec3& u) {
+                               slide_off_at_0497(t, u);
+                               if (after(t)) u.y() = -0.01;
+                             }};
+  const auto rows = evaluate(pr, tipping);
+  for (const auto& f : failures(rows)) ADD_FAILURE() << f;
+  int noted = 0;
+  for (const auto& r : rows)
+    if (r.note.find("passes the lower block's edge at t = 0.497") != std::string::npos) ++noted;
+  // interpenetration, std F_y [0.45,0.5], mean F_x and mean R_x [0.45,0.5]
+  EXPECT_EQ(noted, 4);
+  // The same tipping while the block is still seated fails both rows.
+  const Perturbation seated{.force = tipping.force, .relative = [&](Real t, Vec3& u) { if (after(t)) u.y() = -0.01; }};
+  const auto bad = evaluate(pr, seated);
+  EXPECT_TRUE(failed(bad, "interpenetration"));
+  EXPECT_TRUE(failed(bad, "std F_y [0.45,0.5]"));
+}
+
+TEST(SslideCriteria, MissingLeadingEdgeChannelFails) {
+  const auto pr = make_sslide_problem("sslide9ps");
+  auto h = sslide_histories(synthesise(pr), pr);
+  h.channels.erase(sslide_node_channel(pr.pairings.front().monitor.leading_node));
+  const auto rows = evaluate_sslide_criteria(pr, h, reported());
+  EXPECT_TRUE(failed(rows, "leading edge seated"));
 }
 
 TEST(SslideCriteria, EarlyTensileFailureFails) {
