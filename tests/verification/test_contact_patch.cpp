@@ -128,14 +128,15 @@ constexpr PatchCase kCases[] = {
     {"t3_lagrange_5x5_fine_slave", T3, L, 5, 1.0, true, 0, 0.09, true},
     {"t12_lagrange_4x4", T12, L, 4, 1.0, false, 0, 0.14, true},
     {"t12_lagrange_5x5", T12, L, 5, 1.0, false, 0, 0.09, true},
-    // Mortar coupling (penalty_coupling = 1): within 5 % where marked 0.05.
+    // Mortar coupling (penalty_coupling = 1): the goal, 5 %, for two passes (Type 3) and for one
+    // pass of the coarse side's nodes; known limits marked.
+    {"t3_penalty_4x4_mortar", T3, P, 4, 1.0, false, 1, 0.05, true},
+    {"t3_penalty_5x5_mortar", T3, P, 5, 1.0, false, 1, 0.05, true},
+    {"t3_penalty_5x5_sf10_mortar", T3, P, 5, 10.0, false, 1, 0.05, true},
     {"t10_penalty_5x5_mortar", T10, P, 5, 1.0, false, 1, 0.05, true},
     {"t12_penalty_4x4_mortar", T12, P, 4, 1.0, false, 1, 0.05, true},
-    {"t12_penalty_5x5_mortar", T12, P, 5, 1.0, false, 1, 0.10, true},
-    {"t3_penalty_4x4_mortar", T3, P, 4, 1.0, false, 1, 0.28, true},
-    {"t3_penalty_5x5_mortar", T3, P, 5, 1.0, false, 1, 0.23, true},
-    {"t3_penalty_5x5_sf10_mortar", T3, P, 5, 10.0, false, 1, 0.15, true},
-    {"t10_penalty_5x5_fine_slave_mortar", T10, P, 5, 1.0, true, 1, 0.70, false},
+    {"t12_penalty_5x5_mortar", T12, P, 5, 1.0, false, 1, 0.10, true},            // known limit
+    {"t10_penalty_5x5_fine_slave_mortar", T10, P, 5, 1.0, true, 1, 0.11, false},  // known limit
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, ContactPatch, ::testing::ValuesIn(kCases),

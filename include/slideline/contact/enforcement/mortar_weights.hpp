@@ -33,6 +33,24 @@ inline Vec3 slave_segment_normal(const Surface& slave, Index s, const Vec3Field&
   return len > 0.0 ? Vec3(a / len) : Vec3::Zero();
 }
 
+/// A master segment to start tracking from that faces a slave segment of normal n_s: `start`
+/// when it does, else its first edge neighbour that does (a node at a flush edge may hold the
+/// master's side face, and tracking from a face the point lies behind does not leave it), else
+/// `start`.
+inline Index facing_seed(const Surface& master, Index start, const Vec3& n_s, bool shell, const Vec3Field& x) {
+  const auto normal = [&](Index t) {
+    const auto c = segment_corners(master, t, x);
+    const Vec3 a = (c[2] - c[0]).cross(c[3] - c[1]);
+    return a.norm() > 0.0 ? Vec3(a.normalized()) : Vec3::Zero();
+  };
+  if (faces_master(n_s, shell, normal(start))) return start;
+  for (Index j = master.segment_neighbors.begin(start); j < master.segment_neighbors.end(start); ++j) {
+    const Index t = master.segment_neighbors.value[static_cast<std::size_t>(j)];
+    if (faces_master(n_s, shell, normal(t))) return t;
+  }
+  return start;
+}
+
 /// The master nodes a slave node is coupled to and their weights (sum 1).
 struct MortarWeights {
   static constexpr int capacity = 48;
@@ -72,6 +90,7 @@ inline bool mortar_weights(const Surface& slave, Index row, Index node, const Su
     if (slave.is_triangle(s)) return false;
     const Vec3 ns = slave_segment_normal(slave, s, x);
     const bool shell = slave.kind[static_cast<std::size_t>(s)] == SegmentKind::shell;
+    seg_m = facing_seed(master, seg_m, ns, shell, x);
     const Index* c = &slave.conn[4 * static_cast<std::size_t>(s)];
     int k = 0;
     while (k < 4 && c[k] != node) ++k;
