@@ -25,9 +25,8 @@ std::unique_ptr<ContactAlgorithm> make_nodes_to_surface(const model::Contact& ca
     const auto half = shell_half_thickness(slave, ctx.model.control_contact.shlthk > 0, card.sst, card.sfst);
     for (std::size_t i = 0; i < offsets.size(); ++i) offsets[i] = std::max(offsets[i], half[i]);
   }
-  auto pass = std::make_unique<PenaltyPass>(slave.nodes, std::move(offsets), master.surface,
-                                            std::make_unique<FclBroadPhase>(),
-                                            penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  auto pass = make_penalty_pass(slave, std::move(offsets), master.surface,
+                               penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
   return make_penalty_interface<NodesToSurfaceContact>(card, title, std::move(pass));
 }
 
@@ -36,9 +35,8 @@ std::unique_ptr<ContactAlgorithm> make_automatic(const model::Contact& card, con
   if (card.sstyp == 4)
     throw InputError(describe(card.src) + ": " + card.keyword + ": SSTYP = 4 (node set) is not a surface");
   ContactSide side = resolve_contact_side(card, true, ctx);
-  auto pass = std::make_unique<PenaltyPass>(side.nodes, shell_half_thickness(side, true, card.sst, card.sfst),
-                                            side.surface, std::make_unique<FclBroadPhase>(),
-                                            penalty_pass_options(card, ctx, card.sfs, card.sst, card.sfst));
+  auto pass = make_penalty_pass(side, shell_half_thickness(side, true, card.sst, card.sfst), side.surface,
+                               penalty_pass_options(card, ctx, card.sfs, card.sst, card.sfst));
   pass->slave_part() = node_parts(side);
   std::vector<Id> parts = side.parts;
   return make_penalty_interface<AutomaticContact>(card, title, std::move(pass), std::move(parts));

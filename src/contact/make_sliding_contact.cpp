@@ -16,15 +16,13 @@ std::unique_ptr<ContactAlgorithm> make_sliding_contact(const model::Contact& car
   ContactSide master = resolve_contact_side(card, false, ctx);
   const bool thk = ctx.model.control_contact.shlthk > 0;
   // Slave nodes on master segments (stiffness factor SLSFAC x SFS).
-  auto slave_pass = std::make_unique<PenaltyPass>(
-      slave.nodes, shell_half_thickness(slave, thk, card.sst, card.sfst), master.surface,
-      std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  auto slave_pass = make_penalty_pass(slave, shell_half_thickness(slave, thk, card.sst, card.sfst), master.surface,
+                                      penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
   if (card.type != model::ContactType::surface_to_surface)
     return make_penalty_interface<OneWayContact>(card, title, std::move(slave_pass));
   // Type 3's second pass: master nodes on slave segments (SLSFAC x SFM).
-  auto master_pass = std::make_unique<PenaltyPass>(
-      master.nodes, shell_half_thickness(master, thk, card.mst, card.sfmt), slave.surface,
-      std::make_unique<FclBroadPhase>(), penalty_pass_options(card, ctx, card.sfm, card.sst, card.sfst));
+  auto master_pass = make_penalty_pass(master, shell_half_thickness(master, thk, card.mst, card.sfmt), slave.surface,
+                                       penalty_pass_options(card, ctx, card.sfm, card.sst, card.sfst));
   return make_penalty_interface<SurfaceToSurfaceContact>(card, title, std::move(slave_pass), std::move(master_pass));
 }
 

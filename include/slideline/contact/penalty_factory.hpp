@@ -55,7 +55,20 @@ inline PenaltyPassOptions penalty_pass_options(const model::Contact& card, const
   o.master_thickness_scale = thickness_scale;
   o.sliding_only = card.sliding_only_option;
   o.automatic = card.type == model::ContactType::automatic;
+  o.coupling = card.penalty_coupling == 1 ? PenaltyCoupling::mortar : PenaltyCoupling::node;
   return o;
+}
+
+/// A pass whose slaves are the nodes of `side` (with their offsets) against `master`; with the
+/// mortar coupling it gets the side's surface (a node-set side has none: it keeps
+/// DYNA3D's rule).
+inline std::unique_ptr<PenaltyPass> make_penalty_pass(const ContactSide& side, std::vector<Real> offsets,
+                                                      const Surface& master, PenaltyPassOptions options) {
+  if (side.surface.node_count() == 0) options.coupling = PenaltyCoupling::node;  // a node set
+  auto pass = std::make_unique<PenaltyPass>(side.nodes, std::move(offsets), master, std::make_unique<FclBroadPhase>(),
+                                            options);
+  if (options.coupling != PenaltyCoupling::node) pass->set_slave_surface(side.surface);
+  return pass;
 }
 
 /// The card's friction law: FS, FD (FS when FD is 0), DC.

@@ -15,7 +15,9 @@
 ///   thickness, or the nodal radius), g_0 the initial-penetration allowance (below).
 /// - Normal force on the slave: f_n = -k g n for g < 0 (also for g > 0 on a "sliding only" pass
 ///   once the node has touched), k the master segment's stiffness (force / length):
-///   solid face k = f K A^2 / V, shell k = f K A / (max diagonal), f = SLSFAC x SFS (or SFM).
+///   solid face k = f K A^2 / V, shell k = f K A / (max diagonal), f = SLSFAC x SFS (or SFM);
+///   with the mortar coupling (PenaltyCoupling), k / A x the slave node's tributary area over the
+///   master, and the gap and forces on mortar-weighted master points.
 /// - Friction: trial = (previous tangential force turned into the current tangent plane)
 ///   - k_t du_t, du_t the tangential slave-minus-master-point displacement over the last step
 ///   (dt_prev v^{n-1/2}), k_t = k; mu = mu_k + (mu_s - mu_k) exp(-beta |du_t| / dt_prev);
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/contact/enforcement/mortar_weights.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/friction/frictionless.hpp"
 #include "slideline/contact/search/broad_phase.hpp"
@@ -45,6 +48,18 @@
 #include "slideline/mesh/surface.hpp"
 
 namespace slideline {
+
+/// How a slave node's spring is sized and its force shared (docs/contact.md, "The contact patch
+/// test"):
+/// - node: DYNA3D's rule: every slave node on master segment s gets the segment's spring k_s, and
+///   its force goes to the segment's corners with the shape functions at its closest point;
+/// - mortar: the spring is k_s / A_s (A_s the master segment's area at initialize()) times the
+///   part W of the slave node's tributary area that lies over the master, and the gap, normal and
+///   force use mortar weights (mortar_weights.hpp) over the master nodes under the node's slave
+///   segments: a uniform pressure reaches both sides as consistent nodal forces. Needs the slave
+///   surface (set_slave_surface()); a node it cannot integrate (a triangle, nothing over the
+///   master) falls back to the node rule for that cycle.
+enum class PenaltyCoupling : std::uint8_t { node, mortar };
 
 /// How a pass is set up (the factory fills it from the card).
 struct PenaltyPassOptions {
@@ -60,6 +75,7 @@ struct PenaltyPassOptions {
   /// capped at stick_stiffness_cap x k (docs/contact.md, "Penalty contact", Friction).
   Real elastic_slip_fraction = 1e-3;
   Real stick_stiffness_cap = 4.0;    ///< k_t <= cap x k: the pair's stable step at most halved
+  PenaltyCoupling coupling = PenaltyCoupling::node;  ///< stiffness rule and force distribution
 };
 
 /// The per-slave result of one cycle, kept for the serial scatter.
@@ -69,6 +85,7 @@ struct PenaltyRecord {
   std::array<Real, 4> shape{};  ///< master shape functions
   Real dissipation = 0.0;       ///< friction work of this cycle (energy, >= 0)
   Real dt_inv2 = 0.0;           ///< omega^2 / 4 of this pair's spring (1 / time^2), 0 if no segment
+  bool mortar = false;          ///< the force is shared by the slave's MortarWeights, not `shape`
 };
 
 class PenaltyPass {
@@ -122,6 +139,9 @@ class PenaltyPass {
   Real largest_initial_penetration() const { return initial_max_; }
   /// Current signed gap of slave i (length; +inf without a segment).
   Real gap(std::size_t i) const { return gap_[i]; }
+  /// The surface the slaves come from (its nodes are the slaves, in order), for the mortar
+  /// coupling (PenaltyPassOptions::coupling); call before initialize().
+  void set_slave_surface(Surface surface) { slave_surface_ = std::move(surface); }
   /// Part of each slave node (automatic pass: for the transmitted force), set by the owner.
   std::vector<Id>& slave_part() { return slave_part_; }
   const std::vector<Id>& slave_part() const { return slave_part_; }
@@ -136,6 +156,12 @@ class PenaltyPass {
     return 0.5 * t * opt_.master_thickness_scale;
   }
   void locate(const Vec3Field& x);
+  struct CoupledPoint {
+    Vec3 dx, dv;     ///< slave minus coupled master point: position (length), velocity
+    Real inv_mass;   ///< 1/m_s + sum weight^2 / m_a (1 / mass)
+  };
+  static CoupledPoint coupled_point(Index node, const Projection& pr, const Index* c, const MortarWeights* mw,
+                                    const NodalFields& nodes);
   void pick_nearest_candidates(const Vec3Field& x);
   template <class Friction>
   void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times, const Friction& friction);
@@ -153,6 +179,9 @@ class PenaltyPass {
   std::vector<std::size_t> run_begin_;  ///< per slave: first candidate (automatic pass)
   std::vector<std::size_t> run_end_;
   std::vector<Real> k_seg_;
+  std::vector<Real> kappa_;             ///< mortar coupling: k_s / A_s per segment (else empty)
+  Surface slave_surface_;               ///< mortar coupling: the slaves' own surface
+  std::vector<MortarWeights> mortar_;   ///< mortar coupling: per slave, this cycle's weights
   std::vector<Index> segment_;          ///< per slave: current segment (-1 none)
   std::vector<SegmentProjection> proj_;
   std::vector<std::int8_t> side_;       ///< shell master: side of the slave, 0 unknown

@@ -29,6 +29,18 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
   if (static_cast<Index>(segment_stiffness.size()) != ns)
     throw Error("PenaltyPass::initialize: one stiffness per master segment");
   k_seg_ = std::move(segment_stiffness);
+  kappa_.clear();
+  mortar_.clear();
+  if (opt_.coupling == PenaltyCoupling::mortar) {
+    if (slave_surface_.nodes != slaves_)
+      throw Error("PenaltyPass::initialize: the mortar coupling needs the slaves' own surface");
+    mortar_.assign(slaves_.size(), MortarWeights{});
+    kappa_.assign(static_cast<std::size_t>(ns), 0.0);
+    for (Index s = 0; s < ns; ++s) {
+      const Real a = segment_area(master_, s, nodes.x);
+      kappa_[static_cast<std::size_t>(s)] = a > 0.0 ? k_seg_[static_cast<std::size_t>(s)] / a : 0.0;
+    }
+  }
   Real min_diag = std::numeric_limits<Real>::max();
   slip_seg_.assign(static_cast<std::size_t>(ns), 0.0);
   for (Index s = 0; s < ns; ++s) {
@@ -228,6 +240,26 @@ inline void PenaltyPass::locate(const Vec3Field& x) {
   }
 }
 
+/// The slave `node` against the master point it is coupled to (sum N_a x_a at the closest point,
+/// or sum w_a x_a with mortar weights): relative position and velocity, and 1/m_s + sum w^2 / m_a
+/// for the pair's stable step (accumulated in that order: the node rule's arithmetic of before).
+inline PenaltyPass::CoupledPoint PenaltyPass::coupled_point(Index node, const Projection& pr, const Index* c,
+                                                            const MortarWeights* mw, const NodalFields& nodes) {
+  CoupledPoint cp{nodes.x.get(node), nodes.v.get(node), 1.0 / nodes.mass[static_cast<std::size_t>(node)]};
+  const auto add = [&](Index m, Real w) {
+    cp.dx -= w * nodes.x.get(m);
+    cp.dv -= w * nodes.v.get(m);
+    cp.inv_mass += w * w / nodes.mass[static_cast<std::size_t>(m)];
+  };
+  if (mw) {
+    for (int a = 0; a < mw->count; ++a) add(mw->node[static_cast<std::size_t>(a)], mw->weight[static_cast<std::size_t>(a)]);
+  } else {
+    for (int a = 0; a < 4; ++a)
+      if (pr.shape[static_cast<std::size_t>(a)] != 0.0) add(c[a], pr.shape[static_cast<std::size_t>(a)]);
+  }
+  return cp;
+}
+
 template <class Friction>
 void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times,
                            [[maybe_unused]] const Friction& friction) {
@@ -245,17 +277,22 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   const std::size_t su = static_cast<std::size_t>(s);
   const Index* c = &master_.conn[4 * su];
   const Index node = slaves_[i];
-  const Real k = k_seg_[su];
+  const Vec3 p = nodes.x.get(node);
+  // Mortar coupling: the gap and the force act on the weighted master point sum_a w_a x_a, and
+  // the spring stands for the part W of the node's tributary area that lies over the master (so
+  // a node just beyond the master's edge still carries its share of the area that is over it).
+  const bool mortar = !mortar_.empty() && mortar_weights(slave_surface_, static_cast<Index>(i), node, master_, s,
+                                                         nodes.x, mortar_[i]);
+  const MortarWeights* mw = mortar ? &mortar_[i] : nullptr;
+  const Real k = mw ? kappa_[su] * mw->area : k_seg_[su];
   // Spring of this pair for the step: omega^2 = k (1/m_s + sum N_a^2 / m_a); dt = 2 / omega.
-  Real inv_m = 1.0 / nodes.mass[static_cast<std::size_t>(node)];
-  for (int a = 0; a < 4; ++a) {
-    if (pr.shape[a] != 0.0) inv_m += pr.shape[a] * pr.shape[a] / nodes.mass[static_cast<std::size_t>(c[a])];
-  }
+  const CoupledPoint cp = coupled_point(node, pr, c, mw, nodes);
+  const Real inv_m = cp.inv_mass;
   rec.dt_inv2 = 0.25 * k * inv_m;  // raised below by a stiffer stick spring
 
   const bool shell = master_.kind[su] == SegmentKind::shell;
-  Vec3 n = pr.normal;
-  Real raw = pr.gap;
+  Vec3 n = mw ? mw->normal : pr.normal;
+  Real raw = mw ? n.dot(cp.dx) : pr.gap;
   if (shell) {
     if (side_[i] == 0) side_[i] = raw >= 0.0 ? 1 : -1;
     if (side_[i] < 0) {
@@ -265,7 +302,6 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   }
   // A point beside the segment (the closest point on an edge, the slave off to the side) or
   // deeper than half the segment is not in contact with it.
-  const Vec3 p = nodes.x.get(node);
   const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
   const Real offsets = master_offset(s) + slave_offset_[i];
   Real gap = raw - offsets;
@@ -276,7 +312,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   gap_[i] = gap;
   const bool beside = lateral > 1e-3 * pr.size;
   const bool too_deep = raw < -0.5 * pr.size;
-  const bool engaged = !beside && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
+  const bool engaged = (mw || !beside) && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
   if (!engaged) {
     ue_[i] = Vec3::Zero();
     if (!beside && gap > 0.0 && !touched_[i]) side_[i] = 0;  // free: re-detect the side
@@ -293,10 +329,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
       Vec3 ft = Vec3::Zero();
       Vec3 ue = Vec3::Zero();
       if (fn > 0.0) {
-        Vec3 vrel = nodes.v.get(node);
-        for (int a = 0; a < 4; ++a) {
-          if (pr.shape[a] != 0.0) vrel -= pr.shape[a] * nodes.v.get(c[a]);
-        }
+        const Vec3 vrel = cp.dv;
         const Vec3 vt = tangential_part(vrel, n);
         // Stick spring: DYNA3D's k_t = k, unless that lets the stick phase stretch more than
         // gamma before mu_s N (soft masters: shells); then k_t = mu_s N / gamma, so that every
@@ -324,6 +357,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   rec.segment = s;
   rec.force = f;
   rec.shape = pr.shape;
+  rec.mortar = mortar;
 }
 
 inline void PenaltyPass::scatter(ContactForceView out, Vec3& slave_total, Vec3& master_total,
@@ -333,6 +367,16 @@ inline void PenaltyPass::scatter(ContactForceView out, Vec3& slave_total, Vec3& 
     if (r.segment < 0) continue;
     out.force.add(slaves_[i], r.force);
     slave_total += r.force;
+    if (r.mortar) {
+      const MortarWeights& mw = mortar_[i];
+      for (int a = 0; a < mw.count; ++a) {
+        const Vec3 fm = -mw.weight[static_cast<std::size_t>(a)] * r.force;
+        out.force.add(mw.node[static_cast<std::size_t>(a)], fm);
+        master_total += fm;
+      }
+      friction_work += r.dissipation;
+      continue;
+    }
     const Index* c = &master_.conn[4 * static_cast<std::size_t>(r.segment)];
     for (int a = 0; a < 4; ++a) {
       if (r.shape[a] == 0.0) continue;
