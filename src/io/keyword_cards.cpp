@@ -133,7 +133,7 @@ void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
     Card c = card_of(ctx, l, b);
     model::SectionSolid s;
     c.get(0, "SECID", s.secid);
-    c.get(1, "ELFORM", s.elform);
+    c.get_or_default(1, "ELFORM", s.elform);
     s.src = ctx.source(l.number);
     m.solid_sections.push_back(s);
   });
@@ -144,10 +144,10 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
     Card c = card_of(ctx, l, b);
     model::SectionShell s;
     c.get(0, "SECID", s.secid);
-    c.get(1, "ELFORM", s.elform);
-    c.get(2, "SHRF", s.shrf);
-    c.get(3, "NIP", s.nip);
-    c.get(4, "PROPT", s.propt);
+    c.get_or_default(1, "ELFORM", s.elform);
+    c.get_or_default(2, "SHRF", s.shrf);
+    c.get_or_default(3, "NIP", s.nip);
+    c.get_or_default(4, "PROPT", s.propt);
     if (const Line* l2 = b.take()) {
       Card c2 = card_of(ctx, *l2, b);
       static const char* const names[] = {"T1", "T2", "T3", "T4"};
@@ -228,10 +228,10 @@ void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
     Card c = card_of(ctx, l, b);
     model::Hourglass h;
     c.get(0, "HGID", h.hgid);
-    c.get(1, "IHQ", h.ihq);
-    c.get(2, "QM", h.qm);
-    c.get(4, "Q1", h.q1);
-    c.get(5, "Q2", h.q2);
+    c.get_or_default(1, "IHQ", h.ihq);
+    c.get_or_default(2, "QM", h.qm);
+    c.get_or_default(4, "Q1", h.q1);
+    c.get_or_default(5, "Q2", h.q2);
     h.src = ctx.source(l.number);
     m.hourglasses.push_back(h);
   });
@@ -336,9 +336,9 @@ void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id,
     c.get(1, "DOF", p.dof);
     c.get(2, "VAD", p.vad);
     c.get(3, "LCID", p.lcid);
-    c.get(4, "SF", p.sf);
+    c.get_or_default(4, "SF", p.sf);
     c.get(5, "VID", p.vid);
-    c.get(6, "DEATH", p.death);
+    c.get_or_default(6, "DEATH", p.death);
     c.get(7, "BIRTH", p.birth);
     p.src = ctx.source(l->number);
     m.prescribed_motions.push_back(p);
@@ -353,7 +353,7 @@ void read_load_node(const Context& ctx, Block& b, Model& m, bool set) {
     c.get(0, set ? "NSID" : "NID", n.id);
     c.get(1, "DOF", n.dof);
     c.get(2, "LCID", n.lcid);
-    c.get(3, "SF", n.sf);
+    c.get_or_default(3, "SF", n.sf);
     c.get(4, "CID", n.cid);
     c.get(5, "M1", n.m[0]);
     c.get(6, "M2", n.m[1]);
@@ -368,7 +368,7 @@ void read_load_body(const Context& ctx, Block& b, Model& m, Axis axis) {
     model::LoadBody lb;
     lb.axis = axis;
     c.get(0, "LCID", lb.lcid);
-    c.get(1, "SF", lb.sf);
+    c.get_or_default(1, "SF", lb.sf);
     c.get(2, "LCIDDR", lb.lciddr);
     c.get(3, "XC", lb.xc);
     c.get(4, "YC", lb.yc);
@@ -386,8 +386,8 @@ void read_curve(const Context& ctx, Block& b, Model& m, bool titled) {
   Card c = card_of(ctx, l, b);
   c.get(0, "LCID", cv.lcid);
   c.get(1, "SIDR", cv.sidr);
-  c.get(2, "SFA", cv.sfa);
-  c.get(3, "SFO", cv.sfo);
+  c.get_or_default(2, "SFA", cv.sfa);
+  c.get_or_default(3, "SFO", cv.sfo);
   c.get(4, "OFFA", cv.offa);
   c.get(5, "OFFO", cv.offo);
   c.get(6, "DATTYP", cv.dattyp);
@@ -437,7 +437,7 @@ void read_damping_part(const Context& ctx, Block& b, Model& m, bool set) {
     d.set = set;
     c.get(0, set ? "PSID" : "PID", d.pid);
     c.get(1, "LCID", d.lcid);
-    c.get(2, "SF", d.sf);
+    c.get_or_default(2, "SF", d.sf);
     c.get(3, "FLAG", d.flag);
     d.src = ctx.source(l->number);
     if (d.flag != 0 && d.flag != 1)
@@ -480,7 +480,7 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
   single_card(ctx, b, [&](const Card& k, const Line& l) {
     t.src = ctx.source(l.number);
     k.get(0, "DTINIT", t.dtinit);
-    k.get(1, "TSSFAC", t.tssfac);
+    k.get_or_default(1, "TSSFAC", t.tssfac);
     k.get(2, "ISDO", t.isdo);
     k.get(3, "TSLIMT", t.tslimt);
     k.get(4, "DT2MS", t.dt2ms);
@@ -497,6 +497,24 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     ignored(t.isdo != 0, "ISDO", "shell time-step length option");
     ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
   });
+}
+
+void read_control_contact(const Context& ctx, Block& b, Model& m) {
+  auto& t = m.control_contact;
+  int line = b.line;
+  if (const Line* l = b.take()) {
+    Card k = card_of(ctx, *l, b);
+    line = l->number;
+    k.get_or_default(0, "SLSFAC", t.slsfac);
+    k.get(1, "RWPNAL", t.rwpnal);
+    k.get_or_default(2, "ISLCHK", t.islchk);
+    k.get(3, "SHLTHK", t.shlthk);
+    k.get_or_default(4, "PENOPT", t.penopt);
+    k.get(5, "THKCHG", t.thkchg);
+    k.get_or_default(6, "ORIEN", t.orien);
+    k.get(7, "ENMASS", t.enmass);
+  }
+  read_control_contact_cards(ctx, b, t, line);
 }
 
 using Handler = std::function<void(const Context&, Block&, Model&, bool)>;
@@ -531,14 +549,14 @@ const std::vector<Entry>& table() {
       {"*HOURGLASS", "_TITLE", read_hourglass},
       {"*CONTROL_HOURGLASS", nullptr, plain([](const Context& c, Block& b, Model& m) {
          single_card(c, b, [&](const Card& k, const Line&) {
-           k.get(0, "IHQ", m.control_hourglass.ihq);
-           k.get(1, "QH", m.control_hourglass.qh);
+           k.get_or_default(0, "IHQ", m.control_hourglass.ihq);
+           k.get_or_default(1, "QH", m.control_hourglass.qh);
          });
        })},
       {"*CONTROL_BULK_VISCOSITY", nullptr, plain([](const Context& c, Block& b, Model& m) {
          single_card(c, b, [&](const Card& k, const Line&) {
-           k.get(0, "Q1", m.bulk_viscosity.q1);
-           k.get(1, "Q2", m.bulk_viscosity.q2);
+           k.get_or_default(0, "Q1", m.bulk_viscosity.q1);
+           k.get_or_default(1, "Q2", m.bulk_viscosity.q2);
          });
        })},
       {"*CONTROL_TERMINATION", nullptr, plain([](const Context& c, Block& b, Model& m) {
@@ -552,23 +570,7 @@ const std::vector<Entry>& table() {
          });
        })},
       {"*CONTROL_TIMESTEP", nullptr, plain(read_control_timestep)},
-      {"*CONTROL_CONTACT", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         // Cards 2-6 of *CONTROL_CONTACT are optional and hold nothing this code uses.
-         if (const Line* l = b.take()) {
-           Card k = card_of(c, *l, b);
-           auto& t = m.control_contact;
-           k.get(0, "SLSFAC", t.slsfac);
-           k.get(1, "RWPNAL", t.rwpnal);
-           k.get(2, "ISLCHK", t.islchk);
-           k.get(3, "SHLTHK", t.shlthk);
-           k.get(4, "PENOPT", t.penopt);
-           k.get(5, "THKCHG", t.thkchg);
-           k.get(6, "ORIEN", t.orien);
-           k.get(7, "ENMASS", t.enmass);
-         }
-         while (b.take()) {
-         }
-       })},
+      {"*CONTROL_CONTACT", nullptr, plain(read_control_contact)},
       {"*SET_NODE_LIST", "_TITLE", read_set_node},
       {"*SET_NODE", "_TITLE", read_set_node},
       {"*SET_SEGMENT", "_TITLE", read_set_segment},
