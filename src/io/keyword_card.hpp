@@ -154,6 +154,19 @@ Real evaluate_expression(std::string_view expr, const DeckState& deck, const std
 /// Warns about non-blank cards left in a block whose reader took what it needs.
 void warn_extra_cards(const Context& ctx, Block& block);
 
+/// Runs `f` on the first card of a single-card keyword (no card: all defaults).
+template <class F>
+void single_card(const Context& ctx, Block& b, F&& f) {
+  if (const Line* l = b.take()) f(Card(ctx, *l, b.keyword, kStandard), *l);
+  warn_extra_cards(ctx, b);
+}
+
+/// *CONTROL_HOURGLASS, _BULK_VISCOSITY, _TERMINATION, _TIMESTEP, _CONTACT (keyword_controls.cpp).
+/// False for other keywords.
+bool read_control(const Context& ctx, Block& block, model::Model& model);
+/// True when read_control reads this keyword.
+bool is_supported_control(std::string_view keyword);
+
 // keyword_contact_fields.cpp: the fields of *CONTACT_... and *CONTROL_CONTACT that the solver does
 // not act on. Each is at its default, refused (NotImplementedError naming file, line and field) or,
 // when it only tunes output or speed or cannot act here, warned about. See docs/contact.md.

@@ -1,4 +1,4 @@
-// Card handlers of the keyword reader (everything but *CONTACT_..., see keyword_contacts.cpp).
+// Card handlers of the keyword reader (but *CONTACT_..., *CONTROL_..., *INITIAL_..., *PARAMETER).
 // Field orders follow the LS-DYNA keyword manual (docs/keywords.md lists them with sources).
 #include <functional>
 #include <string>
@@ -237,13 +237,6 @@ void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
   });
 }
 
-/// Runs `f` on the first card of a single-card keyword (no card: all defaults).
-template <class F>
-void single_card(const Context& ctx, Block& b, F&& f) {
-  if (const Line* l = b.take()) f(card_of(ctx, *l, b), *l);
-  warn_extra_cards(ctx, b);
-}
-
 /// Reads the card after a set's first card: ids, 8 per card, until the next keyword.
 template <class Out>
 void read_id_list(const Context& ctx, Block& b, const char* name, Out& out) {
@@ -470,53 +463,6 @@ void read_damping_stiffness(const Context& ctx, Block& b, Model& m, bool set) {
   }
 }
 
-void read_database_dt(const Context& ctx, Block& b, Real& dt) {
-  single_card(ctx, b, [&](const Card& c, const Line&) { c.get(0, "DT", dt); });
-}
-
-void read_control_timestep(const Context& ctx, Block& b, Model& m) {
-  auto& t = m.timestep;
-  t.src = ctx.source(b.line);
-  single_card(ctx, b, [&](const Card& k, const Line& l) {
-    t.src = ctx.source(l.number);
-    k.get(0, "DTINIT", t.dtinit);
-    k.get_or_default(1, "TSSFAC", t.tssfac);
-    k.get(2, "ISDO", t.isdo);
-    k.get(3, "TSLIMT", t.tslimt);
-    k.get(4, "DT2MS", t.dt2ms);
-    k.get(5, "LCTM", t.lctm);
-    // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
-    // step (the stable step is always respected); DT2MS (mass scaling: physics) and LCTM are the
-    // builder's business.
-    const auto ignored = [&](bool set, const char* field, const char* what) {
-      if (set)
-        ctx.warn(l.number, std::string("*CONTROL_TIMESTEP: field ") + field + " (" + what +
-                               ") is read but not honoured; the run does without it");
-    };
-    ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
-    ignored(t.isdo != 0, "ISDO", "shell time-step length option");
-    ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
-  });
-}
-
-void read_control_contact(const Context& ctx, Block& b, Model& m) {
-  auto& t = m.control_contact;
-  int line = b.line;
-  if (const Line* l = b.take()) {
-    Card k = card_of(ctx, *l, b);
-    line = l->number;
-    k.get_or_default(0, "SLSFAC", t.slsfac);
-    k.get(1, "RWPNAL", t.rwpnal);
-    k.get_or_default(2, "ISLCHK", t.islchk);
-    k.get(3, "SHLTHK", t.shlthk);
-    k.get_or_default(4, "PENOPT", t.penopt);
-    k.get(5, "THKCHG", t.thkchg);
-    k.get_or_default(6, "ORIEN", t.orien);
-    k.get(7, "ENMASS", t.enmass);
-  }
-  read_control_contact_cards(ctx, b, t, line);
-}
-
 using Handler = std::function<void(const Context&, Block&, Model&, bool)>;
 
 struct Entry {
@@ -528,6 +474,13 @@ struct Entry {
 template <class F>
 Handler plain(F f) {
   return [f](const Context& c, Block& b, Model& m, bool) { f(c, b, m); };
+}
+
+/// *DATABASE_...: one card, DT the output interval.
+Handler database_dt(Real model::DatabaseControl::*dt) {
+  return [dt](const Context& c, Block& b, Model& m, bool) {
+    single_card(c, b, [&](const Card& k, const Line&) { k.get(0, "DT", m.database.*dt); });
+  };
 }
 
 const std::vector<Entry>& table() {
@@ -547,30 +500,6 @@ const std::vector<Entry>& table() {
       {"*MAT_RIGID", "_TITLE", read_mat_rigid},
       {"*MAT_020", "_TITLE", read_mat_rigid},
       {"*HOURGLASS", "_TITLE", read_hourglass},
-      {"*CONTROL_HOURGLASS", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line&) {
-           k.get_or_default(0, "IHQ", m.control_hourglass.ihq);
-           k.get_or_default(1, "QH", m.control_hourglass.qh);
-         });
-       })},
-      {"*CONTROL_BULK_VISCOSITY", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line&) {
-           k.get_or_default(0, "Q1", m.bulk_viscosity.q1);
-           k.get_or_default(1, "Q2", m.bulk_viscosity.q2);
-         });
-       })},
-      {"*CONTROL_TERMINATION", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         m.termination.src = c.source(b.line);
-         single_card(c, b, [&](const Card& k, const Line& l) {
-           m.termination.src = c.source(l.number);
-           k.get(0, "ENDTIM", m.termination.endtim);
-           k.get(1, "ENDCYC", m.termination.endcyc);
-           k.get(2, "DTMIN", m.termination.dtmin);
-           k.get(3, "ENDENG", m.termination.endeng);
-         });
-       })},
-      {"*CONTROL_TIMESTEP", nullptr, plain(read_control_timestep)},
-      {"*CONTROL_CONTACT", nullptr, plain(read_control_contact)},
       {"*SET_NODE_LIST", "_TITLE", read_set_node},
       {"*SET_NODE", "_TITLE", read_set_node},
       {"*SET_SEGMENT", "_TITLE", read_set_segment},
@@ -618,16 +547,11 @@ const std::vector<Entry>& table() {
       {"*DATABASE_HISTORY_NODE", nullptr, plain([](const Context& c, Block& b, Model& m) {
          read_id_list(c, b, "ID", m.database.history_nodes);
        })},
-      {"*DATABASE_RCFORC", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.rcforc); })},
-      {"*DATABASE_SPCFORC", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.spcforc); })},
-      {"*DATABASE_NODOUT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.nodout); })},
-      {"*DATABASE_GLSTAT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.glstat); })},
-      {"*DATABASE_BINARY_D3PLOT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.d3plot); })},
+      {"*DATABASE_RCFORC", nullptr, database_dt(&model::DatabaseControl::rcforc)},
+      {"*DATABASE_SPCFORC", nullptr, database_dt(&model::DatabaseControl::spcforc)},
+      {"*DATABASE_NODOUT", nullptr, database_dt(&model::DatabaseControl::nodout)},
+      {"*DATABASE_GLSTAT", nullptr, database_dt(&model::DatabaseControl::glstat)},
+      {"*DATABASE_BINARY_D3PLOT", nullptr, database_dt(&model::DatabaseControl::d3plot)},
   };
   return entries;
 }
@@ -653,6 +577,7 @@ const Entry* find_entry(std::string_view kw, bool& titled) {
 bool is_supported(std::string_view kw) {
   if (kw.rfind("*CONTACT_", 0) == 0) return is_supported_contact(kw);
   if (is_supported_initial(kw)) return true;
+  if (is_supported_control(kw)) return true;
   if (kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" || kw == "*PARAMETER_EXPRESSION" ||
       kw == "*PARAMETER_EXPRESSION_LOCAL")
     return true;
@@ -664,6 +589,7 @@ bool read_block(const Context& ctx, Block& block, model::Model& model) {
   const std::string& kw = block.keyword;
   if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
   if (read_initial(ctx, block, model)) return true;
+  if (read_control(ctx, block, model)) return true;
   bool titled = false;
   const Entry* e = find_entry(kw, titled);
   if (!e) return false;

@@ -2,6 +2,7 @@
 // not at its manual default (blank and 0 both mean the default), is refused (exit 3, naming file,
 // line and field) or, when it only tunes output or speed or has nothing to act on here, warned
 // about. Nothing is read and dropped. docs/contact.md, "Contact card fields", is the table.
+#include <cstdint>
 #include <cstdio>
 #include <span>
 #include <string>

@@ -4,12 +4,17 @@
 // file, line and field) or warned about, never dropped.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "model_equal.hpp"
+#include "slideline/contact/penalty_contact.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/build.hpp"
+#include "slideline/solver/simulation.hpp"
 
 namespace slideline {
 namespace {
@@ -39,7 +44,7 @@ std::string deck(const std::string& z) {
   d += "*BOUNDARY_PRESCRIBED_MOTION_SET\n" + card({"1", "1", "Z", "1", "Z", "Z", "Z", "Z"}, z);
   d += "*LOAD_NODE_POINT\n" + card({"1", "1", "1", "Z"}, z);
   d += "*LOAD_BODY_Z\n" + card({"1", "Z"}, z);
-  d += "*DEFINE_CURVE\n" + card({"1", "Z", "Z", "Z", "Z", "Z"}, z) + "0.0 0.0\n1.0 1.0\n";
+  d += "*DEFINE_CURVE\n" + card({"1", "Z", "Z", "Z", "Z", "Z"}, z) + "0.0,0.0\n1.0,1.0\n";
   d += "*DAMPING_PART_MASS\n" + card({"1", "1", "Z"}, z);
   // A penalty contact: cards 2 and 3 (DT left blank: birth and death are another change's),
   // then the optional cards A-F (SOFSCL, MAXPAR, SBOPT, DEPTH, FRCFRQ, IGAP, FRICSF, FSTOL: defaults not 0).
@@ -97,6 +102,31 @@ TEST(KeywordZeroDefaults, ZeroGivesTheManualDefaults) {
   for (Real f : {c.sfs, c.sfm, c.sfst, c.sfmt, c.fsf, c.vsf}) EXPECT_DOUBLE_EQ(f, 1.0);
   EXPECT_DOUBLE_EQ(m.contacts[1].nen, 2.0);
   EXPECT_DOUBLE_EQ(m.contacts[1].mes, 2.0);
+}
+
+/// Stiffness of master segment 0 of the first pass of the deck's first (penalty) contact.
+Real first_segment_stiffness(const std::string& text) {
+  auto sim = build_simulation(read_keyword_string(text, "slsfac.k"));
+  sim->initialize();
+  const PenaltyPasses* passes = penalty_passes_of(sim->contacts[0]);
+  if (!passes) throw std::runtime_error("not a penalty contact");
+  return passes->pass(0).segment_stiffness(0);
+}
+
+TEST(KeywordZeroDefaults, SlsfacZeroGivesTheDefaultPenaltyStiffnessNotNone) {
+  // The ball-on-plate: SLSFAC = 0.0 gave contacts of zero stiffness (bodies passed
+  // through each other, exit 0). A Type 3 deck with SLSFAC 0.0 and with 0.1 build the same springs.
+  std::ifstream in(std::string(SLIDELINE_SOURCE_DIR) + "/tests/data/decks/solid_on_solid_type3.k");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string with_default = ss.str();
+  const std::string line = "*CONTROL_CONTACT\n       0.1";
+  ASSERT_NE(with_default.find(line), std::string::npos);
+  std::string with_zero = with_default;
+  with_zero.replace(with_zero.find(line), line.size(), "*CONTROL_CONTACT\n       0.0");
+  const Real k_default = first_segment_stiffness(with_default);
+  EXPECT_GT(k_default, 0.0);
+  EXPECT_DOUBLE_EQ(first_segment_stiffness(with_zero), k_default);
 }
 
 /// A penalty Type 3 contact deck with `card2`, `card3` and `extra` (cards after card 3) written in.
