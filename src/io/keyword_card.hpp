@@ -175,6 +175,12 @@ bool is_supported_control(std::string_view keyword);
 /// `c` against what its type and enforcement honour. `lines` are cards 1, 2 and 3 (null if absent).
 void check_contact_fields(const Context& ctx, const model::Contact& c, const Line* card1, const Line* card2,
                           const Line* card3, const Line* card4);
+/// Refuses the *SECTION_SOLID / *SECTION_SHELL (`shell`) fields the model does not hold when they
+/// are not at their default (AET; QR/IRID, ICOMP, SETYP, NLOC, MAREA, IDOF, EDGSET); PROPT warns.
+void check_section_fields(const Context& ctx, const Line& card1, const Line* card2, std::string_view keyword,
+                          bool shell);
+/// Refuses *HOURGLASS QB / QW other than 0 or QM (the shell hourglass takes QM for every mode).
+void check_hourglass_fields(const Context& ctx, const Line& card, std::string_view keyword, Real qm);
 /// Reads the optional cards A-E of a *CONTACT_... keyword (what is left in the block).
 void read_contact_optional_cards(const Context& ctx, Block& block);
 /// Reads cards 2-6 of *CONTROL_CONTACT (what is left in the block) and checks card 1's fields

@@ -134,6 +134,7 @@ void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
     model::SectionSolid s;
     c.get(0, "SECID", s.secid);
     c.get_or_default(1, "ELFORM", s.elform);
+    check_section_fields(ctx, l, nullptr, b.keyword, false);
     s.src = ctx.source(l.number);
     m.solid_sections.push_back(s);
   });
@@ -148,11 +149,12 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
     c.get_or_default(2, "SHRF", s.shrf);
     c.get_or_default(3, "NIP", s.nip);
     c.get_or_default(4, "PROPT", s.propt);
-    if (const Line* l2 = b.take()) {
-      Card c2 = card_of(ctx, *l2, b);
+    const Line* l2 = b.take();
+    if (l2) {
       static const char* const names[] = {"T1", "T2", "T3", "T4"};
-      for (int k = 0; k < 4; ++k) c2.get(k, names[k], s.t[static_cast<std::size_t>(k)]);
+      for (int k = 0; k < 4; ++k) card_of(ctx, *l2, b).get(k, names[k], s.t[static_cast<std::size_t>(k)]);
     }
+    check_section_fields(ctx, l, l2, b.keyword, true);
     s.src = ctx.source(l.number);
     m.shell_sections.push_back(s);
   });
@@ -232,6 +234,7 @@ void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
     c.get_or_default(2, "QM", h.qm);
     c.get_or_default(4, "Q1", h.q1);
     c.get_or_default(5, "Q2", h.q2);
+    check_hourglass_fields(ctx, l, b.keyword, h.qm);
     h.src = ctx.source(l.number);
     m.hourglasses.push_back(h);
   });
@@ -576,10 +579,8 @@ const Entry* find_entry(std::string_view kw, bool& titled) {
 
 bool is_supported(std::string_view kw) {
   if (kw.rfind("*CONTACT_", 0) == 0) return is_supported_contact(kw);
-  if (is_supported_initial(kw)) return true;
-  if (is_supported_control(kw)) return true;
-  if (kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" || kw == "*PARAMETER_EXPRESSION" ||
-      kw == "*PARAMETER_EXPRESSION_LOCAL")
+  if (is_supported_initial(kw) || is_supported_control(kw) || kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" ||
+      kw == "*PARAMETER_EXPRESSION" || kw == "*PARAMETER_EXPRESSION_LOCAL")
     return true;
   bool titled = false;
   return find_entry(kw, titled) != nullptr;
@@ -588,8 +589,7 @@ bool is_supported(std::string_view kw) {
 bool read_block(const Context& ctx, Block& block, model::Model& model) {
   const std::string& kw = block.keyword;
   if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
-  if (read_initial(ctx, block, model)) return true;
-  if (read_control(ctx, block, model)) return true;
+  if (read_initial(ctx, block, model) || read_control(ctx, block, model)) return true;
   bool titled = false;
   const Entry* e = find_entry(kw, titled);
   if (!e) return false;

@@ -281,7 +281,51 @@ void check_card3(const Context& ctx, const model::Contact& c, const Line* l) {
   field(ctx, l, kw, "card 3", c.vsf, {"VSF", 1, Use::refuse, "viscous friction scale factor"});
 }
 
+// *SECTION_SOLID, *SECTION_SHELL and *HOURGLASS fields the reader does not store (keyword manual).
+constexpr Rule kSectionSolid[] = {
+    {"SECID", 0, Use::honoured, ""}, {"ELFORM", 1, Use::honoured, ""},
+    {"AET", 0, Use::refuse, "ambient element type"},
+};
+constexpr Rule kSectionShell1[] = {
+    {"SECID", 0, Use::honoured, ""},  {"ELFORM", 2, Use::honoured, ""},
+    {"SHRF", 1, Use::honoured, ""},   {"NIP", 2, Use::honoured, ""},
+    {"PROPT", 1, Use::output, "printout option"},
+    {"QR/IRID", 0, Use::refuse, "through-thickness integration rule (0: Gauss)"},
+    {"ICOMP", 0, Use::refuse, "composite layer angles"},
+    {"SETYP", 1, Use::refuse, "2D solid element type"},
+};
+constexpr Rule kSectionShell2[] = {
+    {"T1", 0, Use::honoured, ""},     {"T2", 0, Use::honoured, ""}, {"T3", 0, Use::honoured, ""},
+    {"T4", 0, Use::honoured, ""},     {"NLOC", 0, Use::refuse, "reference surface location"},
+    {"MAREA", 0, Use::refuse, "non-structural mass per area"},
+    {"IDOF", 0, Use::refuse, "thickness field option"},
+    {"EDGSET", 0, Use::refuse, "edge node set of shell elements"},
+};
+
 }  // namespace
+
+void check_section_fields(const Context& ctx, const Line& card1, const Line* card2, std::string_view keyword,
+                          bool shell) {
+  if (!shell) return check_card(ctx, card1, keyword, "card 1", kSectionSolid);
+  check_card(ctx, card1, keyword, "card 1", kSectionShell1);
+  if (card2) check_card(ctx, *card2, keyword, "card 2", kSectionShell2);
+}
+
+void check_hourglass_fields(const Context& ctx, const Line& card, std::string_view keyword, Real qm) {
+  // QB and QW (shell bending and warping coefficients) default to QM; IBQ is unused.
+  const Rule rules[] = {{"HGID", 0, Use::honoured, ""}, {"IHQ", 1, Use::honoured, ""},
+                        {"QM", 0.1, Use::honoured, ""}, {"IBQ", 0, Use::unused, ""},
+                        {"Q1", 1.5, Use::honoured, ""}, {"Q2", 0.06, Use::honoured, ""},
+                        {"QB", qm, Use::refuse, "shell bending hourglass coefficient other than QM"},
+                        {"QW", qm, Use::refuse, "shell warping hourglass coefficient other than QM"}};
+  // 0 (blank) means QM itself.
+  const Card k(ctx, card, keyword, kStandard);
+  for (int i : {6, 7}) {
+    Real v = 0.0;
+    k.get(i, rules[i].name, v);
+    if (v != 0.0 && v != qm) act(ctx, card.number, keyword, "card 1", rules[i], v);
+  }
+}
 
 void check_contact_fields(const Context& ctx, const model::Contact& c, const Line* card1, const Line* card2,
                           const Line* card3, const Line* card4) {

@@ -25,7 +25,7 @@ model::Model full_model() {
   m.parts.push_back({2, "", 2, 2, 0, 0, {}});
   m.parts.push_back({3, "rigid", 2, 3, 0, 0, {}});
   m.solid_sections.push_back({1, 1, {}});
-  m.shell_sections.push_back({2, 2, 5.0 / 6.0, 5, 0.5, {0.1, 0.2, 0.3, 0.4}, {}});
+  m.shell_sections.push_back({2, 2, 5.0 / 6.0, 5, 1.0, {0.1, 0.2, 0.3, 0.4}, {}});  // PROPT other than 1 warns (output)
   m.materials.emplace_back(MatMooneyRivlin{1, 0.01, 0.1, 909.091, 0.5, "rubber", {}});
   m.materials.emplace_back(MatElastic{2, 0.1, 1000.0, 0.1, "", {}});
   m.materials.emplace_back(MatRigid{3, 0.1, 1000.0, 0.3, 1.0, 4, 7, "master shells", {}});

@@ -34,8 +34,9 @@ std::string deck(const std::string& z) {
   const std::vector<std::string> zeros(8, "Z");
   std::string d = "*KEYWORD\n";
   d += "*SECTION_SOLID\n" + card({"1", "Z"}, z);
-  d += "*SECTION_SHELL\n" + card({"2", "Z", "Z", "Z", "Z"}, z) + card({"0.1"}, z);
-  d += "*HOURGLASS\n" + card({"1", "Z", "Z", "", "Z", "Z"}, z);
+  d += "*SECTION_SHELL\n" + card({"2", "Z", "Z", "Z", "Z", "Z", "Z", "Z"}, z) +
+       card({"0.1", "Z", "Z", "Z", "Z", "Z", "Z", "Z"}, z);
+  d += "*HOURGLASS\n" + card({"1", "Z", "Z", "", "Z", "Z", "Z", "Z"}, z);
   d += "*CONTROL_HOURGLASS\n" + card({"Z", "Z"}, z);
   d += "*CONTROL_BULK_VISCOSITY\n" + card({"Z", "Z"}, z);
   d += "*CONTROL_TIMESTEP\n" + card({"", "Z"}, z);
@@ -167,6 +168,12 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {contact_deck(c2, card({"10", "5"}, ""), "", "NODES_TO_SURFACE"), "u.k:5: *CONTACT_NODES_TO_SURFACE card 3: field SFM = 5"},
       {contact_deck(c2, card({"", "", "0.1"}, ""), "", "TIED_SURFACE_TO_SURFACE"), "card 3: field SST = 0.1"},
       {contact_deck(c2, c3, card({"", "1", "1", "0.5"}, ""), "TIEBREAK_SURFACE_TO_SURFACE"), "card 4: field PARAM = 0.5"},
+      {"*SECTION_SOLID\n" + card({"1", "1", "3"}, ""), "u.k:2: *SECTION_SOLID card 1: field AET = 3"},
+      {"*SECTION_SHELL\n" + card({"1", "2", "", "", "", "", "1"}, ""), "u.k:2: *SECTION_SHELL card 1: field ICOMP = 1"},
+      {"*SECTION_SHELL\n" + card({"1", "2", "", "", "", "1"}, ""), "u.k:2: *SECTION_SHELL card 1: field QR/IRID = 1"},
+      {"*SECTION_SHELL\n" + card({"1"}, "") + card({"0.1", "", "", "", "", "0.5"}, ""), "u.k:3: *SECTION_SHELL card 2: field MAREA = 0.5"},
+      {"*HOURGLASS\n" + card({"1", "1", "", "", "", "", "0.05"}, ""), "u.k:2: *HOURGLASS card 1: field QB = 0.05"},
+      {"*HOURGLASS\n" + card({"1", "1", "0.2", "", "", "", "", "0.1"}, ""), "u.k:2: *HOURGLASS card 1: field QW = 0.1"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "3"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field PENOPT = 3"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field THKCHG = 1"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "", "2"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field ORIEN = 2"},
@@ -180,6 +187,14 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
   }
 }
 
+TEST(KeywordSectionFields, HourglassQbQwEqualToQmAreAccepted) {
+  // QB and QW default to QM; given equal to QM they change nothing.
+  std::vector<Diagnostic> w;
+  const auto m = read_keyword_string("*HOURGLASS\n" + card({"1", "1", "0.2", "", "", "", "0.2", "0.2"}, ""), "u.k", &w);
+  EXPECT_DOUBLE_EQ(m.hourglasses[0].qm, 0.2);
+  EXPECT_TRUE(w.empty());
+}
+
 TEST(KeywordContactFields, OutputSpeedAndInertFieldsWarnAndStillRead) {
   const std::string blank = card({}, "");
   struct Warned {
@@ -191,6 +206,7 @@ TEST(KeywordContactFields, OutputSpeedAndInertFieldsWarnAndStillRead) {
       {contact_deck(card({"0.3"}, ""), blank, "", "TIED_SURFACE_TO_SURFACE"), "field FS = 0.3 (friction of a tied interface"},
       {"*CONTROL_CONTACT\n" + blank + blank + card({"0.2"}, ""), "u.k:4: *CONTROL_CONTACT card 3: field SFRIC = 0.2"},
       {"*CONTROL_CONTACT\n" + card({"", "", "2"}, ""), "field ISLCHK = 2 (report of initial penetrations) only tunes output"},
+      {"*SECTION_SHELL\n" + card({"1", "2", "", "", "2"}, ""), "u.k:2: *SECTION_SHELL card 1: field PROPT = 2"},
   };
   for (const auto& c : cases) {
     std::vector<Diagnostic> w;
