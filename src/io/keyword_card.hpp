@@ -86,6 +86,10 @@ class Card {
   void get(int i, const char* name, Real& out) const;
   void get(int i, const char* name, int& out) const;
   void get(int i, const char* name, Id& out) const;
+  /// LS-DYNA's rule for a field with a manual default: blank and 0 both mean the default, which is
+  /// the value `out` holds on entry (the model's default). Any other value is stored.
+  void get_or_default(int i, const char* name, Real& out) const;
+  void get_or_default(int i, const char* name, int& out) const;
   /// True when every field is blank.
   bool all_blank() const;
   int line() const { return line_.number; }
@@ -149,5 +153,39 @@ Real evaluate_expression(std::string_view expr, const DeckState& deck, const std
 
 /// Warns about non-blank cards left in a block whose reader took what it needs.
 void warn_extra_cards(const Context& ctx, Block& block);
+
+/// Runs `f` on the first card of a single-card keyword (no card: all defaults).
+template <class F>
+void single_card(const Context& ctx, Block& b, F&& f) {
+  if (const Line* l = b.take()) f(Card(ctx, *l, b.keyword, kStandard), *l);
+  warn_extra_cards(ctx, b);
+}
+
+/// *CONTROL_HOURGLASS, _BULK_VISCOSITY, _TERMINATION, _TIMESTEP, _CONTACT (keyword_controls.cpp).
+/// False for other keywords.
+bool read_control(const Context& ctx, Block& block, model::Model& model);
+/// True when read_control reads this keyword.
+bool is_supported_control(std::string_view keyword);
+
+// keyword_contact_fields.cpp: the fields of *CONTACT_... and *CONTROL_CONTACT that the solver does
+// not act on. Each is at its default, refused (NotImplementedError naming file, line and field) or,
+// when it only tunes output or speed or cannot act here, warned about. See docs/contact.md.
+
+/// Checks cards 1-3 (and the tiebreak card 4, `card4`, may be null) of a contact already read into
+/// `c` against what its type and enforcement honour. `lines` are cards 1, 2 and 3 (null if absent).
+void check_contact_fields(const Context& ctx, const model::Contact& c, const Line* card1, const Line* card2,
+                          const Line* card3, const Line* card4);
+/// Refuses the *SECTION_SOLID / *SECTION_SHELL (`shell`) fields the model does not hold when they
+/// are not at their default (AET; QR/IRID, ICOMP, SETYP, NLOC, MAREA, IDOF, EDGSET); PROPT warns.
+void check_section_fields(const Context& ctx, const Line& card1, const Line* card2, std::string_view keyword,
+                          bool shell);
+/// Refuses *HOURGLASS QB / QW other than 0 or QM (the shell hourglass takes QM for every mode).
+void check_hourglass_fields(const Context& ctx, const Line& card, std::string_view keyword, Real qm);
+/// Reads the optional cards A-E of a *CONTACT_... keyword (what is left in the block).
+void read_contact_optional_cards(const Context& ctx, Block& block);
+/// Reads cards 2-6 of *CONTROL_CONTACT (what is left in the block) and checks card 1's fields
+/// that the solver does not act on.
+void read_control_contact_cards(const Context& ctx, Block& block, const model::ControlContact& card1,
+                                int card1_line);
 
 }  // namespace slideline::keyword

@@ -1,4 +1,4 @@
-// Card handlers of the keyword reader (everything but *CONTACT_..., see keyword_contacts.cpp).
+// Card handlers of the keyword reader (but *CONTACT_..., *CONTROL_..., *INITIAL_..., *PARAMETER).
 // Field orders follow the LS-DYNA keyword manual (docs/keywords.md lists them with sources).
 #include <functional>
 #include <string>
@@ -133,7 +133,8 @@ void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
     Card c = card_of(ctx, l, b);
     model::SectionSolid s;
     c.get(0, "SECID", s.secid);
-    c.get(1, "ELFORM", s.elform);
+    c.get_or_default(1, "ELFORM", s.elform);
+    check_section_fields(ctx, l, nullptr, b.keyword, false);
     s.src = ctx.source(l.number);
     m.solid_sections.push_back(s);
   });
@@ -144,15 +145,16 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
     Card c = card_of(ctx, l, b);
     model::SectionShell s;
     c.get(0, "SECID", s.secid);
-    c.get(1, "ELFORM", s.elform);
-    c.get(2, "SHRF", s.shrf);
-    c.get(3, "NIP", s.nip);
-    c.get(4, "PROPT", s.propt);
-    if (const Line* l2 = b.take()) {
-      Card c2 = card_of(ctx, *l2, b);
+    c.get_or_default(1, "ELFORM", s.elform);
+    c.get_or_default(2, "SHRF", s.shrf);
+    c.get_or_default(3, "NIP", s.nip);
+    c.get_or_default(4, "PROPT", s.propt);
+    const Line* l2 = b.take();
+    if (l2) {
       static const char* const names[] = {"T1", "T2", "T3", "T4"};
-      for (int k = 0; k < 4; ++k) c2.get(k, names[k], s.t[static_cast<std::size_t>(k)]);
+      for (int k = 0; k < 4; ++k) card_of(ctx, *l2, b).get(k, names[k], s.t[static_cast<std::size_t>(k)]);
     }
+    check_section_fields(ctx, l, l2, b.keyword, true);
     s.src = ctx.source(l.number);
     m.shell_sections.push_back(s);
   });
@@ -228,20 +230,14 @@ void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
     Card c = card_of(ctx, l, b);
     model::Hourglass h;
     c.get(0, "HGID", h.hgid);
-    c.get(1, "IHQ", h.ihq);
-    c.get(2, "QM", h.qm);
-    c.get(4, "Q1", h.q1);
-    c.get(5, "Q2", h.q2);
+    c.get_or_default(1, "IHQ", h.ihq);
+    c.get_or_default(2, "QM", h.qm);
+    c.get_or_default(4, "Q1", h.q1);
+    c.get_or_default(5, "Q2", h.q2);
+    check_hourglass_fields(ctx, l, b.keyword, h.qm);
     h.src = ctx.source(l.number);
     m.hourglasses.push_back(h);
   });
-}
-
-/// Runs `f` on the first card of a single-card keyword (no card: all defaults).
-template <class F>
-void single_card(const Context& ctx, Block& b, F&& f) {
-  if (const Line* l = b.take()) f(card_of(ctx, *l, b), *l);
-  warn_extra_cards(ctx, b);
 }
 
 /// Reads the card after a set's first card: ids, 8 per card, until the next keyword.
@@ -336,9 +332,9 @@ void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id,
     c.get(1, "DOF", p.dof);
     c.get(2, "VAD", p.vad);
     c.get(3, "LCID", p.lcid);
-    c.get(4, "SF", p.sf);
+    c.get_or_default(4, "SF", p.sf);
     c.get(5, "VID", p.vid);
-    c.get(6, "DEATH", p.death);
+    c.get_or_default(6, "DEATH", p.death);
     c.get(7, "BIRTH", p.birth);
     p.src = ctx.source(l->number);
     m.prescribed_motions.push_back(p);
@@ -353,7 +349,7 @@ void read_load_node(const Context& ctx, Block& b, Model& m, bool set) {
     c.get(0, set ? "NSID" : "NID", n.id);
     c.get(1, "DOF", n.dof);
     c.get(2, "LCID", n.lcid);
-    c.get(3, "SF", n.sf);
+    c.get_or_default(3, "SF", n.sf);
     c.get(4, "CID", n.cid);
     c.get(5, "M1", n.m[0]);
     c.get(6, "M2", n.m[1]);
@@ -368,7 +364,7 @@ void read_load_body(const Context& ctx, Block& b, Model& m, Axis axis) {
     model::LoadBody lb;
     lb.axis = axis;
     c.get(0, "LCID", lb.lcid);
-    c.get(1, "SF", lb.sf);
+    c.get_or_default(1, "SF", lb.sf);
     c.get(2, "LCIDDR", lb.lciddr);
     c.get(3, "XC", lb.xc);
     c.get(4, "YC", lb.yc);
@@ -386,8 +382,8 @@ void read_curve(const Context& ctx, Block& b, Model& m, bool titled) {
   Card c = card_of(ctx, l, b);
   c.get(0, "LCID", cv.lcid);
   c.get(1, "SIDR", cv.sidr);
-  c.get(2, "SFA", cv.sfa);
-  c.get(3, "SFO", cv.sfo);
+  c.get_or_default(2, "SFA", cv.sfa);
+  c.get_or_default(3, "SFO", cv.sfo);
   c.get(4, "OFFA", cv.offa);
   c.get(5, "OFFO", cv.offo);
   c.get(6, "DATTYP", cv.dattyp);
@@ -437,7 +433,7 @@ void read_damping_part(const Context& ctx, Block& b, Model& m, bool set) {
     d.set = set;
     c.get(0, set ? "PSID" : "PID", d.pid);
     c.get(1, "LCID", d.lcid);
-    c.get(2, "SF", d.sf);
+    c.get_or_default(2, "SF", d.sf);
     c.get(3, "FLAG", d.flag);
     d.src = ctx.source(l->number);
     if (d.flag != 0 && d.flag != 1)
@@ -470,35 +466,6 @@ void read_damping_stiffness(const Context& ctx, Block& b, Model& m, bool set) {
   }
 }
 
-void read_database_dt(const Context& ctx, Block& b, Real& dt) {
-  single_card(ctx, b, [&](const Card& c, const Line&) { c.get(0, "DT", dt); });
-}
-
-void read_control_timestep(const Context& ctx, Block& b, Model& m) {
-  auto& t = m.timestep;
-  t.src = ctx.source(b.line);
-  single_card(ctx, b, [&](const Card& k, const Line& l) {
-    t.src = ctx.source(l.number);
-    k.get(0, "DTINIT", t.dtinit);
-    k.get(1, "TSSFAC", t.tssfac);
-    k.get(2, "ISDO", t.isdo);
-    k.get(3, "TSLIMT", t.tslimt);
-    k.get(4, "DT2MS", t.dt2ms);
-    k.get(5, "LCTM", t.lctm);
-    // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
-    // step (the stable step is always respected); DT2MS (mass scaling: physics) and LCTM are the
-    // builder's business.
-    const auto ignored = [&](bool set, const char* field, const char* what) {
-      if (set)
-        ctx.warn(l.number, std::string("*CONTROL_TIMESTEP: field ") + field + " (" + what +
-                               ") is read but not honoured; the run does without it");
-    };
-    ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
-    ignored(t.isdo != 0, "ISDO", "shell time-step length option");
-    ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
-  });
-}
-
 using Handler = std::function<void(const Context&, Block&, Model&, bool)>;
 
 struct Entry {
@@ -510,6 +477,13 @@ struct Entry {
 template <class F>
 Handler plain(F f) {
   return [f](const Context& c, Block& b, Model& m, bool) { f(c, b, m); };
+}
+
+/// *DATABASE_...: one card, DT the output interval.
+Handler database_dt(Real model::DatabaseControl::*dt) {
+  return [dt](const Context& c, Block& b, Model& m, bool) {
+    single_card(c, b, [&](const Card& k, const Line&) { k.get(0, "DT", m.database.*dt); });
+  };
 }
 
 const std::vector<Entry>& table() {
@@ -529,46 +503,6 @@ const std::vector<Entry>& table() {
       {"*MAT_RIGID", "_TITLE", read_mat_rigid},
       {"*MAT_020", "_TITLE", read_mat_rigid},
       {"*HOURGLASS", "_TITLE", read_hourglass},
-      {"*CONTROL_HOURGLASS", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line&) {
-           k.get(0, "IHQ", m.control_hourglass.ihq);
-           k.get(1, "QH", m.control_hourglass.qh);
-         });
-       })},
-      {"*CONTROL_BULK_VISCOSITY", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line&) {
-           k.get(0, "Q1", m.bulk_viscosity.q1);
-           k.get(1, "Q2", m.bulk_viscosity.q2);
-         });
-       })},
-      {"*CONTROL_TERMINATION", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         m.termination.src = c.source(b.line);
-         single_card(c, b, [&](const Card& k, const Line& l) {
-           m.termination.src = c.source(l.number);
-           k.get(0, "ENDTIM", m.termination.endtim);
-           k.get(1, "ENDCYC", m.termination.endcyc);
-           k.get(2, "DTMIN", m.termination.dtmin);
-           k.get(3, "ENDENG", m.termination.endeng);
-         });
-       })},
-      {"*CONTROL_TIMESTEP", nullptr, plain(read_control_timestep)},
-      {"*CONTROL_CONTACT", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         // Cards 2-6 of *CONTROL_CONTACT are optional and hold nothing this code uses.
-         if (const Line* l = b.take()) {
-           Card k = card_of(c, *l, b);
-           auto& t = m.control_contact;
-           k.get(0, "SLSFAC", t.slsfac);
-           k.get(1, "RWPNAL", t.rwpnal);
-           k.get(2, "ISLCHK", t.islchk);
-           k.get(3, "SHLTHK", t.shlthk);
-           k.get(4, "PENOPT", t.penopt);
-           k.get(5, "THKCHG", t.thkchg);
-           k.get(6, "ORIEN", t.orien);
-           k.get(7, "ENMASS", t.enmass);
-         }
-         while (b.take()) {
-         }
-       })},
       {"*SET_NODE_LIST", "_TITLE", read_set_node},
       {"*SET_NODE", "_TITLE", read_set_node},
       {"*SET_SEGMENT", "_TITLE", read_set_segment},
@@ -616,16 +550,11 @@ const std::vector<Entry>& table() {
       {"*DATABASE_HISTORY_NODE", nullptr, plain([](const Context& c, Block& b, Model& m) {
          read_id_list(c, b, "ID", m.database.history_nodes);
        })},
-      {"*DATABASE_RCFORC", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.rcforc); })},
-      {"*DATABASE_SPCFORC", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.spcforc); })},
-      {"*DATABASE_NODOUT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.nodout); })},
-      {"*DATABASE_GLSTAT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.glstat); })},
-      {"*DATABASE_BINARY_D3PLOT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_database_dt(c, b, m.database.d3plot); })},
+      {"*DATABASE_RCFORC", nullptr, database_dt(&model::DatabaseControl::rcforc)},
+      {"*DATABASE_SPCFORC", nullptr, database_dt(&model::DatabaseControl::spcforc)},
+      {"*DATABASE_NODOUT", nullptr, database_dt(&model::DatabaseControl::nodout)},
+      {"*DATABASE_GLSTAT", nullptr, database_dt(&model::DatabaseControl::glstat)},
+      {"*DATABASE_BINARY_D3PLOT", nullptr, database_dt(&model::DatabaseControl::d3plot)},
   };
   return entries;
 }
@@ -650,9 +579,8 @@ const Entry* find_entry(std::string_view kw, bool& titled) {
 
 bool is_supported(std::string_view kw) {
   if (kw.rfind("*CONTACT_", 0) == 0) return is_supported_contact(kw);
-  if (is_supported_initial(kw)) return true;
-  if (kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" || kw == "*PARAMETER_EXPRESSION" ||
-      kw == "*PARAMETER_EXPRESSION_LOCAL")
+  if (is_supported_initial(kw) || is_supported_control(kw) || kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" ||
+      kw == "*PARAMETER_EXPRESSION" || kw == "*PARAMETER_EXPRESSION_LOCAL")
     return true;
   bool titled = false;
   return find_entry(kw, titled) != nullptr;
@@ -661,7 +589,7 @@ bool is_supported(std::string_view kw) {
 bool read_block(const Context& ctx, Block& block, model::Model& model) {
   const std::string& kw = block.keyword;
   if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
-  if (read_initial(ctx, block, model)) return true;
+  if (read_initial(ctx, block, model) || read_control(ctx, block, model)) return true;
   bool titled = false;
   const Entry* e = find_entry(kw, titled);
   if (!e) return false;

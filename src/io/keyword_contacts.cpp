@@ -126,6 +126,10 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
   }
   if (!l) throw InputError(ctx.file + ":" + std::to_string(b.line) + ": " + b.keyword + ": missing card 1 (SSID MSID ...)");
   c.src = ctx.source(l->number);
+  const Line* card1 = l;
+  const Line* card2 = nullptr;
+  const Line* card3 = nullptr;
+  const Line* card4 = nullptr;
   {
     Card k(ctx, *l, b.keyword, kStandard);
     k.get(0, "SSID", c.ssid);
@@ -137,7 +141,7 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
     k.get(6, "SPR", c.spr);
     k.get(7, "MPR", c.mpr);
   }
-  if ((l = b.take())) {
+  if ((l = card2 = b.take())) {
     Card k(ctx, *l, b.keyword, kStandard);
     k.get(0, "FS", c.fs);
     k.get(1, "FD", c.fd);
@@ -148,27 +152,28 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
     k.get(6, "BT", c.bt);
     k.get(7, "DT", c.dt);
   }
-  if ((l = b.take())) {
+  // Card 3: blank and 0 mean the manual's default (1 for the scale factors).
+  if ((l = card3 = b.take())) {
     Card k(ctx, *l, b.keyword, kStandard);
-    k.get(0, "SFS", c.sfs);
-    k.get(1, "SFM", c.sfm);
+    k.get_or_default(0, "SFS", c.sfs);
+    k.get_or_default(1, "SFM", c.sfm);
     k.get(2, "SST", c.sst);
     k.get(3, "MST", c.mst);
-    k.get(4, "SFST", c.sfst);
-    k.get(5, "SFMT", c.sfmt);
-    k.get(6, "FSF", c.fsf);
-    k.get(7, "VSF", c.vsf);
+    k.get_or_default(4, "SFST", c.sfst);
+    k.get_or_default(5, "SFMT", c.sfmt);
+    k.get_or_default(6, "FSF", c.fsf);
+    k.get_or_default(7, "VSF", c.vsf);
   }
   if (c.type == ContactType::tiebreak_nodes) {
-    if ((l = b.take())) {
+    if ((l = card4 = b.take())) {
       Card k(ctx, *l, b.keyword, kStandard);
       k.get(0, "NFLF", c.nflf);
       k.get(1, "SFLF", c.sflf);
-      k.get(2, "NEN", c.nen);
-      k.get(3, "MES", c.mes);
+      k.get_or_default(2, "NEN", c.nen);
+      k.get_or_default(3, "MES", c.mes);
     }
   } else if (c.type == ContactType::tiebreak_surface) {
-    if ((l = b.take())) {
+    if ((l = card4 = b.take())) {
       Card k(ctx, *l, b.keyword, kStandard);
       k.get(0, "OPTION", c.option);
       k.get(1, "NFLS", c.nfls);
@@ -180,8 +185,9 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
   }
   // Type 5 with discrete slave nodes: SST is the nodal contact radius.
   if (c.type == ContactType::nodes_to_surface && c.sstyp == 4) c.radius = c.sst;
+  check_contact_fields(ctx, c, card1, card2, card3, card4);
+  read_contact_optional_cards(ctx, b);
   m.contacts.push_back(std::move(c));
-  warn_extra_cards(ctx, b);
   return true;
 }
 

@@ -196,6 +196,18 @@ void Card::get(int i, const char* name, int& out) const {
   out = static_cast<int>(v);
 }
 
+void Card::get_or_default(int i, const char* name, Real& out) const {
+  Real v = 0.0;
+  get(i, name, v);
+  if (v != 0.0) out = v;
+}
+
+void Card::get_or_default(int i, const char* name, int& out) const {
+  int v = 0;
+  get(i, name, v);
+  if (v != 0) out = v;
+}
+
 std::string heading(const Line& line) { return std::string(trim(line.text)); }
 
 void read_id_heading(const Context& ctx, const Line& line, std::string_view keyword, Id& id,

@@ -194,7 +194,7 @@ struct PrescribedMotion {
   std::string title;
   Id nsid = 0;     ///< the first field: NSID (_SET), NID (_NODE) or PID (_RIGID), see `target`
   int dof = 1;     ///< 1 x, 2 y, 3 z; 5-7 rotations about x, y, z (rigid parts only)
-  int vad = 2;     ///< 0 velocity, 1 acceleration, 2 displacement
+  int vad = 0;     ///< 0 velocity (LS-DYNA's default), 1 acceleration, 2 displacement
   Id lcid = 0;     ///< curve of the prescribed quantity against time
   Real sf = 1.0;   ///< curve scale factor
   Id vid = 0;

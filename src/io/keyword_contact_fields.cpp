@@ -1,0 +1,375 @@
+// The fields of *CONTACT_... and *CONTROL_CONTACT that the solver does not act on: each one, when
+// not at its manual default (blank and 0 both mean the default), is refused (exit 3, naming file,
+// line and field) or, when it only tunes output or speed or has nothing to act on here, warned
+// about. Nothing is read and dropped. docs/contact.md, "Contact card fields", is the table.
+#include <cstdint>
+#include <cstdio>
+#include <span>
+#include <string>
+
+#include "keyword_card.hpp"
+#include "slideline/core/error.hpp"
+
+namespace slideline::keyword {
+namespace {
+
+using model::ContactType;
+using model::Enforcement;
+
+/// What happens to a field that is not at its default.
+enum class Use : std::uint8_t {
+  honoured,  ///< read into the model and acted on elsewhere: not checked here
+  refuse,    ///< changes the physics and is not implemented: NotImplementedError
+  output,    ///< only tunes output this code does not write: warning
+  speed,     ///< only tunes speed (search cadence, sorting): warning
+  inert,     ///< acts only on a feature this code refuses or lacks (says which): warning
+  unused,    ///< a field the manual leaves unused
+};
+
+struct Rule {
+  const char* name;
+  Real dflt;  ///< the manual's default (what 0 and blank mean)
+  Use use;
+  const char* what;
+};
+
+std::string num(Real v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+/// Refuses or warns about field `r` holding `v` (not its default) on the card at `line`.
+void act(const Context& ctx, int line, std::string_view keyword, std::string_view card, const Rule& r, Real v) {
+  const std::string field = std::string(keyword) + " " + std::string(card) + ": field " + r.name + " = " + num(v) +
+                            " (" + r.what + ")";
+  switch (r.use) {
+    case Use::refuse:
+      throw NotImplementedError(ctx.where(line) + field + " is not implemented; running without it would be "
+                                "a different model (leave it blank or give its default " + num(r.dflt) + ")");
+    case Use::output:
+      ctx.warn(line, field + " only tunes output that is not written here; ignored");
+      return;
+    case Use::speed:
+      ctx.warn(line, field + " only tunes speed; ignored (the contact search here finds every pair)");
+      return;
+    case Use::inert:
+      ctx.warn(line, field + " has nothing to act on here; ignored");
+      return;
+    case Use::honoured:
+    case Use::unused:
+      return;
+  }
+}
+
+/// Applies `rules` (one per field, in column order) to card `l`.
+void check_card(const Context& ctx, const Line& l, std::string_view keyword, std::string_view card,
+                std::span<const Rule> rules) {
+  const Card k(ctx, l, keyword, kStandard);
+  for (std::size_t i = 0; i < rules.size(); ++i) {
+    const Rule& r = rules[i];
+    if (r.use == Use::honoured || r.use == Use::unused) continue;
+    Real v = r.dflt;
+    k.get_or_default(static_cast<int>(i), r.name, v);
+    if (v != r.dflt) act(ctx, l.number, keyword, card, r, v);
+  }
+}
+
+// Optional cards A-F of *CONTACT_... (LS-DYNA keyword manual, *CONTACT, "Optional Card A" to "F").
+constexpr Rule kCardA[] = {
+    {"SOFT", 0, Use::refuse, "soft-constraint or segment-based penalty; the stiffness here is SOFT = 0's"},
+    {"SOFSCL", 0.1, Use::inert, "scale of the SOFT = 1 stiffness; SOFT = 1 is refused"},
+    {"LCIDAB", 0, Use::inert, "airbag thickness curve of SOFT = 2; SOFT = 2 is refused"},
+    {"MAXPAR", 1.025, Use::refuse, "maximum parametric coordinate of the segment search"},
+    {"SBOPT", 2, Use::inert, "segment-based (SOFT = 2) options; SOFT = 2 is refused"},
+    {"DEPTH", 2, Use::speed, "search depth"},
+    {"BSORT", 0, Use::speed, "cycles between bucket sorts"},
+    {"FRCFRQ", 1, Use::refuse, "cycles between contact force updates"},
+};
+constexpr Rule kCardB[] = {
+    {"PENMAX", 0, Use::refuse, "maximum penetration before a node is released"},
+    {"THKOPT", 0, Use::refuse, "per-contact thickness option"},
+    {"SHLTHK", 0, Use::refuse, "per-contact shell thickness option"},
+    {"SNLOG", 0, Use::inert, "disables shooting-node logic, which this code does not have"},
+    {"ISYM", 0, Use::refuse, "symmetry plane option"},
+    {"I2D3D", 0, Use::refuse, "segment search preference of shells over solids"},
+    {"SLDTHK", 0, Use::refuse, "solid element contact thickness"},
+    {"SLDSTF", 0, Use::refuse, "solid element contact stiffness"},
+};
+constexpr Rule kCardC[] = {
+    {"IGAP", 1, Use::inert, "implicit convergence option; the run is explicit"},
+    {"IGNORE", 0, Use::refuse, "initial penetrations kept instead of being pushed out"},
+    {"DPRFAC", 0, Use::refuse, "penetration depth reduction factor (SOFT = 2, Mortar)"},
+    {"DTSTIF", 0, Use::refuse, "time step of the SOFT = 1/2 stiffness (Mortar parameter)"},
+    {"EDGEK", 0, Use::refuse, "edge-to-edge penalty scale"},
+    {"UNUSED", 0, Use::unused, ""},
+    {"FLANGL", 0, Use::inert, "feature-line angle of _SMOOTH contact, which is refused"},
+    {"CID_RCF", 0, Use::output, "coordinate system of the rcforc output"},
+};
+constexpr Rule kCardD[] = {
+    {"Q2TRI", 0, Use::inert, "split quadrilaterals (SOFT = 2 only, which is refused)"},
+    {"DTPCHK", 0, Use::output, "interval of shell penetration reports"},
+    {"SFNBR", 0, Use::inert, "neighbour segment scale (SOFT = 2 only, which is refused)"},
+    {"FNLSCL", 0, Use::refuse, "nonlinear force scaling"},
+    {"DNLSCL", 0, Use::refuse, "nonlinear force scaling distance"},
+    {"TCSO", 0, Use::refuse, "contact thickness from contact segments only"},
+    {"TIEDID", 0, Use::refuse, "incremental displacement update of tied contact"},
+    {"SHLEDG", 0, Use::refuse, "shell edge shape"},
+};
+constexpr Rule kCardE[] = {
+    {"SHAREC", 0, Use::inert, "shared constraints (SOFT = 2 only, which is refused)"},
+    {"CPARM8", 0, Use::refuse, "beam contact flags"},
+    {"IPBACK", 0, Use::refuse, "backup penalty tied contact"},
+    {"SRNDE", 0, Use::refuse, "non-extended exterior shell edges"},
+    {"FRICSF", 1, Use::inert, "frictional stiffness scale (SOFT = 2 only, which is refused)"},
+    {"ICOR", 0, Use::refuse, "VDC read as a coefficient of restitution"},
+    {"FTORQ", 0, Use::refuse, "transmission of moments across the interface"},
+    {"REGION", 0, Use::refuse, "*DEFINE_REGION limiting the contact"},
+};
+constexpr Rule kCardF[] = {
+    {"PSTIFF", 0, Use::refuse, "penalty stiffness method"},
+    {"IGNROFF", 0, Use::refuse, "ignore the shell thickness offset"},
+    {"UNUSED", 0, Use::unused, ""},
+    {"FSTOL", 2, Use::inert, "flat-segment tolerance of _SMOOTH contact, which is refused"},
+    {"2DBINR", 0, Use::inert, "2D seat belts in retractors (no belts here)"},
+    {"SSFTYP", 0, Use::refuse, "which shell thickness scale factor is used"},
+    {"SWTPR", 0, Use::refuse, "constant thickness of tied weld segments"},
+    {"TETFAC", 0, Use::inert, "tetrahedron volume factor (SOFT = 2 only, which is refused)"},
+};
+
+struct OptionalCard {
+  const char* name;
+  std::span<const Rule> rules;
+};
+constexpr OptionalCard kOptional[] = {{"optional card A", kCardA}, {"optional card B", kCardB},
+                                      {"optional card C", kCardC}, {"optional card D", kCardD},
+                                      {"optional card E", kCardE}, {"optional card F", kCardF}};
+
+// *CONTROL_CONTACT cards 2-6 (LS-DYNA keyword manual, *CONTROL_CONTACT).
+constexpr Rule kControl2[] = {
+    {"USRSTR", 0, Use::inert, "storage for user contact subroutines (none here)"},
+    {"USRFRC", 0, Use::inert, "storage for user friction subroutines (none here)"},
+    {"NSBCS", 0, Use::speed, "cycles between contact searches"},
+    {"INTERM", 0, Use::refuse, "intermittent searching"},
+    {"XPENE", 4, Use::refuse, "maximum penetration check multiplier"},
+    {"SSTHK", 0, Use::refuse, "true shell thickness in single-surface contact"},
+    {"ECDT", 0, Use::inert, "time step of eroding contact (no erosion here)"},
+    {"TIEDPRJ", 0, Use::refuse, "bypass of the projection of tied nodes"},
+};
+constexpr Rule kControl3[] = {
+    {"SFRIC", 0, Use::inert, "default static friction of *PART_CONTACT, which is refused"},
+    {"DFRIC", 0, Use::inert, "default dynamic friction of *PART_CONTACT, which is refused"},
+    {"EDC", 0, Use::inert, "default decay coefficient of *PART_CONTACT, which is refused"},
+    {"VFC", 0, Use::inert, "default viscous friction of *PART_CONTACT, which is refused"},
+    {"TH", 0, Use::inert, "default contact thickness of *PART_CONTACT, which is refused"},
+    {"TH_SF", 0, Use::inert, "default thickness scale of *PART_CONTACT, which is refused"},
+    {"PEN_SF", 0, Use::inert, "default penalty scale of *PART_CONTACT, which is refused"},
+    {"PTSCL", 0, Use::refuse, "penalty scale of node-to-segment contact"},
+};
+constexpr Rule kControl4[] = {
+    {"IGNORE", 0, Use::refuse, "initial penetrations kept instead of being pushed out"},
+    {"FRCENG", 0, Use::output, "frictional energy output"},
+    {"SKIPRWG", 0, Use::output, "rigid-wall display"},
+    {"OUTSEG", 0, Use::output, "spot weld segment output"},
+    {"SPOTSTP", 0, Use::inert, "spot weld option (no spot welds here)"},
+    {"SPOTDEL", 0, Use::inert, "spot weld deletion (no spot welds here)"},
+    {"SPOTHIN", 0, Use::inert, "spot weld thinning (no spot welds here)"},
+    {"UNUSED", 0, Use::unused, ""},
+};
+constexpr Rule kControl5[] = {
+    {"ISYM", 0, Use::refuse, "symmetry planes of automatic contact"},
+    {"NSEROD", 0, Use::inert, "eroding node-to-surface option (no erosion here)"},
+    {"RWGAPS", 1, Use::inert, "rigid-wall gap stiffness (no *RIGIDWALL here)"},
+    {"RWGDTH", 0, Use::inert, "rigid-wall gap death (no *RIGIDWALL here)"},
+    {"RWKSF", 1, Use::inert, "rigid-wall penalty scale (no *RIGIDWALL here)"},
+    {"ICOV", 0, Use::refuse, "invariant node numbering of shell contact"},
+    {"SWRADF", 0, Use::inert, "spot weld radius scale (no spot welds here)"},
+    {"ITHOFF", 0, Use::inert, "thermal contact offset (no thermal analysis here)"},
+};
+constexpr Rule kControl6[] = {
+    {"SHLEDG", 0, Use::refuse, "shell edge shape"},
+    {"PSTIFF", 0, Use::refuse, "penalty stiffness method"},
+    {"ITHCNT", 0, Use::inert, "thermal contact option (no thermal analysis here)"},
+    {"TDCNOF", 0, Use::refuse, "tied contact node check"},
+    {"FTALL", 0, Use::refuse, "force transducers of all contacts"},
+    {"UNUSED", 0, Use::unused, ""},
+    {"SHLTRW", 0, Use::refuse, "shell thickness in rigid walls"},
+    {"IGACTC", 0, Use::inert, "isogeometric contact (no IGA here)"},
+};
+constexpr OptionalCard kControl[] = {{"card 2", kControl2}, {"card 3", kControl3}, {"card 4", kControl4},
+                                     {"card 5", kControl5}, {"card 6", kControl6}};
+
+/// Applies the rules of `cards` to the cards left in `b`, one rule set per card; a non-blank card
+/// beyond them is refused.
+void check_remaining(const Context& ctx, Block& b, std::span<const OptionalCard> cards) {
+  std::size_t k = 0;
+  while (const Line* l = b.take()) {
+    if (k < cards.size()) {
+      check_card(ctx, *l, b.keyword, cards[k].name, cards[k].rules);
+      ++k;
+    } else if (!trim(l->text).empty()) {
+      throw NotImplementedError(ctx.where(l->number) + b.keyword + ": a card after " +
+                                std::string(cards.back().name) + " is not read; remove it");
+    }
+  }
+}
+
+/// Refuses (or warns about) `name` = v on card `l` when v differs from `dflt`.
+void field(const Context& ctx, const Line* l, std::string_view kw, const char* card, Real v, const Rule& r) {
+  if (l && v != r.dflt) act(ctx, l->number, kw, card, r, v);
+}
+
+bool is_tied(ContactType t) {
+  return t == ContactType::tied_surface || t == ContactType::tied_nodes || t == ContactType::tied_shell_edge;
+}
+bool is_tiebreak(ContactType t) {
+  return t == ContactType::tiebreak_nodes || t == ContactType::tiebreak_surface;
+}
+
+/// Card 2: FS, FD, DC are honoured where the interface slides with friction; VC, VDC and PENCHK
+/// nowhere. BT and DT are the contact's birth and death (read and honoured by the builder).
+void check_card2(const Context& ctx, const model::Contact& c, const Line* l) {
+  const std::string_view kw = c.keyword;
+  if (l && (c.fs < 0.0 || c.fd < 0.0 || c.dc < 0.0))
+    throw NotImplementedError(ctx.where(l->number) + c.keyword + " card 2: FS, FD or DC < 0 (part-based "
+                              "friction, friction tables) is not implemented; give FS, FD, DC >= 0");
+  if (is_tied(c.type) || c.type == ContactType::sliding_only) {
+    // FS and FD of a sliding-only interface are refused by the builder (it is frictionless).
+    const char* why = is_tied(c.type) ? "friction of a tied interface, which does not slide"
+                                      : "friction decay of a sliding-only interface, which is frictionless";
+    if (is_tied(c.type)) {
+      field(ctx, l, kw, "card 2", c.fs, {"FS", 0, Use::inert, why});
+      field(ctx, l, kw, "card 2", c.fd, {"FD", 0, Use::inert, why});
+    }
+    field(ctx, l, kw, "card 2", c.dc, {"DC", 0, Use::inert, why});
+  }
+  field(ctx, l, kw, "card 2", c.vc, {"VC", 0, Use::refuse, "viscous friction limit"});
+  field(ctx, l, kw, "card 2", c.vdc, {"VDC", 0, Use::refuse, "viscous contact damping"});
+  field(ctx, l, kw, "card 2", c.penchk, {"PENCHK", 0, Use::refuse, "release of deep penetrations"});
+}
+
+/// Card 3: what each family of interfaces does with the stiffness and thickness fields.
+void check_card3(const Context& ctx, const model::Contact& c, const Line* l) {
+  const std::string_view kw = c.keyword;
+  const bool penalty = c.enforcement == Enforcement::penalty && !is_tied(c.type);
+  const bool stiffness = penalty || is_tiebreak(c.type);
+  // Thickness offsets: penalty and Lagrange sliding interfaces (Types 3, 5, 10, 12) only.
+  const bool offsets = !is_tied(c.type) && !is_tiebreak(c.type) && c.type != ContactType::sliding_only;
+  const bool two_way = c.type == ContactType::surface_to_surface || c.type == ContactType::one_way;
+  if (!stiffness) {
+    const char* why = "penalty scale; this interface is enforced by constraints";
+    field(ctx, l, kw, "card 3", c.sfs, {"SFS", 1, Use::inert, why});
+    field(ctx, l, kw, "card 3", c.sfm, {"SFM", 1, Use::inert, why});
+  } else if (!two_way && c.sfm != c.sfs) {
+    // A one-pass interface scales the master segments' stiffness by SFS (docs/contact.md); with
+    // SFM = SFS (or the default 1) which factor is applied makes no difference.
+    field(ctx, l, kw, "card 3", c.sfm,
+          {"SFM", 1, Use::refuse, "master penalty scale different from SFS; this one-pass interface scales by SFS"});
+  }
+  const char* no_thickness = "contact thickness; this interface has no thickness offsets";
+  field(ctx, l, kw, "card 3", offsets ? 0.0 : c.sst, {"SST", 0, Use::refuse, no_thickness});
+  field(ctx, l, kw, "card 3", offsets ? 0.0 : c.mst, {"MST", 0, Use::refuse, no_thickness});
+  field(ctx, l, kw, "card 3", offsets ? 1.0 : c.sfst, {"SFST", 1, Use::refuse, no_thickness});
+  field(ctx, l, kw, "card 3", offsets ? 1.0 : c.sfmt, {"SFMT", 1, Use::refuse, no_thickness});
+  if (c.type == ContactType::automatic) {
+    // Single surface: SST/SFST apply to every segment; MST/SFMT have no side of their own.
+    const char* single = "master thickness; a single-surface contact uses SST and SFST for every segment";
+    field(ctx, l, kw, "card 3", c.mst, {"MST", 0, Use::refuse, single});
+    field(ctx, l, kw, "card 3", c.sfmt, {"SFMT", 1, Use::refuse, single});
+  }
+  field(ctx, l, kw, "card 3", c.fsf, {"FSF", 1, Use::refuse, "Coulomb friction scale factor; scale FS and FD"});
+  field(ctx, l, kw, "card 3", c.vsf, {"VSF", 1, Use::refuse, "viscous friction scale factor"});
+}
+
+// *SECTION_SOLID, *SECTION_SHELL and *HOURGLASS fields the reader does not store (keyword manual).
+constexpr Rule kSectionSolid[] = {
+    {"SECID", 0, Use::honoured, ""}, {"ELFORM", 1, Use::honoured, ""},
+    {"AET", 0, Use::refuse, "ambient element type"},
+};
+constexpr Rule kSectionShell1[] = {
+    {"SECID", 0, Use::honoured, ""},  {"ELFORM", 2, Use::honoured, ""},
+    {"SHRF", 1, Use::honoured, ""},   {"NIP", 2, Use::honoured, ""},
+    {"PROPT", 1, Use::output, "printout option"},
+    {"QR/IRID", 0, Use::refuse, "through-thickness integration rule (0: Gauss)"},
+    {"ICOMP", 0, Use::refuse, "composite layer angles"},
+    {"SETYP", 1, Use::refuse, "2D solid element type"},
+};
+constexpr Rule kSectionShell2[] = {
+    {"T1", 0, Use::honoured, ""},     {"T2", 0, Use::honoured, ""}, {"T3", 0, Use::honoured, ""},
+    {"T4", 0, Use::honoured, ""},     {"NLOC", 0, Use::refuse, "reference surface location"},
+    {"MAREA", 0, Use::refuse, "non-structural mass per area"},
+    {"IDOF", 0, Use::refuse, "thickness field option"},
+    {"EDGSET", 0, Use::refuse, "edge node set of shell elements"},
+};
+
+}  // namespace
+
+void check_section_fields(const Context& ctx, const Line& card1, const Line* card2, std::string_view keyword,
+                          bool shell) {
+  if (!shell) return check_card(ctx, card1, keyword, "card 1", kSectionSolid);
+  check_card(ctx, card1, keyword, "card 1", kSectionShell1);
+  if (card2) check_card(ctx, *card2, keyword, "card 2", kSectionShell2);
+}
+
+void check_hourglass_fields(const Context& ctx, const Line& card, std::string_view keyword, Real qm) {
+  // QB and QW (shell bending and warping coefficients) default to QM; IBQ is unused.
+  const Rule rules[] = {{"HGID", 0, Use::honoured, ""}, {"IHQ", 1, Use::honoured, ""},
+                        {"QM", 0.1, Use::honoured, ""}, {"IBQ", 0, Use::unused, ""},
+                        {"Q1", 1.5, Use::honoured, ""}, {"Q2", 0.06, Use::honoured, ""},
+                        {"QB", qm, Use::refuse, "shell bending hourglass coefficient other than QM"},
+                        {"QW", qm, Use::refuse, "shell warping hourglass coefficient other than QM"}};
+  // 0 (blank) means QM itself.
+  const Card k(ctx, card, keyword, kStandard);
+  for (int i : {6, 7}) {
+    Real v = 0.0;
+    k.get(i, rules[i].name, v);
+    if (v != 0.0 && v != qm) act(ctx, card.number, keyword, "card 1", rules[i], v);
+  }
+}
+
+void check_contact_fields(const Context& ctx, const model::Contact& c, const Line* card1, const Line* card2,
+                          const Line* card3, const Line* card4) {
+  const std::string_view kw = c.keyword;
+  field(ctx, card1, kw, "card 1", c.spr, {"SPR", 0, Use::output, "slave side in the interface force file"});
+  field(ctx, card1, kw, "card 1", c.mpr, {"MPR", 0, Use::output, "master side in the interface force file"});
+  check_card2(ctx, c, card2);
+  check_card3(ctx, c, card3);
+  if (!card4) return;
+  // Tiebreak card 4: the fields after those read (type 8: NFLF SFLF NEN MES; type 9: OPTION NFLS
+  // SFLS) are not implemented.
+  static constexpr Rule kType8[] = {{"NFLF", 0, Use::honoured, ""}, {"SFLF", 0, Use::honoured, ""},
+                                    {"NEN", 2, Use::honoured, ""},  {"MES", 2, Use::honoured, ""},
+                                    {"(field 5)", 0, Use::refuse, "not a field of this card"},
+                                    {"(field 6)", 0, Use::refuse, "not a field of this card"},
+                                    {"(field 7)", 0, Use::refuse, "not a field of this card"},
+                                    {"(field 8)", 0, Use::refuse, "not a field of this card"}};
+  static constexpr Rule kType9[] = {{"OPTION", 0, Use::honoured, ""}, {"NFLS", 0, Use::honoured, ""},
+                                    {"SFLS", 0, Use::honoured, ""},   {"PARAM", 0, Use::refuse, "failure law parameter"},
+                                    {"ERATEN", 0, Use::refuse, "normal energy release rate"},
+                                    {"ERATES", 0, Use::refuse, "shear energy release rate"},
+                                    {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
+                                    {"CN", 0, Use::refuse, "normal stiffness"}};
+  check_card(ctx, *card4, kw, "card 4", c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
+                                                                              : std::span<const Rule>(kType9));
+}
+
+void read_contact_optional_cards(const Context& ctx, Block& b) { check_remaining(ctx, b, kOptional); }
+
+void read_control_contact_cards(const Context& ctx, Block& b, const model::ControlContact& t, int line) {
+  const Line card1{"", line, Format::standard};
+  const std::string_view kw = b.keyword;
+  field(ctx, &card1, kw, "card 1", t.rwpnal, {"RWPNAL", 0, Use::inert, "rigid-wall penalty (no *RIGIDWALL here)"});
+  field(ctx, &card1, kw, "card 1", t.islchk, {"ISLCHK", 1, Use::output, "report of initial penetrations"});
+  if (t.shlthk < 0 || t.shlthk > 2)
+    throw InputError(ctx.where(line) + b.keyword + " card 1: field SHLTHK must be 0, 1 or 2 (got " +
+                     std::to_string(t.shlthk) + ")");
+  // PENOPT 1 and 2 (the DYNA3D types take the master segment's stiffness here, docs/contact.md).
+  if (t.penopt != 2)
+    field(ctx, &card1, kw, "card 1", t.penopt, {"PENOPT", 1, Use::refuse, "penalty stiffness option"});
+  field(ctx, &card1, kw, "card 1", t.thkchg, {"THKCHG", 0, Use::refuse, "shell thickness changes in contact"});
+  field(ctx, &card1, kw, "card 1", t.orien, {"ORIEN", 1, Use::refuse, "segment orientation option"});
+  field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::inert, "mass of eroded nodes (no erosion here)"});
+  check_remaining(ctx, b, kControl);
+}
+
+}  // namespace slideline::keyword

@@ -1,0 +1,110 @@
+// *CONTROL_... cards: hourglass, bulk viscosity, termination, time step and contact. Fields whose
+// manual default is not 0 take the default for 0 as for blank (Card::get_or_default).
+#include <string>
+#include <string_view>
+
+#include "keyword_card.hpp"
+
+namespace slideline::keyword {
+namespace {
+
+using model::Model;
+
+void read_control_hourglass(const Context& ctx, Block& b, Model& m) {
+  single_card(ctx, b, [&](const Card& k, const Line&) {
+    k.get_or_default(0, "IHQ", m.control_hourglass.ihq);
+    k.get_or_default(1, "QH", m.control_hourglass.qh);
+  });
+}
+
+void read_control_bulk_viscosity(const Context& ctx, Block& b, Model& m) {
+  single_card(ctx, b, [&](const Card& k, const Line&) {
+    k.get_or_default(0, "Q1", m.bulk_viscosity.q1);
+    k.get_or_default(1, "Q2", m.bulk_viscosity.q2);
+  });
+}
+
+void read_control_termination(const Context& ctx, Block& b, Model& m) {
+  m.termination.src = ctx.source(b.line);
+  single_card(ctx, b, [&](const Card& k, const Line& l) {
+    m.termination.src = ctx.source(l.number);
+    k.get(0, "ENDTIM", m.termination.endtim);
+    k.get(1, "ENDCYC", m.termination.endcyc);
+    k.get(2, "DTMIN", m.termination.dtmin);
+    k.get(3, "ENDENG", m.termination.endeng);
+  });
+}
+
+void read_control_timestep(const Context& ctx, Block& b, Model& m) {
+  auto& t = m.timestep;
+  t.src = ctx.source(b.line);
+  single_card(ctx, b, [&](const Card& k, const Line& l) {
+    t.src = ctx.source(l.number);
+    k.get(0, "DTINIT", t.dtinit);
+    k.get_or_default(1, "TSSFAC", t.tssfac);
+    k.get(2, "ISDO", t.isdo);
+    k.get(3, "TSLIMT", t.tslimt);
+    k.get(4, "DT2MS", t.dt2ms);
+    k.get(5, "LCTM", t.lctm);
+    // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
+    // step (the stable step is always respected); DT2MS (mass scaling: physics) and LCTM are the
+    // builder's business.
+    const auto ignored = [&](bool set, const char* field, const char* what) {
+      if (set)
+        ctx.warn(l.number, std::string("*CONTROL_TIMESTEP: field ") + field + " (" + what +
+                               ") is read but not honoured; the run does without it");
+    };
+    ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
+    ignored(t.isdo != 0, "ISDO", "shell time-step length option");
+    ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
+  });
+}
+
+void read_control_contact(const Context& ctx, Block& b, Model& m) {
+  auto& t = m.control_contact;
+  int line = b.line;
+  if (const Line* l = b.take()) {
+    Card k(ctx, *l, b.keyword, kStandard);
+    line = l->number;
+    k.get_or_default(0, "SLSFAC", t.slsfac);
+    k.get(1, "RWPNAL", t.rwpnal);
+    k.get_or_default(2, "ISLCHK", t.islchk);
+    k.get(3, "SHLTHK", t.shlthk);
+    k.get_or_default(4, "PENOPT", t.penopt);
+    k.get(5, "THKCHG", t.thkchg);
+    k.get_or_default(6, "ORIEN", t.orien);
+    k.get(7, "ENMASS", t.enmass);
+  }
+  // Cards 2-6: each field at its default, refused or warned about (keyword_contact_fields.cpp).
+  read_control_contact_cards(ctx, b, t, line);
+}
+
+struct ControlEntry {
+  std::string_view name;
+  void (*read)(const Context&, Block&, Model&);
+};
+
+constexpr ControlEntry kControls[] = {
+    {"*CONTROL_HOURGLASS", read_control_hourglass},     {"*CONTROL_BULK_VISCOSITY", read_control_bulk_viscosity},
+    {"*CONTROL_TERMINATION", read_control_termination}, {"*CONTROL_TIMESTEP", read_control_timestep},
+    {"*CONTROL_CONTACT", read_control_contact},
+};
+
+}  // namespace
+
+bool is_supported_control(std::string_view keyword) {
+  for (const auto& e : kControls)
+    if (e.name == keyword) return true;
+  return false;
+}
+
+bool read_control(const Context& ctx, Block& block, model::Model& model) {
+  for (const auto& e : kControls)
+    if (e.name == block.keyword) {
+      e.read(ctx, block, model);
+      return true;
+    }
+  return false;
+}
+
+}  // namespace slideline::keyword
