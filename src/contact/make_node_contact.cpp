@@ -28,6 +28,10 @@ std::unique_ptr<ContactAlgorithm> make_nodes_to_surface(const model::Contact& ca
   auto pass = std::make_unique<PenaltyPass>(slave.nodes, std::move(offsets), master.surface,
                                             std::make_unique<FclBroadPhase>(),
                                             penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  // Orientation (search/slave_orientation.hpp): a node set by the faces of the parts it lies on.
+  const Surface faces = card.sstyp == 4 ? node_set_faces(slave.nodes, ctx, describe(card.src) + ": SSID of " + card.keyword)
+                                        : slave.surface;
+  pass->set_slave_orientation(SlaveOrientation(faces, slave.nodes));
   return make_penalty_interface<NodesToSurfaceContact>(card, title, std::move(pass));
 }
 
@@ -40,6 +44,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic(const model::Contact& card, con
                                             side.surface, std::make_unique<FclBroadPhase>(),
                                             penalty_pass_options(card, ctx, card.sfs, card.sst, card.sfst));
   pass->slave_part() = node_parts(side);
+  pass->set_slave_orientation(SlaveOrientation(side.surface, side.nodes));
   std::vector<Id> parts = side.parts;
   return make_penalty_interface<AutomaticContact>(card, title, std::move(pass), std::move(parts));
 }

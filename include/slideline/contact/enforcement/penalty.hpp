@@ -6,9 +6,10 @@
 ///
 /// Per cycle (compute(), then scatter()):
 /// - Search: when SearchCadence says a node moved more than margin / 2 since the last search, the
-///   broad phase is refitted and queried and each slave takes its nearest candidate segment;
-///   otherwise each slave tracks its segment locally (track_segment; the automatic pass instead
-///   re-picks the nearest of its still valid candidates, so that the single-surface filters hold).
+///   broad phase is refitted and queried and each slave takes, among the candidate segments that
+///   face it, the one it is over, else the nearest (search/slave_orientation.hpp); otherwise each
+///   slave tracks its segment locally (track_segment with the same rule; the automatic pass
+///   instead re-picks among its still valid candidates, so that the single-surface filters hold).
 /// - Gap: g = s (x_s - x_p) . n - o_m - o_s + g_0, with n the segment normal at the closest point
 ///   x_p, s = +1 for a solid face and the side the slave is on for a shell (frozen while in
 ///   contact), o_m half the master shell thickness, o_s the slave offset (half the slave shell
@@ -39,6 +40,7 @@
 #include "slideline/contact/search/narrow_phase.hpp"
 #include "slideline/contact/search/search_cadence.hpp"
 #include "slideline/contact/search/segment_tracking.hpp"
+#include "slideline/contact/search/slave_orientation.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 #include "slideline/mesh/segment_stiffness.hpp"
@@ -122,14 +124,16 @@ class PenaltyPass {
   Real largest_initial_penetration() const { return initial_max_; }
   /// Current signed gap of slave i (length; +inf without a segment).
   Real gap(std::size_t i) const { return gap_[i]; }
+  /// Which master segments each slave may meet (search/slave_orientation.hpp; indexed like
+  /// slaves()), set by the factory before initialize(); default: no orientation filter.
+  void set_slave_orientation(SlaveOrientation orientation) { orientation_ = std::move(orientation); }
   /// Part of each slave node (automatic pass: for the transmitted force), set by the owner.
   std::vector<Id>& slave_part() { return slave_part_; }
   const std::vector<Id>& slave_part() const { return slave_part_; }
 
  private:
   void search(const Vec3Field& x);
-  bool accepted(std::size_t i, Index s, const Vec3Field& x, const Vec3& node_n) const;
-  Vec3 node_normal(std::size_t i, const Vec3Field& x) const;
+  bool accepted(std::size_t i, Index s, const Vec3Field& x) const;
   Real master_offset(Index s) const {
     if (!opt_.shell_thickness || master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) return 0.0;
     const Real t = opt_.master_thickness > 0.0 ? opt_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
@@ -163,8 +167,8 @@ class PenaltyPass {
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
   std::vector<Id> slave_part_;
-  std::vector<Index> slave_row_;        ///< automatic: row of the slave in master_.nodes
   std::vector<std::uint8_t> slave_solid_;  ///< automatic: the slave node has only solid faces
+  SlaveOrientation orientation_;
   Real dt_ = std::numeric_limits<Real>::max();
   Index initial_count_ = 0;
   Real initial_max_ = 0.0;
