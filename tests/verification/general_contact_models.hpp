@@ -80,11 +80,17 @@ inline BoxIds add_box(model::Model& m, Id pid, const Vec3& origin, const Vec3& s
   return b;
 }
 
-/// An elastic part (material, section and part of id `pid`), viscous hourglass control.
-inline void add_elastic_part(model::Model& m, Id pid, Real rho, Real e, Real nu) {
+/// An elastic part (material, section and part of id `pid`), hourglass control `ihq` (1: the
+/// default viscous form; 10: total-displacement physical stiffness, the spec's).
+inline void add_elastic_part(model::Model& m, Id pid, Real rho, Real e, Real nu, int ihq = 1) {
   m.materials.push_back(model::MatElastic{pid, rho, e, nu, "elastic", {}});
   m.solid_sections.push_back({pid, 1, {}});
-  m.parts.push_back({pid, "part" + std::to_string(pid), pid, pid, 0, 0, {}});
+  Id hgid = 0;
+  if (ihq != 1) {
+    hgid = pid;
+    m.hourglasses.push_back({hgid, ihq, ihq == 10 ? 1.0 : 0.1, 1.5, 0.06, {}});
+  }
+  m.parts.push_back({pid, "part" + std::to_string(pid), pid, pid, 0, hgid, {}});
 }
 
 /// One interface of every type that applies (DYNA3D numbering) between a slave and a master part.

@@ -48,8 +48,11 @@ struct InclineResult {
 InclineResult run_incline(const InclineCase& ic) {
   const Frame frame = ic.rotated ? test_support::oblique_frame() : Frame{};
   model::Model m;
-  add_elastic_part(m, 1, 1.0, 1e5, 0.3);
-  add_elastic_part(m, 2, 1.0, 1e5, 0.3);
+  // Stiffness hourglass control (the spec's type 10): with the default viscous form the friction
+  // load drives the block's hourglass modes at a constant rate, which reads as a creep of
+  // 4.9e-5 per unit time while every contact node sticks (measured, Types 3 and 12 alike).
+  add_elastic_part(m, 1, 1.0, 1e5, 0.3, 10);
+  add_elastic_part(m, 2, 1.0, 1e5, 0.3, 10);
   const BoxIds block = add_box(m, 1, Vec3(0.32, 0.0, 0.28), Vec3(0.4, 0.2, 0.4), {2, 1, 2}, frame);
   const BoxIds plane = add_box(m, 2, Vec3(0.0, -0.25, 0.0), Vec3(3.0, 0.25, 1.0), {6, 1, 2}, frame);
   m.node_sets.push_back({1, "block", block.node, {}});
@@ -85,21 +88,26 @@ InclineResult run_incline(const InclineCase& ic) {
 
 class Incline : public ::testing::TestWithParam<InclineCase> {};
 
-// Tolerances (docs/verification.md, "General contact"): 35 deg within 0.15 % of the slide (the
-// stick spring's elastic slip, 1e-3 of a segment diagonal, and the block's contact vibration are
-// 1e-4 of it; OpenRadioss TYPE7 0.2 %); 20 deg within 1 % (a = 0.60 against g sin theta = 3.42:
-// the same absolute errors weigh 5.5 x more; TYPE7 +1.3 %); sticking (15 deg) creeps less than
-// 1e-4 of the block's size. The block never lifts off by more than 1e-4 (a snag at a node row
-// lifts it by 1e-3..5e-3).
+// Tolerances (docs/verification.md, "Beyond the spec"):
+// - 35 deg: 0.05 % of the slide. The penalty stick spring lags by at most its elastic slip
+//   gamma = 1e-3 x the master's diagonal (7e-4, 4e-4 of the slide); Lagrange has none. Measured
+//   3e-6 (penalty) and 1e-6 (Lagrange); OpenRadioss TYPE7 0.2 %.
+// - 20 deg: 0.5 % (the same gamma is 0.24 % of this slide; measured 2.0e-4 to 2.4e-4; TYPE7 +1.3 %).
+// - sticking (15 deg): the block moves less than 1e-5 (its elastic shear under the friction,
+//   tau h / G = 2.7e-6 at its top, and the stick spring's F_t / k_t; measured 0.9e-6 to 1.1e-6)
+//   and does not creep: |x(t) - x(t/2)| < 2e-7 (the residual elastic vibration; measured
+//   3e-8 to 6e-8; 2.4e-5 with viscous hourglass control, see run_incline).
+// - lift of the block off the plane below 1e-4 (a snag at a node row lifted it by 1e-3..5e-3).
 TEST_P(Incline, SlidesAsTheRigidBlockSolution) {
   const InclineCase ic = GetParam();
   const InclineResult r = run_incline(ic);
-  std::printf("%-36s slide %.6f exact %.6f (x%.5f)  lift %.2e  half %.3e\n", ic.name().c_str(), r.slide, r.exact,
-              r.exact > 0 ? r.slide / r.exact : 0.0, r.lift, r.half);
+  std::printf("%-36s slide %.6e exact %.6e (x%.6f)  lift %.2e  slide at t/2 %.3e\n", ic.name().c_str(), r.slide,
+              r.exact, r.exact > 0 ? r.slide / r.exact : 0.0, r.lift, r.half);
   if (r.exact > 0.0) {
-    EXPECT_NEAR(r.slide / r.exact, 1.0, ic.degrees > 30.0 ? 0.0015 : 0.01);
+    EXPECT_NEAR(r.slide / r.exact, 1.0, ic.degrees > 30.0 ? 5e-4 : 5e-3);
   } else {
-    EXPECT_LT(std::abs(r.slide), 1e-4 * 0.4);
+    EXPECT_LT(std::abs(r.slide), 1e-5);
+    EXPECT_LT(std::abs(r.slide - r.half), 2e-7);
   }
   EXPECT_LT(r.lift, 1e-4);
 }

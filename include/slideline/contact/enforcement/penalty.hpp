@@ -17,6 +17,8 @@
 /// - Normal force on the slave: f_n = -k g n for g < 0 (also for g > 0 on a "sliding only" pass
 ///   once the node has touched), k the master segment's stiffness (force / length):
 ///   solid face k = f K A^2 / V, shell k = f K A / (max diagonal), f = SLSFAC x SFS (or SFM).
+///   A slave beside its segment, or deeper behind it than half its diagonal (a solid face: also
+///   half its element's thickness V / A), has no force from it.
 /// - Friction: trial = (previous tangential force turned into the current tangent plane)
 ///   - k_t du_t, du_t the tangential slave-minus-master-point displacement over the last step
 ///   (dt_prev v^{n-1/2}), k_t = k; mu = mu_k + (mu_s - mu_k) exp(-beta |du_t| / dt_prev);
@@ -133,6 +135,7 @@ class PenaltyPass {
 
  private:
   void search(const Vec3Field& x);
+  void set_depth_limits(const NodalFields& nodes, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
   bool accepted(std::size_t i, Index s, const Vec3Field& x) const;
   Real master_offset(Index s) const {
     if (!opt_.shell_thickness || master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) return 0.0;
@@ -164,6 +167,7 @@ class PenaltyPass {
   std::vector<Vec3> ue_;                ///< elastic slip: contact point - sticking point (length)
   std::vector<Real> slip_seg_;          ///< per master segment: gamma (length)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
+  std::vector<Real> depth_seg_;         ///< per master segment: deepest contact (length; empty: half its size)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
   std::vector<Id> slave_part_;

@@ -21,7 +21,26 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
     }
     k_seg_[static_cast<std::size_t>(s)] = opt_.stiffness_scale * k;
   }
+  set_depth_limits(nodes, blocks);
   initialize(nodes, std::move(k_seg_));
+}
+
+/// The deepest a slave may be behind a master segment and still belong to it: half the segment
+/// (its longer diagonal), and for a solid face also half the thickness of its element (volume /
+/// face area): deeper, the node is nearer the element's far side, e.g. a node on the bottom of
+/// a one-element slab against the slab's own top face (single-surface contact). Allocates.
+inline void PenaltyPass::set_depth_limits(const NodalFields& nodes,
+                                          const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
+  const Index ns = master_.segment_count();
+  depth_seg_.assign(static_cast<std::size_t>(ns), 0.0);
+  for (Index s = 0; s < ns; ++s) {
+    Real limit = 0.5 * segment_max_diagonal(master_, s, nodes.x);
+    if (master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) {
+      const SegmentStiffnessData d = segment_stiffness_data(master_, s, blocks, nodes.x);
+      if (d.face_area > 0.0 && d.element_volume > 0.0) limit = std::min(limit, 0.5 * d.element_volume / d.face_area);
+    }
+    depth_seg_[static_cast<std::size_t>(s)] = limit;
+  }
 }
 
 inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness) {
@@ -252,7 +271,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
     }
   }
   // A point beside the segment (the closest point on an edge, the slave off to the side) or
-  // deeper than half the segment is not in contact with it.
+  // deeper than its depth limit (set_depth_limits) is not in contact with it.
   const Vec3 p = nodes.x.get(node);
   const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
   const Real offsets = master_offset(s) + slave_offset_[i];
@@ -263,7 +282,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   }
   gap_[i] = gap;
   const bool beside = lateral > 1e-3 * pr.size;
-  const bool too_deep = raw < -0.5 * pr.size;
+  const bool too_deep = raw < -(depth_seg_.empty() ? 0.5 * pr.size : depth_seg_[su]);
   const bool engaged = !beside && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
   if (!engaged) {
     ue_[i] = Vec3::Zero();

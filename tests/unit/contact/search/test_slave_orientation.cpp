@@ -14,11 +14,19 @@ using namespace slideline;
 
 namespace {
 
+/// Grows x by `extra` points, keeping the existing ones (Vec3Field::resize does not).
+void grow(Vec3Field& x, std::size_t extra) {
+  std::vector<Vec3> old;
+  for (std::size_t i = 0; i < x.size(); ++i) old.push_back(x.get(static_cast<Index>(i)));
+  x.resize(old.size() + extra);
+  for (std::size_t i = 0; i < old.size(); ++i) x.set(static_cast<Index>(i), old[i]);
+}
+
 /// Appends a cube [o, o + 1]^3 (8 nodes) to x and its 6 outward faces to s's conn, in the order
 /// -x, +x, -y, +y, -z, +z (segment ids first_face + 0..5).
 void add_cube(Vec3Field& x, Surface& s, const Vec3& o) {
   const Index b = static_cast<Index>(x.size());
-  x.resize(x.size() + 8);
+  grow(x, 8);
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) x.set(b + i + 2 * j + 4 * k, o + Vec3(i, j, k));
@@ -77,7 +85,7 @@ TEST(SlaveOrientation, NodeAheadOfASlidingBlockDoesNotTakeItsLeadingFace) {
   test::finish_surface(block);
   // The plane: one quadrilateral y = 0 (normal +y), x in [1, 3], z in [-1, 2].
   const Index b = static_cast<Index>(x.size());
-  x.resize(x.size() + 4);
+  grow(x, 4);
   x.set(b, Vec3(1, 0, -1));
   x.set(b + 1, Vec3(1, 0, 2));
   x.set(b + 2, Vec3(3, 0, 2));
@@ -119,8 +127,9 @@ TEST(SlaveOrientation, ShellAndDiscreteNodesAreNotFiltered) {
   EXPECT_FALSE(on_shell.filtered(1));
   EXPECT_TRUE(on_solid.filtered(0));
   EXPECT_FALSE(on_solid.filtered(1));
-  // Node 0's own faces are -x, -y, -z: the cube's own +x face faces none of them.
-  EXPECT_FALSE(on_solid.admits(0, cube, 1, x));
-  EXPECT_FALSE(on_solid.admits(0, cube, 0, x));  // -x . -x = +1: not opposed either
+  // Node 0's own faces are -x, -y, -z: the opposite +x face opposes its -x face; its own -x
+  // face's plane does not face it.
+  EXPECT_TRUE(on_solid.admits(0, cube, 1, x));
+  EXPECT_FALSE(on_solid.admits(0, cube, 0, x));
   EXPECT_TRUE(on_shell.admits(0, cube, 1, x));
 }
