@@ -16,8 +16,8 @@
 ///     normals oppose theirs, search/slave_orientation.hpp), the one it is over, else the nearest,
 ///     by closest-point projection at x^n;
 ///  2. a constraint for each slave whose projection is over the segment (lateral offset below
-///     2 % of the segment size), not deeper than half the segment size and within the search
-///     allowance of contact;
+///     2 % of the segment size), not deeper than contact_depth_limit (half the segment size; for
+///     a solid face also half its element's thickness) and within the search allowance;
 ///  3. the multipliers, warm-started from the previous cycle, by projected Gauss-Seidel;
 ///  4. friction work, forces and the history (multipliers, slip speed) for the next cycle.
 /// The interface imposes no time step. Immovable nodes (fixed components, rigid bodies) take the
@@ -114,6 +114,8 @@ class LagrangeInterface final : public ContactAlgorithm {
     const std::size_t ns = slaves_.size();
     const Index nseg = master_.segment_count();
     master_offset_.assign(static_cast<std::size_t>(nseg), 0.0);
+    depth_.resize(static_cast<std::size_t>(nseg));
+    for (Index s = 0; s < nseg; ++s) depth_[static_cast<std::size_t>(s)] = contact_depth_limit(master_, s, c.blocks, c.nodes.x);
     Real min_size = std::numeric_limits<Real>::max(), max_master_offset = 0.0;
     for (Index s = 0; s < nseg; ++s) {
       const auto cs = segment_corners(master_, s, c.nodes.x);
@@ -277,7 +279,7 @@ class LagrangeInterface final : public ContactAlgorithm {
     const Real gap = static_cast<Real>(side_[i]) * (x.get(slave) - pr.point).dot(nseg) - target;
     const Vec3 d = x.get(slave) - pr.point;
     if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
-    if (gap < -0.5 * pr.size) return false;                                // far behind it
+    if (gap < -depth_[static_cast<std::size_t>(seg)]) return false;        // far behind it
     if (Kind::bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
     LagrangeConstraint k;
     k.slave = slave;
@@ -476,7 +478,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   Surface master_, slave_surface_, orientation_surface_;
   SlaveOrientation orientation_;
   std::vector<Index> slaves_, first_part_nodes_;
-  std::vector<Real> master_offset_, slave_offset_;
+  std::vector<Real> master_offset_, slave_offset_, depth_;  ///< depth_: contact_depth_limit per segment
   std::vector<std::uint8_t> in_first_;
   Real allowance_ = 0.0, tolerance_ = 0.0;
   std::unique_ptr<BroadPhase> broad_;

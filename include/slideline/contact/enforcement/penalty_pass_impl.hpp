@@ -25,22 +25,12 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
   initialize(nodes, std::move(k_seg_));
 }
 
-/// The deepest a slave may be behind a master segment and still belong to it: half the segment
-/// (its longer diagonal), and for a solid face also half the thickness of its element (volume /
-/// face area): deeper, the node is nearer the element's far side, e.g. a node on the bottom of
-/// a one-element slab against the slab's own top face (single-surface contact). Allocates.
+/// Per master segment, the deepest contact (contact_depth_limit, search/slave_orientation.hpp).
 inline void PenaltyPass::set_depth_limits(const NodalFields& nodes,
                                           const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
-  const Index ns = master_.segment_count();
-  depth_seg_.assign(static_cast<std::size_t>(ns), 0.0);
-  for (Index s = 0; s < ns; ++s) {
-    Real limit = 0.5 * segment_max_diagonal(master_, s, nodes.x);
-    if (master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) {
-      const SegmentStiffnessData d = segment_stiffness_data(master_, s, blocks, nodes.x);
-      if (d.face_area > 0.0 && d.element_volume > 0.0) limit = std::min(limit, 0.5 * d.element_volume / d.face_area);
-    }
-    depth_seg_[static_cast<std::size_t>(s)] = limit;
-  }
+  depth_seg_.resize(static_cast<std::size_t>(master_.segment_count()));
+  for (Index s = 0; s < master_.segment_count(); ++s)
+    depth_seg_[static_cast<std::size_t>(s)] = contact_depth_limit(master_, s, blocks, nodes.x);
 }
 
 inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness) {

@@ -24,11 +24,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "slideline/contact/search/closest_point.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
+#include "slideline/mesh/segment_stiffness.hpp"
 #include "slideline/mesh/surface.hpp"
 
 namespace slideline {
@@ -86,6 +88,23 @@ class SlaveOrientation {
   std::vector<Index> offset_;  ///< slaves + 1 entries (empty: nothing filtered)
   std::vector<Index> conn_;    ///< 4 nodes per own face
 };
+
+/// The deepest a slave may be behind segment s of `master` (at coordinates x) and still belong to
+/// it (length): half its longer diagonal and, for a solid face, half the thickness of its element
+/// (volume / face area). Deeper, the node is nearer the element's far side: e.g. a node on the
+/// bottom of a one-element slab against the slab's own top face in single-surface contact.
+/// Needs blocks[master.block[s]] to hold the face's element; without it, half the diagonal.
+inline Real contact_depth_limit(const Surface& master, Index s, const std::vector<std::unique_ptr<ElementBlock>>& blocks,
+                                const Vec3Field& x) {
+  Real limit = 0.5 * segment_max_diagonal(master, s, x);
+  const std::size_t su = static_cast<std::size_t>(s);
+  if (master.kind[su] == SegmentKind::shell || master.block.size() <= su ||
+      static_cast<std::size_t>(master.block[su]) >= blocks.size())
+    return limit;  // a shell, or a surface given without its elements (tests)
+  const SegmentStiffnessData d = segment_stiffness_data(master, s, blocks, x);
+  if (d.face_area > 0.0 && d.element_volume > 0.0) limit = std::min(limit, 0.5 * d.element_volume / d.face_area);
+  return limit;
+}
 
 /// The offset of p from the normal line through the closest point of `pr` (length).
 inline Real lateral_offset(const Vec3& p, const Projection& pr) {
