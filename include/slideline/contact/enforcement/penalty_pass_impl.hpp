@@ -173,9 +173,9 @@ inline void PenaltyPass::pick_nearest_candidates(const Vec3Field& x) {
     bool best_over = false;
     for (std::size_t k = run_begin_[i]; k < run_end_[i]; ++k) {
       const Index s = candidates_[k].segment;
-      if (!accepted(i, s, x)) continue;
       const SegmentCorners c = segment_corners(master_, s, x);
-      if (best_over && cannot_beat(p, c, best.projection)) continue;
+      if (best_over && cannot_beat(p, c, best.projection)) continue;  // cheaper than the filters
+      if (!accepted(i, s, x)) continue;
       const Projection pr = master_.is_triangle(s) ? project_point_to_triangle(p, c) : project_point_to_quad(p, c);
       if (best.segment < 0 || is_better_contact(p, pr, s, best.projection, best.segment)) {
         best.segment = s;
