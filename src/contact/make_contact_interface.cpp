@@ -56,6 +56,18 @@ Surface segments_in_box(const Surface& surf, const model::Box& box, const NodalF
 
 }  // namespace
 
+Surface node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& context) {
+  std::vector<Id> parts;
+  for (const auto& [pid, part_nodes] : ctx.sets.part_nodes)
+    if (std::any_of(nodes.begin(), nodes.end(),
+                    [&](Index n) { return std::binary_search(part_nodes.begin(), part_nodes.end(), n); }))
+      parts.push_back(pid);
+  Surface faces;
+  if (!parts.empty()) faces = build_surface_from_parts(ctx.blocks, ctx.nodes, parts, context);
+  build_surface_adjacency(faces);
+  return faces;
+}
+
 std::string contact_title(const model::Contact& card, std::size_t position) {
   if (!card.title.empty()) return card.title;
   if (card.cid != 0) return "contact_" + std::to_string(card.cid);

@@ -74,8 +74,15 @@ std::unique_ptr<ContactAlgorithm> make_lagrange_contact(const model::Contact& ca
   std::vector<Index> first;
   if (automatic && !slave.parts.empty())
     first = ctx.sets.nodes_of_part(slave.parts.front(), describe(card.src) + ": SSID of " + card.keyword);
-  return std::make_unique<LagrangeContact>(std::move(s), std::move(master.surface), std::move(slave.nodes),
-                                           std::move(slave.surface), std::move(first));
+  // Node-set slaves (Type 5) are oriented by the faces of the parts they lie on
+  // (search/slave_orientation.hpp); a slave surface orients its own nodes.
+  Surface faces;
+  if (slave.surface.nodes.empty())
+    faces = node_set_faces(slave.nodes, ctx, describe(card.src) + ": SSID of " + card.keyword);
+  auto contact = std::make_unique<LagrangeContact>(std::move(s), std::move(master.surface), std::move(slave.nodes),
+                                                   std::move(slave.surface), std::move(first));
+  contact->set_orientation_surface(std::move(faces));
+  return contact;
 }
 
 }  // namespace slideline

@@ -27,6 +27,10 @@ std::unique_ptr<ContactAlgorithm> make_nodes_to_surface(const model::Contact& ca
   }
   auto pass = make_penalty_pass(slave, std::move(offsets), master.surface,
                                penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  // Orientation (search/slave_orientation.hpp): a node set by the faces of the parts it lies on.
+  const Surface faces = card.sstyp == 4 ? node_set_faces(slave.nodes, ctx, describe(card.src) + ": SSID of " + card.keyword)
+                                        : slave.surface;
+  pass->set_slave_orientation(SlaveOrientation(faces, slave.nodes));
   return make_penalty_interface<NodesToSurfaceContact>(card, title, std::move(pass));
 }
 
@@ -38,6 +42,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic(const model::Contact& card, con
   auto pass = make_penalty_pass(side, shell_half_thickness(side, true, card.sst, card.sfst), side.surface,
                                penalty_pass_options(card, ctx, card.sfs, card.sst, card.sfst));
   pass->slave_part() = node_parts(side);
+  pass->set_slave_orientation(SlaveOrientation(side.surface, side.nodes));
   std::vector<Id> parts = side.parts;
   return make_penalty_interface<AutomaticContact>(card, title, std::move(pass), std::move(parts));
 }

@@ -18,11 +18,13 @@ std::unique_ptr<ContactAlgorithm> make_sliding_contact(const model::Contact& car
   // Slave nodes on master segments (stiffness factor SLSFAC x SFS).
   auto slave_pass = make_penalty_pass(slave, shell_half_thickness(slave, thk, card.sst, card.sfst), master.surface,
                                       penalty_pass_options(card, ctx, card.sfs, card.mst, card.sfmt));
+  slave_pass->set_slave_orientation(SlaveOrientation(slave.surface, slave.nodes));
   if (card.type != model::ContactType::surface_to_surface)
     return make_penalty_interface<OneWayContact>(card, title, std::move(slave_pass));
   // Type 3's second pass: master nodes on slave segments (SLSFAC x SFM).
   auto master_pass = make_penalty_pass(master, shell_half_thickness(master, thk, card.mst, card.sfmt), slave.surface,
                                        penalty_pass_options(card, ctx, card.sfm, card.sst, card.sfst));
+  master_pass->set_slave_orientation(SlaveOrientation(master.surface, master.nodes));
   return make_penalty_interface<SurfaceToSurfaceContact>(card, title, std::move(slave_pass), std::move(master_pass));
 }
 

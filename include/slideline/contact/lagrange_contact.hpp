@@ -12,12 +12,12 @@
 ///
 /// Per cycle, in enforce() (t^n, accelerations formed, ties, rigid bodies and supports done):
 ///  1. pairs: a broad-phase search (FCL tree) when SearchCadence says one is due, else local
-///     tracking from each slave's segment; the nearest segment by closest-point projection at x^n;
+///     tracking from each slave's segment; among the segments that face the slave (its own faces'
+///     normals oppose theirs, search/slave_orientation.hpp), the one it is over, else the nearest,
+///     by closest-point projection at x^n;
 ///  2. a constraint for each slave whose projection is over the segment (lateral offset below
-///     2 % of the segment size), not deeper than half the segment size, within the search
-///     allowance of contact, and (for a slave surface) whose node normal opposes the master normal
-///     (n_s . n_m <= -0.5; |n_s . n_m| >= 0.5 for shells): the last rule keeps a block's edge from
-///     catching the nodes of the surface it slides on in single-surface (Type 12) contact;
+///     2 % of the segment size), not deeper than contact_depth_limit (half the segment size; for
+///     a solid face also half its element's thickness) and within the search allowance;
 ///  3. the multipliers, warm-started from the previous cycle, by projected Gauss-Seidel;
 ///  4. friction work, forces and the history (multipliers, slip speed) for the next cycle.
 /// The interface imposes no time step. Immovable nodes (fixed components, rigid bodies) take the
@@ -105,10 +105,17 @@ class LagrangeInterface final : public ContactAlgorithm {
 
   const std::string& name() const override { return s_.title; }
 
+  /// The faces that orient node-set slaves (Type 5: the exterior faces of the parts the nodes
+  /// belong to; search/slave_orientation.hpp); set before initialize(). Slaves of a slave
+  /// surface are oriented by that surface.
+  void set_orientation_surface(Surface faces) { orientation_surface_ = std::move(faces); }
+
   void initialize(const ContactContext& c) override {
     const std::size_t ns = slaves_.size();
     const Index nseg = master_.segment_count();
     master_offset_.assign(static_cast<std::size_t>(nseg), 0.0);
+    depth_.resize(static_cast<std::size_t>(nseg));
+    for (Index s = 0; s < nseg; ++s) depth_[static_cast<std::size_t>(s)] = contact_depth_limit(master_, s, c.blocks, c.nodes.x);
     Real min_size = std::numeric_limits<Real>::max(), max_master_offset = 0.0;
     for (Index s = 0; s < nseg; ++s) {
       const auto cs = segment_corners(master_, s, c.nodes.x);
@@ -123,20 +130,16 @@ class LagrangeInterface final : public ContactAlgorithm {
     allowance_ = 0.25 * min_size;
     tolerance_ = s_.solve.tolerance * min_size;
     slave_offset_.assign(ns, s_.nodal_radius);
-    slave_row_.assign(ns, -1);
-    slave_shell_.assign(ns, 0);
+    orientation_ = SlaveOrientation(orientation_surface_.nodes.empty() ? slave_surface_ : orientation_surface_, slaves_);
     if (!slave_surface_.nodes.empty()) {
       for (std::size_t i = 0; i < ns; ++i) {
         const auto it = std::lower_bound(slave_surface_.nodes.begin(), slave_surface_.nodes.end(), slaves_[i]);
         if (it == slave_surface_.nodes.end() || *it != slaves_[i]) continue;
         const Index row = static_cast<Index>(it - slave_surface_.nodes.begin());
-        slave_row_[i] = row;
         Real off = 0.0;
         for (Index j = slave_surface_.node_segments.begin(row); j < slave_surface_.node_segments.end(row); ++j) {
           const auto seg = static_cast<std::size_t>(slave_surface_.node_segments.value[static_cast<std::size_t>(j)]);
-          if (slave_surface_.kind[seg] != SegmentKind::shell) continue;
-          slave_shell_[i] = 1;
-          if (!s_.shell_offsets) continue;
+          if (slave_surface_.kind[seg] != SegmentKind::shell || !s_.shell_offsets) continue;
           const Real t = s_.slave_thickness > 0.0 ? s_.slave_thickness : slave_surface_.thickness[seg];
           off = std::max(off, 0.5 * t * s_.slave_thickness_scale);
         }
@@ -160,7 +163,6 @@ class LagrangeInterface final : public ContactAlgorithm {
     lambda_.assign(ns, 0.0);
     tau_.assign(ns, Vec3::Zero());
     slip_speed_.assign(ns, 0.0);
-    normal_.assign(ns, Vec3::Zero());
     constraints_.clear();
     constraints_.reserve(ns);
     owner_.clear();
@@ -186,7 +188,6 @@ class LagrangeInterface final : public ContactAlgorithm {
     owner_.clear();
     if (times.t < s_.birth || times.t > s_.death || !(times.dt_next > 0.0)) return;
     find_segments(view.nodes.x);
-    slave_normals(view.nodes.x);
     form_constraints(view.nodes.x, times);
     if (s_.one_constraint_per_mutual_pair) drop_mutual_duplicates(view.nodes.x);
     if (constraints_.empty()) {
@@ -237,31 +238,14 @@ class LagrangeInterface final : public ContactAlgorithm {
     if (cadence_.is_due(x)) {
       broad_->update(x);
       broad_->query(slaves_, x, slave_offset_, candidates_);
-      assign_nearest_segments(slaves_, candidates_, master_, x, found_);
+      assign_nearest_segments(slaves_, candidates_, master_, x, found_, {}, &orientation_);
       cadence_.mark_searched(x);
     } else {
-      track_segments(slaves_, segment_, master_, x, tracked_);
+      track_segments(slaves_, segment_, master_, x, tracked_, {}, &orientation_);
       std::swap(found_, tracked_);
     }
     for (std::size_t i = 0; i < slaves_.size(); ++i) {
       segment_[i] = found_[i].segment;  // the shell side (side_) is kept across segments
-    }
-  }
-
-  /// Mean normal of each slave node's segments (outward for solid faces), zero for node sets.
-  void slave_normals(const Vec3Field& x) {
-    if (slave_surface_.nodes.empty()) return;
-    for (std::size_t i = 0; i < slaves_.size(); ++i) {
-      const Index row = slave_row_[i];
-      Vec3 n = Vec3::Zero();
-      if (row >= 0) {
-        for (Index j = slave_surface_.node_segments.begin(row); j < slave_surface_.node_segments.end(row); ++j) {
-          const auto c = segment_corners(slave_surface_, slave_surface_.node_segments.value[static_cast<std::size_t>(j)], x);
-          const Vec3 d = (c[2] - c[0]).cross(c[3] - c[1]);
-          if (d.norm() > 0.0) n += d.normalized();
-        }
-      }
-      normal_[i] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
     }
   }
 
@@ -296,12 +280,8 @@ class LagrangeInterface final : public ContactAlgorithm {
     const Real gap = static_cast<Real>(side_[i]) * (x.get(slave) - pr.point).dot(nseg) - target;
     const Vec3 d = x.get(slave) - pr.point;
     if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
-    if (gap < -0.5 * pr.size) return false;                                // far behind it
+    if (gap < -depth_[static_cast<std::size_t>(seg)]) return false;        // far behind it
     if (Kind::bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
-    if (normal_[i].squaredNorm() > 0.0) {
-      const Real c = normal_[i].dot(n);
-      if (slave_shell_[i] ? std::abs(c) < 0.5 : c > -0.5) return false;
-    }
     LagrangeConstraint k;
     k.slave = slave;
     for (int a = 0; a < 4; ++a) k.master[static_cast<std::size_t>(a)] = conn[a];
@@ -375,7 +355,8 @@ class LagrangeInterface final : public ContactAlgorithm {
     for (std::size_t k = 0; k < constraints_.size(); ++k) {
       LagrangeConstraint& c = constraints_[k];
       const auto i = static_cast<std::size_t>(owner_[k]);
-      const SegmentProjection sp = track_segment(predicted_.get(c.slave), segment_[i], master_, predicted_);
+      const SegmentProjection sp = track_segment(predicted_.get(c.slave), segment_[i], master_, predicted_,
+                                                 TrackingOptions{}, FacingRule{&orientation_, i, &master_, &predicted_});
       const Index seg = sp.segment;
       const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
       if (conn[0] == c.slave || conn[1] == c.slave || conn[2] == c.slave || conn[3] == c.slave) continue;
@@ -494,11 +475,11 @@ class LagrangeInterface final : public ContactAlgorithm {
   }
 
   LagrangeContactSettings s_;
-  Surface master_, slave_surface_;
+  Surface master_, slave_surface_, orientation_surface_;
+  SlaveOrientation orientation_;
   std::vector<Index> slaves_, first_part_nodes_;
-  std::vector<Real> master_offset_, slave_offset_;
-  std::vector<Index> slave_row_;
-  std::vector<std::uint8_t> slave_shell_, in_first_;
+  std::vector<Real> master_offset_, slave_offset_, depth_;  ///< depth_: contact_depth_limit per segment
+  std::vector<std::uint8_t> in_first_;
   Real allowance_ = 0.0, tolerance_ = 0.0;
   std::unique_ptr<BroadPhase> broad_;
   SearchCadence cadence_;
@@ -507,7 +488,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   std::vector<Index> segment_;
   std::vector<signed char> side_;
   std::vector<Real> lambda_, slip_speed_;
-  std::vector<Vec3> tau_, normal_;
+  std::vector<Vec3> tau_;
   std::vector<LagrangeConstraint> constraints_;
   std::vector<Index> owner_;
   Vec3 slave_force_ = Vec3::Zero(), master_force_ = Vec3::Zero(), transmitted_ = Vec3::Zero();

@@ -37,6 +37,11 @@ struct ContactSide {
 /// (slave side only), 5 all parts. Throws InputError naming the card's file:line and field.
 ContactSide resolve_contact_side(const model::Contact& card, bool slave, const ContactBuildContext& ctx);
 
+/// The faces that orient the nodes of a node-set slave side (Type 5; search/slave_orientation.hpp):
+/// the exterior faces of every part that holds one of `nodes` (faces shared by two such parts
+/// are interior and left out), adjacency built; empty when no part holds them. Allocates.
+Surface node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& context);
+
 /// The interface title: the card's heading, else "contact_<cid>", else "contact_<k>" (k = the
 /// card's position among the deck's contacts, from 1).
 std::string contact_title(const model::Contact& card, std::size_t position);

@@ -6,9 +6,10 @@
 ///
 /// Per cycle (compute(), then scatter()):
 /// - Search: when SearchCadence says a node moved more than margin / 2 since the last search, the
-///   broad phase is refitted and queried and each slave takes its nearest candidate segment;
-///   otherwise each slave tracks its segment locally (track_segment; the automatic pass instead
-///   re-picks the nearest of its still valid candidates, so that the single-surface filters hold).
+///   broad phase is refitted and queried and each slave takes, among the candidate segments that
+///   face it, the one it is over, else the nearest (search/slave_orientation.hpp); otherwise each
+///   slave tracks its segment locally (track_segment with the same rule; the automatic pass
+///   instead re-picks among its still valid candidates, so that the single-surface filters hold).
 /// - Gap: g = s (x_s - x_p) . n - o_m - o_s + g_0, with n the segment normal at the closest point
 ///   x_p, s = +1 for a solid face and the side the slave is on for a shell (frozen while in
 ///   contact), o_m half the master shell thickness, o_s the slave offset (half the slave shell
@@ -18,6 +19,8 @@
 ///   solid face k = f K A^2 / V, shell k = f K A / (max diagonal), f = SLSFAC x SFS (or SFM);
 ///   with the mortar coupling (PenaltyCoupling), k / A x the slave node's tributary area over the
 ///   master, and the gap and forces on mortar-weighted master points.
+///   A slave beside its segment (default coupling), or deeper behind it than half its diagonal (a
+///   solid face: also half its element's thickness V / A), has no force from it.
 /// - Friction: trial = (previous tangential force turned into the current tangent plane)
 ///   - k_t du_t, du_t the tangential slave-minus-master-point displacement over the last step
 ///   (dt_prev v^{n-1/2}), k_t = k; mu = mu_k + (mu_s - mu_k) exp(-beta |du_t| / dt_prev);
@@ -42,6 +45,7 @@
 #include "slideline/contact/search/narrow_phase.hpp"
 #include "slideline/contact/search/search_cadence.hpp"
 #include "slideline/contact/search/segment_tracking.hpp"
+#include "slideline/contact/search/slave_orientation.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 #include "slideline/mesh/segment_stiffness.hpp"
@@ -142,14 +146,17 @@ class PenaltyPass {
   /// The surface the slaves come from (its nodes are the slaves, in order), for the mortar
   /// coupling (PenaltyPassOptions::coupling); call before initialize().
   void set_slave_surface(Surface surface) { slave_surface_ = std::move(surface); }
+  /// Which master segments each slave may meet (search/slave_orientation.hpp; indexed like
+  /// slaves()), set by the factory before initialize(); default: no orientation filter.
+  void set_slave_orientation(SlaveOrientation orientation) { orientation_ = std::move(orientation); }
   /// Part of each slave node (automatic pass: for the transmitted force), set by the owner.
   std::vector<Id>& slave_part() { return slave_part_; }
   const std::vector<Id>& slave_part() const { return slave_part_; }
 
  private:
   void search(const Vec3Field& x);
-  bool accepted(std::size_t i, Index s, const Vec3Field& x, const Vec3& node_n) const;
-  Vec3 node_normal(std::size_t i, const Vec3Field& x) const;
+  void set_depth_limits(const NodalFields& nodes, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
+  bool accepted(std::size_t i, Index s, const Vec3Field& x) const;
   Real master_offset(Index s) const {
     if (!opt_.shell_thickness || master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) return 0.0;
     const Real t = opt_.master_thickness > 0.0 ? opt_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
@@ -189,11 +196,12 @@ class PenaltyPass {
   std::vector<Vec3> ue_;                ///< elastic slip: contact point - sticking point (length)
   std::vector<Real> slip_seg_;          ///< per master segment: gamma (length)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
+  std::vector<Real> depth_seg_;         ///< per master segment: deepest contact (length; empty: half its size)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
   std::vector<Id> slave_part_;
-  std::vector<Index> slave_row_;        ///< automatic: row of the slave in master_.nodes
   std::vector<std::uint8_t> slave_solid_;  ///< automatic: the slave node has only solid faces
+  SlaveOrientation orientation_;
   Real dt_ = std::numeric_limits<Real>::max();
   Index initial_count_ = 0;
   Real initial_max_ = 0.0;

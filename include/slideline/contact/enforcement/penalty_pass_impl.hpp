@@ -21,7 +21,16 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
     }
     k_seg_[static_cast<std::size_t>(s)] = opt_.stiffness_scale * k;
   }
+  set_depth_limits(nodes, blocks);
   initialize(nodes, std::move(k_seg_));
+}
+
+/// Per master segment, the deepest contact (contact_depth_limit, search/slave_orientation.hpp).
+inline void PenaltyPass::set_depth_limits(const NodalFields& nodes,
+                                          const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
+  depth_seg_.resize(static_cast<std::size_t>(master_.segment_count()));
+  for (Index s = 0; s < master_.segment_count(); ++s)
+    depth_seg_[static_cast<std::size_t>(s)] = contact_depth_limit(master_, s, blocks, nodes.x);
 }
 
 inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness) {
@@ -76,13 +85,11 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
   run_end_.assign(n, 0);
   if (slave_part_.size() != n) slave_part_.assign(n, 0);
   if (opt_.automatic) {
-    slave_row_.assign(n, -1);
     slave_solid_.assign(n, 1);
     for (std::size_t i = 0; i < n; ++i) {
       const auto it = std::lower_bound(master_.nodes.begin(), master_.nodes.end(), slaves_[i]);
       if (it == master_.nodes.end() || *it != slaves_[i]) continue;
       const Index row = static_cast<Index>(it - master_.nodes.begin());
-      slave_row_[i] = row;
       for (Index j = master_.node_segments.begin(row); j < master_.node_segments.end(row); ++j) {
         const Index s = master_.node_segments.value[static_cast<std::size_t>(j)];
         if (master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell) slave_solid_[i] = 0;
@@ -139,27 +146,15 @@ inline Index PenaltyPass::resolve_initial_penetrations(NodalFields& nodes, Real&
   return moved;
 }
 
-inline Vec3 PenaltyPass::node_normal(std::size_t i, const Vec3Field& x) const {
-  const Index row = slave_row_[i];
-  Vec3 n = Vec3::Zero();
-  for (Index j = master_.node_segments.begin(row); j < master_.node_segments.end(row); ++j)
-    n += segment_area_vector(master_, master_.node_segments.value[static_cast<std::size_t>(j)], x);
-  const Real len = n.norm();
-  return len > 0.0 ? Vec3(n / len) : n;
-}
-
-/// Single-surface filters (automatic pass): a solid node only meets solid faces that face it
-/// (normals opposed by more than 60 degrees); a shell node or shell segment never meets its own
-/// part (no self-contact of a shell part). node_n: node_normal(i, x), formed once per node by the
-/// caller (the same for all its candidates).
-inline bool PenaltyPass::accepted(std::size_t i, Index s, const Vec3Field& x, const Vec3& node_n) const {
-  if (!opt_.automatic) return true;
+/// Which segments slave i may meet: the orientation rule (search/slave_orientation.hpp, set by
+/// the factory with set_slave_orientation) and, in the automatic pass, no self-contact of a shell
+/// part (a shell node or a shell segment never meets its own part).
+inline bool PenaltyPass::accepted(std::size_t i, Index s, const Vec3Field& x) const {
   const std::size_t su = static_cast<std::size_t>(s);
-  const bool shell_segment = master_.kind[su] == SegmentKind::shell;
-  if (slave_solid_[i] && !shell_segment) {
-    return node_n.dot(segment_normal(master_, s, x)) < -0.5;
-  }
-  return slave_part_[i] != master_.part[su];
+  if (opt_.automatic && (!slave_solid_[i] || master_.kind[su] == SegmentKind::shell) &&
+      slave_part_[i] == master_.part[su])
+    return false;
+  return orientation_.admits(i, master_, s, x);
 }
 
 inline void PenaltyPass::search(const Vec3Field& x) {
@@ -176,27 +171,28 @@ inline void PenaltyPass::search(const Vec3Field& x) {
   pick_nearest_candidates(x);
 }
 
-/// Per slave: the nearest accepted segment of its candidate run (closest point, ties broken as in
-/// is_better_projection); a change of segment resets the side memory. A candidate whose corner
-/// box is already farther than the best so far cannot replace it (cannot_beat) and is not
-/// projected: the same pick, without most of the Newton solves of an automatic pass, whose nodes
-/// re-pick among all their candidates every cycle.
+/// Per slave: the accepted segment of its candidate run chosen by is_better_contact (over before
+/// beside, then nearer, then the lower index; search/slave_orientation.hpp); a change of segment
+/// resets the side memory. While the best so far is one the node is over, a candidate whose
+/// corner box is already farther (cannot_beat) cannot replace it and is not projected: the same
+/// pick, without most of the Newton solves of an automatic pass, whose nodes re-pick among all
+/// their candidates every cycle.
 inline void PenaltyPass::pick_nearest_candidates(const Vec3Field& x) {
   parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
     const std::size_t i = static_cast<std::size_t>(ii);
     const Vec3 p = x.get(slaves_[i]);
-    const bool facing_rule = opt_.automatic && slave_solid_[i] && run_begin_[i] < run_end_[i];
-    const Vec3 node_n = facing_rule ? node_normal(i, x) : Vec3::Zero();
     SegmentProjection best;
+    bool best_over = false;
     for (std::size_t k = run_begin_[i]; k < run_end_[i]; ++k) {
       const Index s = candidates_[k].segment;
-      if (!accepted(i, s, x, node_n)) continue;
       const SegmentCorners c = segment_corners(master_, s, x);
-      if (best.segment >= 0 && cannot_beat(p, c, best.projection)) continue;
+      if (best_over && cannot_beat(p, c, best.projection)) continue;  // cheaper than the filters
+      if (!accepted(i, s, x)) continue;
       const Projection pr = master_.is_triangle(s) ? project_point_to_triangle(p, c) : project_point_to_quad(p, c);
-      if (best.segment < 0 || is_better_projection(pr, s, best.projection, best.segment, ProjectionOptions{})) {
+      if (best.segment < 0 || is_better_contact(p, pr, s, best.projection, best.segment)) {
         best.segment = s;
         best.projection = pr;
+        best_over = is_over(p, pr);
       }
     }
     if (best.segment != segment_[i]) side_[i] = 0;
@@ -229,7 +225,8 @@ inline void PenaltyPass::locate(const Vec3Field& x) {
     parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
       const std::size_t i = static_cast<std::size_t>(ii);
       if (segment_[i] < 0) return;
-      proj_[i] = track_segment(x.get(slaves_[i]), segment_[i], master_, x);
+      proj_[i] = track_segment(x.get(slaves_[i]), segment_[i], master_, x, TrackingOptions{},
+                               FacingRule{&orientation_, i, &master_, &x});
       if (proj_[i].segment != segment_[i]) {
         if (master_.kind[static_cast<std::size_t>(proj_[i].segment)] !=
             master_.kind[static_cast<std::size_t>(segment_[i])])
@@ -301,7 +298,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
     }
   }
   // A point beside the segment (the closest point on an edge, the slave off to the side) or
-  // deeper than half the segment is not in contact with it.
+  // deeper than its depth limit (set_depth_limits) is not in contact with it.
   const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
   const Real offsets = master_offset(s) + slave_offset_[i];
   Real gap = raw - offsets;
@@ -311,7 +308,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   }
   gap_[i] = gap;
   const bool beside = lateral > 1e-3 * pr.size;
-  const bool too_deep = raw < -0.5 * pr.size;
+  const bool too_deep = raw < -(depth_seg_.empty() ? 0.5 * pr.size : depth_seg_[su]);
   const bool engaged = (mw || !beside) && !too_deep && (gap < 0.0 || (opt_.sliding_only && touched_[i]));
   if (!engaged) {
     ue_[i] = Vec3::Zero();

@@ -23,6 +23,7 @@
 
 #include "slideline/contact/search/broad_phase.hpp"
 #include "slideline/contact/search/closest_point.hpp"
+#include "slideline/contact/search/slave_orientation.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/mesh/surface.hpp"
 
@@ -82,8 +83,11 @@ inline Index neighbor_across_edge(const Surface& surface, Index s, int k) {
 /// neighbour (surface.segment_neighbors) that shares an edge the closest point lies on is
 /// projected onto, so coincident segments and edges shared by more than two segments are handled.
 /// Returns the segment it ends on and the projection there. No allocation.
-inline SegmentProjection track_segment(const Vec3& p, Index start, const Surface& surface,
-                                       const Vec3Field& x, const TrackingOptions& opt = {}) {
+/// `rule` (slave_orientation.hpp): NearestRule compares by is_better_projection; FacingRule only
+/// moves to segments the slave's orientation admits and compares by is_better_contact.
+template <class Rule = NearestRule>
+SegmentProjection track_segment(const Vec3& p, Index start, const Surface& surface, const Vec3Field& x,
+                                const TrackingOptions& opt = {}, const Rule& rule = {}) {
   const ProjectionOptions& po = opt.projection;
   SegmentProjection best{start, project_point_to_segment(p, surface, start, x, po), 0};
   std::array<Index, 64> visited{};
@@ -103,13 +107,14 @@ inline SegmentProjection track_segment(const Vec3& p, Index start, const Surface
       if (std::find(visited.begin(), visited.begin() + nvisited, t) != visited.begin() + nvisited) continue;
       if (nvisited == visited.size()) break;  // an extreme fan: stop looking further
       visited[nvisited++] = t;
+      if (!rule.admits(t)) continue;
       const Projection pr = project_point_to_segment(p, surface, t, x, po);
-      if (next < 0 || is_better_projection(pr, t, next_proj, next, po)) {
+      if (next < 0 || rule.better(p, pr, t, next_proj, next, po)) {
         next = t;
         next_proj = pr;
       }
     }
-    if (next < 0 || !is_better_projection(next_proj, next, best.projection, best.segment, po)) break;
+    if (next < 0 || !rule.better(p, next_proj, next, best.projection, best.segment, po)) break;
     best = {next, next_proj, hop + 1};
   }
   return best;
@@ -132,14 +137,16 @@ inline SegmentProjection nearest_segment(const Vec3& p, std::span<const Index> s
 }
 
 /// The same over one node's broad-phase candidates (a run of equal `node` in BroadPhase::query's
-/// output; only `segment` is read). Segment -1 when the run is empty. No allocation.
-inline SegmentProjection nearest_segment(const Vec3& p, std::span<const Candidate> candidates,
-                                         const Surface& surface, const Vec3Field& x,
-                                         const ProjectionOptions& opt = {}) {
+/// output; only `segment` is read), by `rule` (see track_segment). Segment -1 when the run is
+/// empty or the rule admits none of it. No allocation.
+template <class Rule = NearestRule>
+SegmentProjection nearest_segment(const Vec3& p, std::span<const Candidate> candidates, const Surface& surface,
+                                  const Vec3Field& x, const ProjectionOptions& opt = {}, const Rule& rule = {}) {
   SegmentProjection best;
   for (const Candidate& c : candidates) {
+    if (!rule.admits(c.segment)) continue;
     const Projection pr = project_point_to_segment(p, surface, c.segment, x, opt);
-    if (best.segment < 0 || is_better_projection(pr, c.segment, best.projection, best.segment, opt)) {
+    if (best.segment < 0 || rule.better(p, pr, c.segment, best.projection, best.segment, opt)) {
       best.segment = c.segment;
       best.projection = pr;
     }
