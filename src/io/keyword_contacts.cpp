@@ -147,6 +147,7 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
     k.get(5, "PENCHK", c.penchk);
     k.get(6, "BT", c.bt);
     k.get(7, "DT", c.dt);
+    if (c.dt == 0.0) c.dt = 1e20;  // LS-DYNA: DT = 0 is the default 1e20 (never dies)
   }
   if ((l = b.take())) {
     Card k(ctx, *l, b.keyword, kStandard);
