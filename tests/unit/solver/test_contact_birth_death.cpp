@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
@@ -25,20 +27,22 @@ namespace {
 using scenarios::SslideProblem;
 
 /// One problem per interface family: type 1, 2, 3 (penalty, Lagrange), 5, 6, 7, 8, 9, 10, 12.
-const char* const kProblems[] = {"sslide1k",  "sslide2kt", "sslide3p",   "sslide3l",  "sslide5p", "sslide6k",
-                                 "sslide7k",  "sslide8p",  "sslide9pt",  "sslide10pv", "sslide10lr", "sslide12p",
-                                 "sslide12l"};
+const std::vector<std::string> kProblems = {"sslide1k", "sslide2kt", "sslide3p",   "sslide3l",   "sslide5p",
+                                            "sslide6k", "sslide7k",  "sslide8p",   "sslide9pt",  "sslide10pv",
+                                            "sslide10lr", "sslide12p", "sslide12l"};
 
 struct Run {
   std::unique_ptr<Simulation> sim;
   History history;
 };
 
-std::unique_ptr<Run> run(const model::Model& m, Real end) {
+/// Runs `m` to `end`. `energy_limit` < 0: the deck's energy-balance stop; else this limit.
+std::unique_ptr<Run> run(const model::Model& m, Real end, Real energy_limit = -1.0) {
   BuildOptions o;
   o.end_time = end;
   auto r = std::make_unique<Run>();
   r->sim = build_simulation(m, o);
+  if (energy_limit >= 0.0) r->sim->controls.energy_error_limit = energy_limit;
   r->sim->run({&r->history});
   return r;
 }
@@ -74,7 +78,14 @@ TEST_P(ContactBirthDeath, DeathMidRunReleases) {
   // End before the tension problems' failure (t = 0.09), so that the held contact still holds.
   const Real death = 0.05, end = 0.08;
   for (auto& c : dying.contacts) c.dt = death;
-  const auto held = run(p.model, end), released = run(dying, end);
+  // The sudden release is an impulsive load on the upper body: the energy balance, whose kinetic
+  // energy is that of the mean of the half-step velocities (docs/solver.md), shows a transient of
+  // 5-9% of the little energy in play at the first check after it (measured), which would stop
+  // the run; it decays as the body speeds up (<= 0.012% at t = 0.08 for every type, printed).
+  const auto held = run(p.model, end), released = run(dying, end, 0.0);
+  std::printf("%s: energy balance error after the release %.3g%% at the end\n", GetParam().c_str(),
+              100.0 * released->sim->energy_error_fraction());
+  EXPECT_LT(released->sim->energy_error_fraction(), 1e-3);
   for (const auto& pair : p.pairings) {
     const std::string ch = "interfaces/" + pair.contact_title + "/slave_force";
     const auto t = released->history.time();
@@ -95,7 +106,7 @@ TEST_P(ContactBirthDeath, DeathMidRunReleases) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Types, ContactBirthDeath, ::testing::ValuesIn(kProblems),
-                         [](const auto& info) { return std::string(info.param); });
+                         [](const auto& info) { return info.param; });
 
 // A tie born mid-run ties the slaves where they are then: the tension load pulls the upper block
 // away until the birth, then the tie holds it there (its distance from the master stays).
