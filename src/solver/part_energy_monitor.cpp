@@ -51,8 +51,7 @@ std::string to_string(const HourglassWarning& w) {
   return "hourglass energy of part " + std::to_string(w.part) + " passed " +
          num(100.0 * PartEnergyMonitor::kHourglassFraction) + "% of its internal energy at t = " + num(w.time) +
          " (cycle " + std::to_string(w.cycle) + "): " + num(w.hourglass) + " against " + num(w.internal) +
-         "; results may be spoilt by hourglass modes (refine the mesh, or use stiffness hourglass control, "
-         "*HOURGLASS IHQ 10)";
+         " (LS-DYNA practice keeps it under 10%: hourglass modes may spoil the results)";
 }
 
 }  // namespace slideline
