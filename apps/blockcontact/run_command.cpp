@@ -106,6 +106,21 @@ class PeriodicFlush {
   Clock::time_point last_ = Clock::now();
 };
 
+/// Prints each hourglass warning of the run once, as it arises (stderr).
+class HourglassWarnings {
+ public:
+  void print_new(const slideline::Simulation& sim, Progress& progress) {
+    const auto& w = sim.hourglass_warnings();
+    if (printed_ == w.size()) return;
+    progress.finish();
+    for (; printed_ < w.size(); ++printed_) fmt::print(stderr, "warning: {}\n", slideline::to_string(w[printed_]));
+    std::fflush(stderr);
+  }
+
+ private:
+  std::size_t printed_ = 0;
+};
+
 /// Cycles between reads of the clock (progress line, periodic flush); the signal flag is checked
 /// every cycle.
 constexpr long kClockEvery = 16;
@@ -150,18 +165,21 @@ int run_deck(const RunOptions& o) {
   std::fflush(stdout);
   Progress progress(sim->controls.end_time);
   PeriodicFlush periodic_flush(sinks, o.flush_every);
+  HourglassWarnings hourglass_warnings;
   try {
     sim->run(
         sinks,
         [&](const slideline::Simulation& s) {
           // Every cycle: a pending SIGINT/SIGTERM unwinds through run(), which flushes the sinks.
           InterruptGuard::throw_if_pending();
+          hourglass_warnings.print_new(s, progress);
           if (s.cycle() % kClockEvery != 0) return;
           progress.update(s);
           periodic_flush.update();
         },
         1);
   } catch (const RunInterrupted& e) {
+    hourglass_warnings.print_new(*sim, progress);
     progress.finish();
     fmt::print(stderr, "{} at t = {:g} (cycle {}): stopped at the end of the cycle\n", e.what(), sim->time(),
                sim->cycle());
@@ -169,11 +187,13 @@ int run_deck(const RunOptions& o) {
                o.csv ? fmt::format(" and {}", (std::filesystem::path(o.out_dir) / (stem + ".csv")).string()) : "");
     return kInterrupted;
   } catch (const slideline::InstabilityError& e) {
+    hourglass_warnings.print_new(*sim, progress);
     progress.finish();
     fmt::print(stderr, "instability at t = {:g} (cycle {}): {}\n", e.time(), e.cycle(), e.what());
     fmt::print(stderr, "output up to t = {:g} was kept in {}\n", e.time(), h5_path);
     return kInstability;
   }
+  hourglass_warnings.print_new(*sim, progress);
   progress.finish();
   if (const auto& w = sim->energy_warning())
     fmt::print(stderr, "warning: the energy balance error passed {:.1f}% at t = {:g} (cycle {}); it ended at {:.2f}% "

@@ -69,8 +69,6 @@ std::unique_ptr<ContactAlgorithm> make_lagrange_contact(const model::Contact& ca
   s.one_constraint_per_mutual_pair = automatic;  // no over-constrained pairs (lagrange_contact.hpp)
   s.rigid_fixed_translations = rigid_fixed_translations(ctx.model);
   s.transmitted_output = automatic;
-  s.birth = card.bt;
-  s.death = card.dt;
   std::vector<Index> first;
   if (automatic && !slave.parts.empty())
     first = ctx.sets.nodes_of_part(slave.parts.front(), describe(card.src) + ": SSID of " + card.keyword);

@@ -22,8 +22,6 @@ std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(const model::Contact
   LagrangeContactSettings s;
   s.title = title;
   s.shell_offsets = false;  // the slave nodes lie on the master surface itself
-  s.birth = card.bt;
-  s.death = card.dt;
   return std::make_unique<SlidingOnlyContact>(std::move(s), std::move(master.surface), std::move(slave.nodes),
                                            std::move(slave.surface));
 }

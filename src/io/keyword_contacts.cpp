@@ -151,6 +151,7 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
     k.get(5, "PENCHK", c.penchk);
     k.get(6, "BT", c.bt);
     k.get(7, "DT", c.dt);
+    if (c.dt == 0.0) c.dt = 1e20;  // LS-DYNA: DT = 0 is the default 1e20 (never dies)
   }
   // Card 3: blank and 0 mean the manual's default (1 for the scale factors).
   if ((l = card3 = b.take())) {

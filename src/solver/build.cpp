@@ -677,7 +677,8 @@ struct Builder {
         throw InputError(describe(card.src) + ": contact title '" + title +
                          "' is used by an earlier contact; output channels need distinct titles");
       titles.push_back(title);
-      sim->contacts.add(make_contact_interface(card, k + 1, ctx));
+      // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
+      sim->contacts.add(make_contact_interface(card, k + 1, ctx), ContactWindow{card.bt, card.dt});
     }
   }
 };

@@ -149,23 +149,15 @@ void Simulation::initialize() {
   cycle_ = 0;
   contacts.initialize(ContactContext{nodes, blocks, &sets, rigid_});
   contacts.resolve_initial_penetrations(nodes);
-  dictated_nodes_.clear();
-  for (const auto& c : contacts) {
-    for (Index i : c->dictated_nodes()) {
-      if (i < 0 || i >= n) throw InputError("contact " + c->name() + " ties a node index out of range");
-      if (node_kind_[i] == kRigid)
-        throw InputError("contact " + c->name() + ": tied slave node " + std::to_string(nodes.ids[i]) +
-                         " belongs to a rigid part; tie the rigid part as the master instead");
-      if (node_kind_[i] != kDictated) dictated_nodes_.push_back(i);
-      node_kind_[i] = kDictated;
-    }
-  }
-  for (const auto& c : contacts)
-    for (Index i : c->tie_master_nodes())
-      if (i >= 0 && i < n && node_kind_[i] == kFree) node_kind_[i] = kTieMaster;
-  std::sort(dictated_nodes_.begin(), dictated_nodes_.end());
-  dictated_v_old_.assign(dictated_nodes_.size(), Vec3::Zero());
-  dictated_w_old_.assign(dictated_nodes_.size(), Vec3::Zero());
+  // A rigid body's mass properties take the tied slaves condensed onto it once, here: a tie that
+  // is born or dies mid-run would change them.
+  if (!constraints.empty())
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+      if (contacts.window(k).timed() && contacts[k].condenses())
+        throw NotImplementedError("contact " + contacts[k].name() +
+                                  ": a tied interface with a birth or death time (BT, DT) in a model with rigid "
+                                  "bodies is not supported");
+  classify_contact_nodes();
   if (!contacts.empty()) {
     f_total_.resize(n);
     m_total_.resize(n);
@@ -212,6 +204,7 @@ void Simulation::initialize() {
   chunk_e_.assign(static_cast<std::size_t>(chunk_count(n)), NodalEnergySums{});
 
   ledger_.reset();
+  part_energy_.reset(blocks);
   compute_internal_forces();
   compute_external_forces();
   apply_contact_forces();
@@ -242,8 +235,12 @@ void Simulation::compute_internal_forces() {
     Real dt_other = std::numeric_limits<Real>::max();  // steps of blocks that do not bound it
     const ElementBlock* controlling = nullptr;
     const ElementBlock* controlling_other = nullptr;
-    for (auto& b : blocks) {
-      const Real d = b->compute_forces(nodes, dt_, corners_, be);
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      const auto& b = blocks[k];
+      BlockEnergy bk;
+      const Real d = b->compute_forces(nodes, dt_, corners_, bk);
+      be += bk;
+      part_energy_.add(k, bk, cycle_ == 0 ? 0.0 : dt_);
       if (b->bounds_time_step()) {
         if (d < dtc) controlling = b.get();
         dtc = std::min(dtc, d);
@@ -308,6 +305,8 @@ void Simulation::apply_contact_forces() {
   dt_crit_ = dt_elements_;
   if (contacts.empty()) return;
   const auto t0 = std::chrono::steady_clock::now();
+  // Birth and death (BT, DT): the interfaces that act in the cycle from t_ (contact_manager.hpp).
+  if (contacts.update_activity(t_)) classify_contact_nodes();
   nodes.f_contact.fill(0.0);
   if (has_rotations_) nodes.m_contact.fill(0.0);
   // The coming step is not known yet (the interfaces vote for it here).
@@ -323,7 +322,7 @@ std::string Simulation::step_controller() const {
   if (dt_crit_ < dt_elements_) {
     std::size_t k = 0;
     for (std::size_t c = 1; c < contacts.size(); ++c)
-      if (contacts[c].stable_dt() < contacts[k].stable_dt()) k = c;
+      if (contacts.active(c) && (!contacts.active(k) || contacts[c].stable_dt() < contacts[k].stable_dt())) k = c;
     return contacts.size() > 0 ? "contact interface '" + contacts[k].name() + "'" : std::string("a contact interface");
   }
   if (dt_block_ == nullptr) return "no element";
@@ -797,6 +796,7 @@ void Simulation::check_stability() {
                            e.kinetic, std::abs(e.internal) + e.hourglass + e.bulk_viscosity + e.damping +
                                           std::abs(e.contact) + e.friction});
   if (cycle_ < kEnergyCheckStart) return;
+  part_energy_.check(t_, cycle_, peak_energy_);  // hourglass warnings; negative internal energy stops
   const Real err = energy_error_fraction();
   if (controls.energy_error_warning > 0.0 && err > controls.energy_error_warning && !energy_warning_)
     energy_warning_ = EnergyWarning{t_, cycle_, err};
@@ -828,12 +828,15 @@ void Simulation::collect_history(std::vector<Real>& values) const {
     values[k++] = v[1];
     values[k++] = v[2];
   };
-  std::size_t ci = 0;
-  for (const auto& c : contacts) {
-    put3(c->slave_force());
-    put3(c->master_force());
-    c->write_output_values(std::span<Real>(values).subspan(k, contact_outputs_[ci]));
-    k += contact_outputs_[ci++];
+  for (std::size_t ci = 0; ci < contacts.size(); ++ci) {
+    // An interface before its birth or after its death carries no force.
+    const bool on = contacts.active(ci);
+    put3(on ? contacts[ci].slave_force() : Vec3::Zero());
+    put3(on ? contacts[ci].master_force() : Vec3::Zero());
+    const auto extra = std::span<Real>(values).subspan(k, contact_outputs_[ci]);
+    if (on) contacts[ci].write_output_values(extra);
+    else std::fill(extra.begin(), extra.end(), 0.0);
+    k += contact_outputs_[ci];
   }
   for (const auto& g : supports) put3(g.reaction);
   for (std::size_t c = 0; c < constraints.size(); ++c) {

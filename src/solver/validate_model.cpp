@@ -134,6 +134,23 @@ void check_controls(const model::Model& m, const BuildOptions& o, Problems& p) {
   }
 }
 
+/// BT and DT of the *CONTACT cards (card 2). Negative values are LS-DYNA's dynamic-relaxation
+/// forms (and DT = -9999 a birth/death curve), which this solver does not have.
+void check_contact_times(const model::Model& m, Problems& p) {
+  for (const auto& c : m.contacts) {
+    const std::string card = c.keyword.empty() ? std::string("*CONTACT") : c.keyword;
+    if (c.bt < 0.0 || c.dt < 0.0) {
+      p.todo(c.src, std::string("field ") + (c.bt < 0.0 ? "BT" : "DT") + " of " + card + " (card 2) is negative (" +
+                        num(c.bt < 0.0 ? c.bt : c.dt) +
+                        "): birth and death during dynamic relaxation, or a birth/death curve, are not implemented");
+      continue;
+    }
+    if (!(c.dt > c.bt))
+      p.bad(c.src, "field DT of " + card + " (card 2): the death time (" + num(c.dt) +
+                       ") must be after the birth time BT (" + num(c.bt) + ")");
+  }
+}
+
 /// The kind of a degenerate hexahedron, or nullptr for eight distinct nodes.
 const char* degenerate_kind(const std::array<Id, 8>& n) {
   const std::set<Id> distinct(n.begin(), n.end());
@@ -228,6 +245,7 @@ void validate_model(const model::Model& m, const BuildOptions& options) {
   check_dropped_references(m, p);
   check_materials(m, p);
   check_controls(m, options, p);
+  check_contact_times(m, p);
   check_elements(m, p);
   if (!p.input.empty() || !p.unimplemented.empty()) p.raise();
 }

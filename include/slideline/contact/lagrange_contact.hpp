@@ -53,7 +53,6 @@ struct LagrangeContactSettings {
   Real nodal_radius = 0.0;        ///< offset of node-set slaves (Type 5), length
   bool skip_incident = false;     ///< single surface (Type 12): a node never meets its own segments
   bool transmitted_output = false;  ///< write interfaces/<title>/transmitted_force
-  Real birth = 0.0, death = 1e20;   ///< active for birth <= t <= death
   LagrangeSolveOptions solve;       ///< tolerance relative to the smallest master segment size
   /// Solves per cycle: after the first, each constrained slave is projected again at the
   /// predicted positions x^{n+1} (its segment, shape functions and normal) and the system solved
@@ -186,7 +185,7 @@ class LagrangeInterface final : public ContactAlgorithm {
     transmitted_.setZero();
     constraints_.clear();
     owner_.clear();
-    if (times.t < s_.birth || times.t > s_.death || !(times.dt_next > 0.0)) return;
+    if (!(times.dt_next > 0.0)) return;  // birth and death: ContactManager
     find_segments(view.nodes.x);
     form_constraints(view.nodes.x, times);
     if (s_.one_constraint_per_mutual_pair) drop_mutual_duplicates(view.nodes.x);

@@ -24,6 +24,20 @@ struct BlockEnergy {
   /// Rate of work done against stiffness-proportional (Rayleigh) damping stresses,
   /// V beta D : C : D >= 0 summed over the elements (force x length / time).
   Real damping_power = 0.0;
+  /// Rate of work of all the element forces, -sum f . v over the corners (stress, hourglass, bulk
+  /// viscosity and damping together; moments with angular velocities for shells). Its part net of
+  /// the three powers above is the rate of the stored (internal) energy, per part for the
+  /// hourglass and negative-energy checks (solver/part_energy_monitor.hpp).
+  Real element_power = 0.0;
+
+  BlockEnergy& operator+=(const BlockEnergy& o) {
+    internal += o.internal;
+    hourglass_power += o.hourglass_power;
+    viscous_power += o.viscous_power;
+    damping_power += o.damping_power;
+    element_power += o.element_power;
+    return *this;
+  }
 };
 
 /// Reduces the per-chunk results of an element loop in chunk order (so the result does not depend
@@ -32,7 +46,8 @@ struct BlockEnergy {
 /// stiffness-damping powers to `energy`, and returns the smallest element step.
 inline Real reduce_element_chunks(const std::vector<Real>& dt, const std::vector<Real>& hourglass,
                                   const std::vector<Real>& viscous, const std::vector<Real>& damping,
-                                  const std::vector<Index>& bad, BlockEnergy& energy,
+                                  const std::vector<Real>& power, const std::vector<Index>& bad,
+                                  BlockEnergy& energy,
                                   const char* kind, const std::vector<Id>& ids, Id part,
                                   const char* failure) {
   for (Index b : bad)
@@ -43,6 +58,7 @@ inline Real reduce_element_chunks(const std::vector<Real>& dt, const std::vector
   energy.hourglass_power += ordered_sum(hourglass, 0.0);
   energy.viscous_power += ordered_sum(viscous, 0.0);
   energy.damping_power += ordered_sum(damping, 0.0);
+  energy.element_power += ordered_sum(power, 0.0);
   Real dtmin = std::numeric_limits<Real>::max();
   for (Real d : dt) dtmin = std::min(dtmin, d);
   return dtmin;

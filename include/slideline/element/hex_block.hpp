@@ -43,6 +43,7 @@ class HexBlock final : public ElementBlock {
     chunk_hg_.assign(chunk_count(ne), 0.0);
     chunk_visc_.assign(chunk_count(ne), 0.0);
     chunk_damp_.assign(chunk_count(ne), 0.0);
+    chunk_power_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
     volume0_.assign(padded(ne), 0.0);
     // Lane-major connectivity: batch j, node k, lane l at 64 j + 8 k + l, the spare lanes of a
@@ -102,7 +103,7 @@ class HexBlock final : public ElementBlock {
       compute_chunks<true, true>(nodes, corners);
     else
       compute_chunks<false, true>(nodes, corners);
-    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_bad_, energy,
+    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
                                  "solid", ids_, part_id_,
                                  "inverted (non-positive volume or non-finite force)");
   }
@@ -129,7 +130,7 @@ class HexBlock final : public ElementBlock {
       using hex8::NodeLanes;
       Lanes dtmin = Lanes::Constant(std::numeric_limits<Real>::max());
       Lanes dtarg = Lanes::Zero();  // per lane, the element (as a Real) with the smallest step so far
-      Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero(), p_damp = Lanes::Zero();
+      Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero(), p_damp = Lanes::Zero(), p_all = Lanes::Zero();
       Index bad = -1;
       for (Index e0 = b; e0 < end; e0 += kLanes) {
         const int valid = static_cast<int>(std::min<Index>(kLanes, end - e0));
@@ -248,7 +249,7 @@ class HexBlock final : public ElementBlock {
           for (int k = 0; k < 8; ++k) b2 += bx[k] * bx[k] + by[k] * by[k] + bz[k] * bz[k];
           k_hg = hg_.coefficient * e_mod * vol * b2 / 72.0;
         }
-        Lanes hg = Lanes::Zero(), fsum = Lanes::Zero();
+        Lanes hg = Lanes::Zero(), fsum = Lanes::Zero(), all = Lanes::Zero();
         for (int k = 0; k < 8; ++k) {
           hx[k] *= -k_hg;
           hy[k] *= -k_hg;
@@ -258,12 +259,13 @@ class HexBlock final : public ElementBlock {
           fy[k] += hy[k];
           fz[k] += hz[k];
           fsum += fx[k] + fy[k] + fz[k];
+          all -= fx[k] * vx[k] + fy[k] * vy[k] + fz[k] * vz[k];
         }
         Lanes dt = len / (qdt + lane_sqrt(qdt * qdt + c * c));
         const LaneMask failed = !(vol > 0.0) || !fsum.isFinite();
         if (valid < kLanes) {  // the spare lanes of a last partial batch
           for (int l = valid; l < kLanes; ++l) {
-            hg[l] = visc[l] = damp[l] = 0.0;
+            hg[l] = visc[l] = damp[l] = all[l] = 0.0;
             dt[l] = std::numeric_limits<Real>::max();
           }
         }
@@ -275,6 +277,7 @@ class HexBlock final : public ElementBlock {
             }
         p_hg += hg;
         p_visc += visc;
+        p_all += all;
         if constexpr (damped) p_damp += damp;
         dtarg = (dt < dtmin).select(kLaneOffsets + static_cast<Real>(e0), dtarg);
         dtmin = dtmin.min(dt);
@@ -298,6 +301,7 @@ class HexBlock final : public ElementBlock {
       chunk_hg_[chunk] = p_hg.sum();
       chunk_visc_[chunk] = p_visc.sum();
       chunk_damp_[chunk] = p_damp.sum();
+      chunk_power_[chunk] = p_all.sum();
       chunk_bad_[chunk] = bad;
     });
   }
@@ -317,7 +321,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Id> ids_;
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
-  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_;
+  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
   inline static const Lanes kLaneOffsets = Lanes::LinSpaced(kLanes, 0.0, kLanes - 1.0);

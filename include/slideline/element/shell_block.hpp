@@ -58,6 +58,7 @@ class ShellBlock final : public ElementBlock {
     chunk_hg_.assign(nc, 0.0);
     chunk_visc_.assign(nc, 0.0);
     chunk_damp_.assign(nc, 0.0);
+    chunk_power_.assign(nc, 0.0);
     chunk_bad_.assign(nc, -1);
     area0_.assign(ne, 0.0);
     stress_.assign(static_cast<std::size_t>(ne) * rule_.n * kShellStressComponents, 0.0);
@@ -117,7 +118,7 @@ class ShellBlock final : public ElementBlock {
       compute_chunks<true>(nodes, dt, corners);
     else
       compute_chunks<false>(nodes, dt, corners);
-    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_bad_, energy,
+    return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
                                  "shell", ids_, part_id_,
                                  "degenerated (non-positive area or non-finite force)");
   }
@@ -141,7 +142,7 @@ class ShellBlock final : public ElementBlock {
     parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
       Index dtarg = b;
-      Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0;
+      Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
       Index bad = -1;
       for (Index e = b; e < end; ++e) {
         const shell_bt::NodeMat X = gather(nodes.x, e);
@@ -262,6 +263,7 @@ class ShellBlock final : public ElementBlock {
                   cr * (qw[0] * qw[0] + qw[1] * qw[1]);
         }
         if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
+        p_all -= f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum();
         const Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
         if (dt_e < dtmin) {
           dtmin = dt_e;
@@ -283,6 +285,7 @@ class ShellBlock final : public ElementBlock {
       chunk_hg_[chunk] = p_hg;
       chunk_visc_[chunk] = p_visc;
       chunk_damp_[chunk] = p_damp;
+      chunk_power_[chunk] = p_all;
       chunk_bad_[chunk] = bad;
     });
   }
@@ -324,7 +327,7 @@ class ShellBlock final : public ElementBlock {
   std::vector<Id> ids_;
   std::vector<Real> area0_;
   std::vector<Real> stress_;  // element-major, then point, then component
-  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_;
+  std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
 };

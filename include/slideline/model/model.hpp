@@ -366,8 +366,8 @@ struct Contact {
   Real vc = 0.0;    ///< viscous friction coefficient
   Real vdc = 0.0;   ///< viscous damping coefficient (% of critical)
   int penchk = 0;
-  Real bt = 0.0;    ///< birth time
-  Real dt = 1e20;   ///< death time
+  Real bt = 0.0;    ///< birth time (0: from the start)
+  Real dt = 1e20;   ///< death time (0 or blank on the card: 1e20, never)
   // Card 3
   Real sfs = 1.0, sfm = 1.0;    ///< penalty scale factors (slave, master)
   Real sst = 0.0, mst = 0.0;    ///< optional thickness (0 = from the elements)

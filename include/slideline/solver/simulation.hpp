@@ -25,6 +25,7 @@
 #include "slideline/solver/boundary.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
+#include "slideline/solver/part_energy_monitor.hpp"
 
 namespace slideline {
 
@@ -113,6 +114,11 @@ class Simulation {
   Real contact_seconds() const { return contact_seconds_; }
   /// Set once the energy balance error first passed controls.energy_error_warning.
   const std::optional<EnergyWarning>& energy_warning() const { return energy_warning_; }
+  /// Parts whose hourglass energy passed 10% of their internal energy, in the order it happened
+  /// (one entry per part at most; part_energy_monitor.hpp).
+  const std::vector<HourglassWarning>& hourglass_warnings() const { return part_energy_.hourglass_warnings(); }
+  /// Internal and hourglass energy per part.
+  const PartEnergyMonitor& part_energies() const { return part_energy_; }
   /// |balance error| over the largest energy in play so far (the quantity the limits apply to).
   Real energy_error_fraction() const;
   /// Effective translational mass (own + condensed tied slaves) used in the last cycle.
@@ -139,6 +145,8 @@ class Simulation {
   void refresh_support_flags();
   void book_dictated_nodes(const StepPlan& plan);
 
+  /// node_kind_ and dictated_nodes_ from the active contact interfaces (simulation_contacts.cpp).
+  void classify_contact_nodes();
   void update_damping_coefficients();
   Real constrained_kinetic_energy() const;
   void collect_history(std::vector<Real>& values) const;
@@ -199,6 +207,7 @@ class Simulation {
   /// "hex8 element 12 of part 3" or "contact interface 'x'": what sets the step now (messages).
   std::string step_controller() const;
   std::optional<EnergyWarning> energy_warning_;
+  PartEnergyMonitor part_energy_;
   Real element_seconds_ = 0.0;
   Real contact_seconds_ = 0.0;
 };
