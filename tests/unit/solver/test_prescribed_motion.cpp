@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <variant>
 #include <string>
@@ -485,13 +486,18 @@ TEST(PrescribedMotionRigid, RotationDrivesTurnTheBodyAboutItsCentreOfMass) {
     sim->initialize();
     const RigidBody& punch = body(*sim);
     const Vec3 com0 = punch.center_of_mass();
-    Real worst = 0.0;
+    // The centre of mass is summed from the turned nodes every step: it stays put to the round-off
+    // of its coordinates (|com0| = 2.08 here), a few ulps. The bound was an absolute 1e-15 (4.5 ulps
+    // of z = 1.55), which 1.1e-15 to 1.8e-15 of measured wander crossed; it is now stated in ulps.
+    const Real com_tol = 16.0 * std::numeric_limits<Real>::epsilon() * com0.norm();
+    Real worst = 0.0, com_drift = 0.0;
     while (sim->step()) {
       const Real angle = (vad == 0 ? 2.0 : 0.5) * sim->time();
       for (Id id = 101; id <= 108; ++id)
         worst = std::max(worst, (position(*sim, id) - turned(*sim, id, com0, angle)).norm());
-      EXPECT_LT((punch.center_of_mass() - com0).norm(), 1e-15);
+      com_drift = std::max(com_drift, (punch.center_of_mass() - com0).norm());
     }
+    EXPECT_LT(com_drift, com_tol) << "VAD " << vad;
     EXPECT_LT(worst, 1e-14) << "VAD " << vad;
     EXPECT_NEAR(punch.angular_velocity()[2], vad == 0 ? 2.0 : 0.5, 1e-13) << "VAD " << vad;
     EXPECT_NEAR(punch.angular_velocity()[0], 0.0, 1e-15);  // round-off of the rotated inertia
