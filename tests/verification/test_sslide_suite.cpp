@@ -3,33 +3,73 @@
 // problem that cannot be built (a NotImplementedError is a failure, not a skip). The one exception
 // is kOpenRow below, a single row that is still open on issue 17 with its measured cause: it is
 // asserted to FAIL (so it cannot start passing unnoticed) and every other row of its problem is
-// hard. A second test per problem requires bitwise identical histories on 1, 2 and 3 threads.
+// hard. A second test per problem requires bitwise identical histories on 1, 2 and 3 threads and,
+// in a build with portable code generation, the 1-thread history's CSV to match its digest stored
+// in sslide_digests.txt: a change that moves one bit of one problem's physics fails here, and a
+// deliberate one regenerates the file (scripts/sslide_digests.py) and says why in its commit.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <memory>
+#include <sstream>
+
+#include <unistd.h>
 #include <string>
 #include <vector>
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
+#include "slideline/io/csv_writer.hpp"
 #include "slideline/scenarios/sslide_criteria.hpp"
 #include "slideline/solver/build.hpp"
 
 namespace slideline::scenarios {
 namespace {
 
-/// Builds and runs a problem into `history`; a model the builder refuses fails the test.
-void run(const SslideProblem& problem, History& history) {
+/// Builds and runs a problem into `history` (and `csv`, when given); a model the builder refuses
+/// fails the test.
+void run(const SslideProblem& problem, History& history, OutputSink* csv = nullptr) {
   std::unique_ptr<Simulation> sim;
   try {
     sim = build_simulation(problem.model);
   } catch (const Error& e) {
     FAIL() << problem.name << " does not build: " << e.what();
   }
-  sim->run({&history});
+  std::vector<OutputSink*> sinks{&history};
+  if (csv) sinks.push_back(csv);
+  sim->run(sinks);
   ASSERT_NEAR(sim->time(), problem.model.termination.endtim, 1e-12);
+}
+
+/// 64-bit FNV-1a of a file's bytes (scripts/sslide_digests.py computes the same).
+std::uint64_t fnv1a_of_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) {
+    h ^= static_cast<unsigned char>(*it);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+/// The stored digests: "name hex" per line, '#' starts a comment.
+std::map<std::string, std::string> stored_digests() {
+  std::map<std::string, std::string> out;
+  std::ifstream in(std::string(SLIDELINE_SOURCE_DIR) + "/tests/verification/sslide_digests.txt");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string name, hex;
+    if (fields >> name >> hex) out[name] = hex;
+  }
+  return out;
 }
 
 /// The one row open on issue 17: sslide9ps measures 3.647 against [3.36, 3.64]. The measured
@@ -71,18 +111,41 @@ TEST_P(SslideSuite, EveryCriterionHolds) {
   }
 }
 
-/// Every channel of every record, bit for bit: the run must not depend on the thread count.
+/// Every channel of every record, bit for bit: the run must not depend on the thread count; and,
+/// with portable code generation, the 1-thread history is the stored one (sslide_digests.txt).
 TEST_P(SslideSuite, HistoriesBitwiseIdenticalOn1To3Threads) {
   const auto problem = make_sslide_problem(GetParam());
   const int before = max_threads();
+  const auto csv_path = std::filesystem::temp_directory_path() /
+                        ("slideline_digest_" + GetParam() + "_" + std::to_string(::getpid()) + ".csv");
   History h[3];
   for (int n = 1; n <= 3; ++n) {
     set_threads(n);
-    run(problem, h[n - 1]);
+    if (n == 1) {
+      CsvWriter csv(csv_path.string());
+      run(problem, h[0], &csv);
+    } else {
+      run(problem, h[n - 1]);
+    }
     if (HasFatalFailure()) break;
   }
   set_threads(before);
+  const std::uint64_t digest = fnv1a_of_file(csv_path);
+  if (!std::getenv("SLIDELINE_KEEP_DIGEST_CSV")) std::filesystem::remove(csv_path);
   ASSERT_FALSE(HasFatalFailure());
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(digest));
+#ifdef SLIDELINE_PORTABLE_CODEGEN
+  const auto digests = stored_digests();
+  const auto stored = digests.find(GetParam());
+  ASSERT_NE(stored, digests.end()) << "no digest stored for " << GetParam() << " in tests/verification/sslide_digests.txt";
+  EXPECT_EQ(stored->second, hex) << GetParam() << ": the 1-thread history is not the stored one (its CSV digest "
+                                 << hex << "); a deliberate physics change regenerates the file with "
+                                 << "scripts/sslide_digests.py and says why in its commit";
+#else
+  std::printf("%s history digest %s (not compared: native code generation, see tests/CMakeLists.txt)\n",
+              GetParam().c_str(), hex);
+#endif
   for (int n = 2; n <= 3; ++n) {
     ASSERT_EQ(h[0].time(), h[n - 1].time()) << n << " threads";
     ASSERT_EQ(h[0].channels().size(), h[n - 1].channels().size());
