@@ -18,13 +18,13 @@
 #include "slideline/contact/contact_manager.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/element/element_block.hpp"
-#include "slideline/io/output_sink.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
 #include "slideline/mesh/mesh_sets.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/solver/boundary.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
+#include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/part_energy_monitor.hpp"
 
 namespace slideline {
