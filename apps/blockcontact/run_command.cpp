@@ -19,6 +19,7 @@
 #include "slideline/io/hdf5_writer.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace blockcontact {
 namespace {

@@ -14,6 +14,7 @@
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/io/keyword_writer.hpp"
 #include "slideline/scenarios/sslide.hpp"
+#include "slideline/solver/validate_model.hpp"
 #include "unit/io/model_equal.hpp"
 
 namespace slideline::scenarios {
