@@ -3,9 +3,9 @@
 // at 150 rad/s. Prints the support reactions against the static answer (R_y = -10, R_x = 3.1).
 #include <cstdio>
 
-#include "slideline/io/output_sink.hpp"
 #include "slideline/scenarios/two_block.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 int main() {
   using namespace slideline;

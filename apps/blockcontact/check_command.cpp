@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace blockcontact {
 
@@ -68,7 +69,10 @@ int run_check(const std::string& deck, bool ignore_unsupported) {
   print_dropped(m);
   // Everything `run` checks before its first step: the build (element kinds, volumes and node
   // order, materials, controls, unsupported features) and the initialisation (masses, first step).
-  auto sim = slideline::build_simulation(m);
+  StderrDiagnostics diagnostics;  // outlives sim
+  slideline::BuildOptions build;
+  build.diagnostics = &diagnostics;
+  auto sim = slideline::build_simulation(m, build);
   sim->initialize();
   fmt::print("ok ({} warning(s){})\n", warnings,
              m.unsupported.empty() ? "" : fmt::format(", {} card(s) dropped", m.unsupported.size()));

@@ -5,8 +5,10 @@
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
+#include <cstdio>
 #include <string>
 
+#include "slideline/core/diagnostics.hpp"
 #include "slideline/model/model.hpp"
 
 namespace blockcontact {
@@ -32,5 +34,14 @@ void register_verify(CLI::App& app, int& exit_code);
 slideline::model::Model read_deck(const std::string& deck, bool ignore_unsupported, std::size_t& warning_count);
 /// Prints the cards --ignore-unsupported dropped, one line each, to stdout (the run log).
 void print_dropped(const slideline::model::Model& model);
+
+/// The CLI's sink for the library's warnings (slideline::BuildOptions::diagnostics): each one to
+/// stderr as one line, "file:line: message" (the message alone when it has no card location).
+class StderrDiagnostics final : public slideline::DiagnosticSink {
+ public:
+  void warning(const slideline::Diagnostic& d) override {
+    std::fprintf(stderr, "%s\n", slideline::to_string(d).c_str());
+  }
+};
 
 }  // namespace blockcontact

@@ -19,6 +19,7 @@
 #include "slideline/io/hdf5_writer.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace blockcontact {
 namespace {
@@ -136,8 +137,10 @@ int run_deck(const RunOptions& o) {
     return kBadInput;
   }
 
+  StderrDiagnostics diagnostics;  // outlives sim
   slideline::BuildOptions build;
   build.end_time = o.end_time;
+  build.diagnostics = &diagnostics;
   auto sim = slideline::build_simulation(model, build);
   if (o.energy_limit >= 0.0) {  // the flag overrides the deck's ENDENG
     sim->controls.energy_error_limit = o.energy_limit;

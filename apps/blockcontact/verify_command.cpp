@@ -86,9 +86,12 @@ ProblemOutcome run_problem(const std::string& name, const VerifyOptions& o, cons
   if (o.drop_contacts) out.problem.model.contacts.clear();
   const auto base = fs::path(o.out_dir) / name;
   slideline::write_keyword_file(out.problem.model, base.string() + ".k");
+  StderrDiagnostics diagnostics;  // outlives sim
+  slideline::BuildOptions build;
+  build.diagnostics = &diagnostics;
   std::unique_ptr<slideline::Simulation> sim;
   try {
-    sim = slideline::build_simulation(out.problem.model);
+    sim = slideline::build_simulation(out.problem.model, build);
   } catch (const slideline::NotImplementedError& e) {
     out.status = std::string("not run: ") + e.what();
   } catch (const slideline::InputError& e) {

@@ -34,7 +34,7 @@ Real compression_factor(const std::vector<TiePoint>& links, const std::vector<Re
 
 void TiebreakContact::initialize(const ContactContext& c) {
   const NodalFields& nodes = c.nodes;
-  tie_candidates(name_, candidates_, master_, nodes, {}, links_, untied_nodes_);
+  tie_candidates(name_, candidates_, master_, nodes, {}, links_, untied_nodes_, c.diagnostics);
   const std::size_t n = links_.size();
   std::vector<Index> link_of(nodes.size(), -1);
   for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);

@@ -66,8 +66,8 @@ void read_solids(const Context& ctx, Block& b, Model& m) {
   while (const Line* l = next_record(b)) {
     Card c = card_of(ctx, *l, b, kElementCard);
     model::SolidElement e;
-    e.line = l->number;
-    e.file = ctx.file_index;
+    e.at.line = l->number;
+    e.at.file = ctx.file_index;
     c.get(0, "EID", e.id);
     c.get(1, "PID", e.pid);
     bool nodes_blank = true;
@@ -88,8 +88,8 @@ void read_shells(const Context& ctx, Block& b, Model& m) {
   while (const Line* l = next_record(b)) {
     Card c = card_of(ctx, *l, b, kElementCard);
     model::ShellElement e;
-    e.line = l->number;
-    e.file = ctx.file_index;
+    e.at.line = l->number;
+    e.at.file = ctx.file_index;
     c.get(0, "EID", e.id);
     c.get(1, "PID", e.pid);
     for (int k = 0; k < 4; ++k) c.get(k + 2, kNodeNames[k], e.n[static_cast<std::size_t>(k)]);

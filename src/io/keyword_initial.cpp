@@ -39,8 +39,8 @@ void read_node(const Context& ctx, Block& b, model::Model& m) {
     model::InitialVelocityNode iv;
     c.get(0, "NID", iv.nid);
     get_velocity(c, 1, kVelocity, iv.v, iv.vr);
-    iv.line = l->number;
-    iv.file = ctx.file_index;
+    iv.at.line = l->number;
+    iv.at.file = ctx.file_index;
     m.initial_velocity_nodes.push_back(iv);
   }
 }
@@ -60,8 +60,8 @@ void read_set(const Context& ctx, Block& b, model::Model& m) {
       Card c3(ctx, require_card(ctx, b, *l, "exempted-node velocity (NSIDEX > 0)"), b.keyword, kStandard);
       get_velocity(c3, 0, kExempted, iv.ve, iv.vre);
     }
-    iv.line = l->number;
-    iv.file = ctx.file_index;
+    iv.at.line = l->number;
+    iv.at.file = ctx.file_index;
     m.initial_velocities.push_back(iv);
   }
 }
@@ -86,8 +86,8 @@ void read_generation(const Context& ctx, Block& b, model::Model& m) {
     }
     c2.get(6, "PHASE", g.phase);
     c2.get(7, "IRIGID", g.irigid);
-    g.line = l->number;
-    g.file = ctx.file_index;
+    g.at.line = l->number;
+    g.at.file = ctx.file_index;
     m.initial_velocity_generations.push_back(g);
   }
 }

@@ -20,12 +20,6 @@
 
 namespace slideline {
 
-std::string to_string(const Diagnostic& d) {
-  if (d.file.empty()) return d.message;
-  if (d.line <= 0) return d.file + ": " + d.message;
-  return d.file + ":" + std::to_string(d.line) + ": " + d.message;
-}
-
 namespace keyword {
 
 std::string_view trim(std::string_view s) {

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "slideline/core/error.hpp"
+#include "slideline/model/unsupported.hpp"
 
 namespace slideline::keyword {
 namespace {
@@ -74,7 +75,7 @@ std::string plural(int n, const char* what) {
 
 /// "part 1, 3" of the parts (or other items) that refer to the dropped card, or "".
 std::string users(const model::Model& m, const model::UnsupportedCard& u) {
-  const std::string_view kind = defined_kind(u.keyword);
+  const std::string_view kind = model::defined_kind(u.keyword);
   std::vector<std::string> who;
   if (u.id != 0) {
     for (const auto& p : m.parts) {
@@ -102,29 +103,6 @@ Classification classify(std::string_view keyword) {
   for (const auto& r : kRules)
     if (starts_with(keyword, r.prefix)) return {r.kind, r.what};
   return {CardKind::physics, "keyword not in slideline's tables"};
-}
-
-std::string_view defined_kind(std::string_view kw) {
-  if (starts_with(kw, "*MAT")) return "material";
-  if (starts_with(kw, "*SECTION_")) return "section";
-  if (starts_with(kw, "*EOS")) return "equation of state";
-  if (starts_with(kw, "*HOURGLASS")) return "hourglass";
-  if (starts_with(kw, "*SET_NODE")) return "node set";
-  if (starts_with(kw, "*SET_PART")) return "part set";
-  if (starts_with(kw, "*SET_SEGMENT")) return "segment set";
-  if (starts_with(kw, "*DEFINE_CURVE") || starts_with(kw, "*DEFINE_TABLE")) return "curve";
-  return "";
-}
-
-const model::UnsupportedCard* find_unsupported(const model::Model& m, std::string_view kind, Id id) {
-  for (const auto& u : m.unsupported)
-    if (u.id == id && defined_kind(u.keyword) == kind) return &u;
-  return nullptr;
-}
-
-std::string card_and_place(const model::UnsupportedCard& u, const std::string& from) {
-  if (u.src.file == from || u.src.file.empty()) return u.keyword + " (line " + std::to_string(u.src.line) + ")";
-  return u.keyword + " (" + u.src.file + ":" + std::to_string(u.src.line) + ")";
 }
 
 void UnsupportedLog::add(const Context& ctx, Block& block, int cards) {
@@ -164,7 +142,7 @@ void UnsupportedLog::finish(model::Model& model, std::vector<Diagnostic>* warnin
   for (const auto& kw : order) {
     const auto& g = groups[kw];
     const auto& first = *g.front();
-    const std::string_view kind = defined_kind(kw);
+    const std::string_view kind = model::defined_kind(kw);
     std::string detail(classify(kw).what);
     if (!kind.empty() && first.id != 0) {
       detail += " " + std::to_string(first.id);

@@ -43,14 +43,4 @@ class UnsupportedLog {
   std::vector<model::UnsupportedCard> physics_;
 };
 
-/// The id namespace a keyword's first field defines ("material", "section", "node set", ...), or
-/// "" when it defines none we track.
-std::string_view defined_kind(std::string_view keyword);
-
-/// The unsupported card that defined id `id` of kind `kind` (see defined_kind), or nullptr.
-const model::UnsupportedCard* find_unsupported(const model::Model& m, std::string_view kind, Id id);
-
-/// "*MAT_X (line 72)" or "*MAT_X (other.k:72)" when the card is in another file than `from`.
-std::string card_and_place(const model::UnsupportedCard& u, const std::string& from);
-
 }  // namespace slideline::keyword

@@ -699,6 +699,7 @@ std::unique_ptr<Simulation> build_simulation(const model::Model& model, const Bu
   b.build_damping();
   b.build_controls();
   b.build_contacts();
+  b.sim->set_diagnostics(options.diagnostics);
   return std::move(b.sim);
 }
 

@@ -147,7 +147,7 @@ void Simulation::initialize() {
   t_ = 0.0;
   dt_ = 0.0;
   cycle_ = 0;
-  contacts.initialize(ContactContext{nodes, blocks, &sets, rigid_});
+  contacts.initialize(ContactContext{nodes, blocks, &sets, rigid_, diagnostics_});
   contacts.resolve_initial_penetrations(nodes);
   // A rigid body's mass properties take the tied slaves condensed onto it once, here: a tie that
   // is born or dies mid-run would change them.

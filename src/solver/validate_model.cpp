@@ -6,10 +6,10 @@
 #include <string>
 #include <unordered_map>
 
-#include "../io/issue_groups.hpp"
-#include "../io/keyword_unsupported.hpp"
+#include "issue_groups.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/element/hex8.hpp"
+#include "slideline/model/unsupported.hpp"
 
 namespace slideline {
 namespace {
@@ -228,8 +228,8 @@ void check_dropped_references(const model::Model& m, Problems& p) {
         {"material", part.mid}, {"section", part.secid}, {"hourglass", part.hgid}, {"equation of state", part.eosid}};
     for (const auto& [kind, id] : uses)
       if (id != 0)
-        if (const auto* u = keyword::find_unsupported(m, kind, id))
-          p.todo(part.src, "part " + std::to_string(part.pid) + " uses " + keyword::card_and_place(*u, part.src.file) +
+        if (const auto* u = model::find_unsupported(m, kind, id))
+          p.todo(part.src, "part " + std::to_string(part.pid) + " uses " + model::card_and_place(*u, part.src.file) +
                                ", not supported");
   }
 }
@@ -238,10 +238,7 @@ void check_dropped_references(const model::Model& m, Problems& p) {
 
 void validate_model(const model::Model& m, const BuildOptions& options) {
   Problems p;
-  const model::Source deck{m.files.empty() ? std::string() : m.files.front(), 0};
-  if (m.nodes.empty()) p.bad(deck, "the model has no nodes (*NODE): nothing to run");
-  if (m.solids.empty() && m.shells.empty())
-    p.bad(deck, "the model has no elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run");
+  add_empty_model_problems(m, "the model has no", p.input);
   check_dropped_references(m, p);
   check_materials(m, p);
   check_controls(m, options, p);

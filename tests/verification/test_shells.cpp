@@ -7,11 +7,11 @@
 #include <cstdio>
 
 #include "slideline/core/parallel.hpp"
-#include "slideline/element/hex_block.hpp"
 #include "slideline/element/block_factory.hpp"
+#include "slideline/element/hex_block.hpp"
 #include "slideline/element/shell_block.hpp"
-#include "slideline/io/output_sink.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
+#include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/simulation.hpp"
 
 using namespace slideline;

@@ -16,10 +16,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "slideline/io/output_sink.hpp"
 #include "slideline/scenarios/sslide.hpp"
 #include "slideline/scenarios/sslide_criteria.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/simulation.hpp"
 
 namespace slideline::scenarios {

@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "slideline/element/hex_block.hpp"
-#include "slideline/io/output_sink.hpp"
 #include "slideline/material/elastic.hpp"
+#include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/simulation.hpp"
 
 using namespace slideline;

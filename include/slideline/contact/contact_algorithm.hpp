@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "slideline/core/diagnostics.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 
@@ -44,6 +45,7 @@ struct ContactContext {
   const std::vector<std::unique_ptr<ElementBlock>>& blocks;
   const MeshSets* sets = nullptr;       ///< the deck's sets resolved to indices (may be null)
   std::span<const std::uint8_t> rigid;  ///< per node: 1 if a rigid body dictates its motion
+  DiagnosticSink* diagnostics = nullptr;  ///< where the interface's warnings go (null: dropped)
 };
 
 /// The contact force buffers (zeroed by the simulation before the phase).

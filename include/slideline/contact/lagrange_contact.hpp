@@ -110,6 +110,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   void set_orientation_surface(Surface faces) { orientation_surface_ = std::move(faces); }
 
   void initialize(const ContactContext& c) override {
+    diagnostics_ = c.diagnostics;
     const std::size_t ns = slaves_.size();
     const Index nseg = master_.segment_count();
     master_offset_.assign(static_cast<std::size_t>(nseg), 0.0);
@@ -439,10 +440,10 @@ class LagrangeInterface final : public ContactAlgorithm {
     stats_.constraints += static_cast<long>(constraints_.size());
     if (r.converged) return;
     if (stats_.unconverged++ == 0)
-      std::fprintf(stderr,
+      warn(diagnostics_,
                    "slideline: warning: contact interface '%s': the Lagrange-multiplier solve did not reach "
                    "its tolerance %.3g in %d sweeps (correction %.3g); later occurrences are counted, not "
-                   "reported\n",
+                   "reported",
                    s_.title.c_str(), tolerance_, r.sweeps, r.correction);
   }
 
@@ -505,6 +506,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   std::vector<std::uint8_t> keep_;
   std::vector<Real> master_size_;
   LagrangeWorkspace workspace_;  ///< scratch of the solve, sized in initialize()
+  DiagnosticSink* diagnostics_ = nullptr;  ///< from the ContactContext
 };
 
 /// Types 3, 5, 10 and 12 with the _LAGRANGE option.

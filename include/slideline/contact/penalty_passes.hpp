@@ -29,11 +29,13 @@ class PenaltyPasses {
   /// penetrations.
   void initialize(const ContactContext& context) {
     for (auto& p : passes_) p->initialize(context.nodes, context.blocks);
+    diagnostics_ = context.diagnostics;
   }
 
   /// Moves the slaves found below their master surface out to it, pass by pass (a pass after one
   /// that moved nodes re-reads its gaps first: Type 3's reverse pass sees the moved slave
-  /// surface), and logs the count and the largest move to stderr with the interface title.
+  /// surface), and warns (ContactContext::diagnostics) with the count, the largest move and the
+  /// interface title.
   void resolve_initial_penetrations(NodalFields& nodes) {
     Index moved = 0;
     Real largest = 0.0;
@@ -46,9 +48,9 @@ class PenaltyPasses {
     moved_ = moved;
     largest_move_ = largest;
     if (initial_penetration_count() > 0) {
-      std::fprintf(stderr,
+      warn(diagnostics_,
                    "contact '%s': %ld initial penetration(s), largest %.6g: %ld node(s) moved out to the "
-                   "surface, largest move %.6g\n",
+                   "surface, largest move %.6g",
                    name_.c_str(), static_cast<long>(initial_penetration_count()), largest_initial_penetration(),
                    static_cast<long>(moved), largest);
     }
@@ -104,6 +106,7 @@ class PenaltyPasses {
   Real dt_ = std::numeric_limits<Real>::max();
   Index moved_ = 0;
   Real largest_move_ = 0.0;
+  DiagnosticSink* diagnostics_ = nullptr;
 };
 
 }  // namespace slideline

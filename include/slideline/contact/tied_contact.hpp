@@ -50,7 +50,7 @@ class TiedInterface final : public ContactAlgorithm {
 
   void initialize(const ContactContext& context) override {
     const NodalFields& nodes = context.nodes;
-    tie_candidates(name_, candidates_, master_, nodes, options_, links_, untied_nodes_);
+    tie_candidates(name_, candidates_, master_, nodes, options_, links_, untied_nodes_, context.diagnostics);
     rotation_.assign(links_.size(), 0);
     slaves_.clear();
     masters_.clear();

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "slideline/io/output_sink.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 namespace slideline {
 

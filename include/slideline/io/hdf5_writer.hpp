@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-#include "slideline/io/output_sink.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 namespace slideline {
 

@@ -18,20 +18,10 @@
 #include <string_view>
 #include <vector>
 
+#include "slideline/core/diagnostics.hpp"
 #include "slideline/model/model.hpp"
 
 namespace slideline {
-
-/// A located message: a warning of the reader or a problem found by check_references.
-/// line = 0 when the item has no card line.
-struct Diagnostic {
-  std::string file;
-  int line = 0;
-  std::string message;
-};
-
-/// "file:line: message" (or "message" when file is empty).
-std::string to_string(const Diagnostic& d);
 
 struct ReadOptions {
   /// Drop unsupported physics cards (listing each in Model::unsupported and in the warnings)
@@ -44,7 +34,7 @@ struct ReadOptions {
 /// given, as they are found, so a caller can print them when an error follows. Throws InputError
 /// when a file cannot be opened or a card is malformed, NotImplementedError when the deck holds
 /// unsupported physics cards (all of them listed, one line per keyword). References between ids
-/// are not checked here: call check_references() on the result.
+/// are not checked here: call check_references() (solver/validate_model.hpp) on the result.
 model::Model read_keyword_file(const std::string& path, std::vector<Diagnostic>* warnings = nullptr,
                                const ReadOptions& options = {});
 
@@ -53,13 +43,6 @@ model::Model read_keyword_file(const std::string& path, std::vector<Diagnostic>*
 model::Model read_keyword_string(std::string_view text, const std::string& name,
                                  std::vector<Diagnostic>* warnings = nullptr,
                                  const ReadOptions& options = {});
-
-/// Every dangling or duplicate id in a model: elements referring to undefined nodes or parts,
-/// parts to undefined sections, materials or hourglass cards, sets to undefined nodes or parts,
-/// boundary conditions, loads and contacts to undefined sets, parts or curves. A reference to an
-/// id that an unsupported (dropped) card defines names that card. The same problem repeated over
-/// many elements is one Diagnostic with a count and the first few ids. Empty when clean.
-std::vector<Diagnostic> check_references(const model::Model& model);
 
 /// One line per dropped card kind of Model::unsupported: "file:line: *KEYWORD (N cards, ids ...)
 /// dropped". For a run log.

@@ -5,6 +5,7 @@
 /// Like elements, they locate themselves by line and file index (model::element_source): a deck
 /// can give thousands of *INITIAL_VELOCITY_NODE cards.
 #include "slideline/core/types.hpp"
+#include "slideline/model/source.hpp"
 
 namespace slideline::model {
 
@@ -14,8 +15,8 @@ struct InitialVelocityNode {
   Id nid = 0;
   Vec3 v = Vec3::Zero();   ///< length/time
   Vec3 vr = Vec3::Zero();  ///< rad/time
-  int line = 0;            ///< card line in Model::files[file] (0 = generated), for messages
-  int file = 0;
+  CardLine at;             ///< where the card is, for messages (model::element_source)
+  bool operator==(const InitialVelocityNode&) const = default;
 };
 
 /// *INITIAL_VELOCITY: the velocity of every node of node set NSID (0 = all nodes), restricted to
@@ -30,8 +31,8 @@ struct InitialVelocity {
   Vec3 vr = Vec3::Zero();
   Vec3 ve = Vec3::Zero();   ///< exempted nodes (card 3, with NSIDEX > 0)
   Vec3 vre = Vec3::Zero();
-  int line = 0;
-  int file = 0;
+  CardLine at;
+  bool operator==(const InitialVelocity&) const = default;
 };
 
 /// *INITIAL_VELOCITY_GENERATION: a rigid motion v = V + OMEGA n x (x - xc) (and rotational
@@ -48,8 +49,8 @@ struct InitialVelocityGeneration {
   Vec3 n = Vec3::Zero();   ///< axis direction (normalised by the builder)
   int phase = 0;     ///< 1 = after dynamic relaxation (not implemented)
   int irigid = 0;    ///< overwrite *PART_INERTIA velocities: no effect here
-  int line = 0;
-  int file = 0;
+  CardLine at;
+  bool operator==(const InitialVelocityGeneration&) const = default;
 };
 
 }  // namespace slideline::model

@@ -15,20 +15,16 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/model/initial_velocity.hpp"
+#include "slideline/model/source.hpp"
 
 namespace slideline::model {
-
-/// Where a card came from, for error messages. line = 0 when built programmatically.
-struct Source {
-  std::string file;
-  int line = 0;
-};
 
 struct Node {
   Id id = 0;
   Vec3 x = Vec3::Zero();
   int tc = 0;  ///< translational constraint code (0 = free)
   int rc = 0;  ///< rotational constraint code (0 = free)
+  bool operator==(const Node&) const = default;
 };
 
 /// *ELEMENT_SOLID: 8-node hexahedron, LS-DYNA node ordering (bottom face 1-4, top face 5-8).
@@ -36,8 +32,8 @@ struct SolidElement {
   Id id = 0;
   Id pid = 0;
   std::array<Id, 8> n{};
-  int line = 0;  ///< card line in Model::files[file] (0 = generated), for messages
-  int file = 0;
+  CardLine at;  ///< where the card is, for messages (model::element_source)
+  bool operator==(const SolidElement&) const = default;
 };
 
 /// *ELEMENT_SHELL: 4-node quadrilateral (n3 == n4 for a triangle is not supported yet).
@@ -45,8 +41,8 @@ struct ShellElement {
   Id id = 0;
   Id pid = 0;
   std::array<Id, 4> n{};
-  int line = 0;  ///< card line in Model::files[file] (0 = generated), for messages
-  int file = 0;
+  CardLine at;  ///< where the card is, for messages (model::element_source)
+  bool operator==(const ShellElement&) const = default;
 };
 
 /// *PART
@@ -58,6 +54,7 @@ struct Part {
   Id eosid = 0;
   Id hgid = 0;  ///< 0 = use *CONTROL_HOURGLASS
   Source src;
+  bool operator==(const Part&) const = default;
 };
 
 /// *SECTION_SOLID
@@ -65,6 +62,7 @@ struct SectionSolid {
   Id secid = 0;
   int elform = 1;  ///< 1 = constant-stress (one-point) hexahedron, the only one supported
   Source src;
+  bool operator==(const SectionSolid&) const = default;
 };
 
 /// *SECTION_SHELL
@@ -76,6 +74,7 @@ struct SectionShell {
   Real propt = 1.0;
   std::array<Real, 4> t{0.0, 0.0, 0.0, 0.0};  ///< nodal thicknesses (t2..t4 default to t1)
   Source src;
+  bool operator==(const SectionShell&) const = default;
 };
 
 /// *MAT_ELASTIC (type 1)
@@ -86,6 +85,7 @@ struct MatElastic {
   Real pr = 0.0;  ///< Poisson ratio
   std::string title;
   Source src;
+  bool operator==(const MatElastic&) const = default;
 };
 
 /// *MAT_MOONEY-RIVLIN_RUBBER (type 27): W = A(I1-3) + B(I2-3) + C(I3^-2 - 1) + D(I3-1)^2.
@@ -97,6 +97,7 @@ struct MatMooneyRivlin {
   Real b = 0.0;
   std::string title;
   Source src;
+  bool operator==(const MatMooneyRivlin&) const = default;
 };
 
 /// *MAT_RIGID (type 20). E and PR are used only for contact stiffness and the time step.
@@ -110,6 +111,7 @@ struct MatRigid {
   int con2 = 0;    ///< rotational constraint code (with cmo = +1), same coding
   std::string title;
   Source src;
+  bool operator==(const MatRigid&) const = default;
 };
 
 using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid>;
@@ -122,18 +124,21 @@ struct Hourglass {
   Real q1 = 1.5;   ///< quadratic bulk viscosity (per part)
   Real q2 = 0.06;  ///< linear bulk viscosity (per part)
   Source src;
+  bool operator==(const Hourglass&) const = default;
 };
 
 /// *CONTROL_HOURGLASS
 struct ControlHourglass {
   int ihq = 1;
   Real qh = 0.1;
+  bool operator==(const ControlHourglass&) const = default;
 };
 
 /// *CONTROL_BULK_VISCOSITY
 struct ControlBulkViscosity {
   Real q1 = 1.5;   ///< quadratic coefficient
   Real q2 = 0.06;  ///< linear coefficient
+  bool operator==(const ControlBulkViscosity&) const = default;
 };
 
 /// *SET_NODE_LIST
@@ -142,6 +147,7 @@ struct NodeSet {
   std::string title;
   std::vector<Id> nodes;
   Source src;
+  bool operator==(const NodeSet&) const = default;
 };
 
 /// *SET_SEGMENT: each segment lists 4 node ids (n3 == n4 for a triangle).
@@ -150,6 +156,7 @@ struct SegmentSet {
   std::string title;
   std::vector<std::array<Id, 4>> segments;
   Source src;
+  bool operator==(const SegmentSet&) const = default;
 };
 
 /// *SET_PART_LIST
@@ -158,6 +165,7 @@ struct PartSet {
   std::string title;
   std::vector<Id> parts;
   Source src;
+  bool operator==(const PartSet&) const = default;
 };
 
 /// *LOAD_NODE_POINT (one node) / *LOAD_NODE_SET (`set`: every node of a node set): a
@@ -171,6 +179,7 @@ struct LoadNode {
   Id cid = 0;
   std::array<Id, 3> m{0, 0, 0};  ///< M1 M2 M3 (follower loads, DOF 4 and 8)
   Source src;
+  bool operator==(const LoadNode&) const = default;
 };
 
 /// *BOUNDARY_SPC_SET: fixed degrees of freedom (1 = fixed) of every node of a node set;
@@ -183,6 +192,7 @@ struct BoundarySpc {
   std::array<int, 6> dof{0, 0, 0, 0, 0, 0};  ///< DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
   Source src;
   bool node = false;   ///< *BOUNDARY_SPC_NODE (last, so that {id, title, nsid, ...} still reads)
+  bool operator==(const BoundarySpc&) const = default;
 };
 
 /// *BOUNDARY_PRESCRIBED_MOTION_SET / _NODE / _RIGID: prescribed motion of a node set, a node or a
@@ -208,6 +218,7 @@ struct PrescribedMotion {
            : target == Target::node ? "*BOUNDARY_PRESCRIBED_MOTION_NODE"
                                     : "*BOUNDARY_PRESCRIBED_MOTION_RIGID";
   }
+  bool operator==(const PrescribedMotion&) const = default;
 };
 
 /// *LOAD_BODY_X / _Y / _Z: base acceleration. LS-DYNA semantics: a positive value gives inertial
@@ -220,12 +231,14 @@ struct LoadBody {
   Real xc = 0.0, yc = 0.0, zc = 0.0;
   Id cid = 0;
   Source src;
+  bool operator==(const LoadBody&) const = default;
 };
 
 /// *LOAD_BODY_PARTS: the part set that *LOAD_BODY_X/Y/Z act on (all parts when absent).
 struct LoadBodyParts {
   Id psid = 0;
   Source src;
+  bool operator==(const LoadBodyParts&) const = default;
 };
 
 /// *DEFINE_BOX: an axis-aligned box [XMN, XMX] x [YMN, YMX] x [ZMN, ZMX] (contact SBOXID / MBOXID).
@@ -235,6 +248,7 @@ struct Box {
   std::array<Real, 3> min{0.0, 0.0, 0.0};
   std::array<Real, 3> max{0.0, 0.0, 0.0};
   Source src;
+  bool operator==(const Box&) const = default;
 };
 
 /// *DEFINE_CURVE: y = SFO * f((t - OFFA) / SFA) + OFFO, piecewise linear, constant outside.
@@ -249,6 +263,7 @@ struct Curve {
   int dattyp = 0;
   std::vector<std::pair<Real, Real>> points;
   Source src;
+  bool operator==(const Curve&) const = default;
 };
 
 /// *DAMPING_GLOBAL: mass-proportional damping, force = -VALDMP * m * v (VALDMP in 1/time).
@@ -257,6 +272,7 @@ struct DampingGlobal {
   Real valdmp = 0.0;
   std::array<Real, 6> stf{0, 0, 0, 0, 0, 0};  ///< STX..SRZ scale factors (0 = 1)
   Source src;
+  bool operator==(const DampingGlobal&) const = default;
 };
 
 /// *DAMPING_PART_MASS[_SET]: mass-proportional damping of one part (or of the parts of a part set
@@ -269,6 +285,7 @@ struct DampingPartMass {
   bool set = false;
   std::array<Real, 6> stf{0, 0, 0, 0, 0, 0};  ///< STX..SRZ (read when FLAG = 1)
   Source src;
+  bool operator==(const DampingPartMass&) const = default;
 };
 
 /// *DAMPING_PART_STIFFNESS[_SET]: stiffness-proportional (Rayleigh) damping of one part (or of
@@ -280,6 +297,7 @@ struct DampingPartStiffness {
   Real coef = 0.0;
   bool set = false;   ///< the _SET option: pid is a part set id
   Source src;
+  bool operator==(const DampingPartStiffness&) const = default;
 };
 
 /// *CONTROL_TERMINATION
@@ -294,6 +312,7 @@ struct ControlTermination {
   /// or 0 keeps slideline's default of 5%.
   Real endeng = 0.0;
   Source src;
+  bool operator==(const ControlTermination&) const = default;
 };
 
 /// *CONTROL_TIMESTEP
@@ -305,6 +324,7 @@ struct ControlTimestep {
   Real dt2ms = 0.0;
   Id lctm = 0;
   Source src;
+  bool operator==(const ControlTimestep&) const = default;
 };
 
 /// *CONTROL_CONTACT (card 1 fields used here)
@@ -317,6 +337,7 @@ struct ControlContact {
   int thkchg = 0;
   int orien = 1;
   int enmass = 0;
+  bool operator==(const ControlContact&) const = default;
 };
 
 /// Output cadences (*DATABASE_...). 0 = not written.
@@ -327,6 +348,7 @@ struct DatabaseControl {
   Real glstat = 0.0;   ///< energies
   Real d3plot = 0.0;   ///< nodal states (deformed mesh)
   std::vector<Id> history_nodes;  ///< *DATABASE_HISTORY_NODE
+  bool operator==(const DatabaseControl&) const = default;
 };
 
 /// The DYNA3D interface types of the verification report, mapped to LS-DYNA contact cards.
@@ -388,6 +410,7 @@ struct Contact {
   /// docs/contact.md, "The contact patch test".
   int penalty_coupling = 0;
   Source src;
+  bool operator==(const Contact&) const = default;
 };
 
 /// A card the reader saw and did not use because this version does not support it, kept so that
@@ -398,6 +421,7 @@ struct UnsupportedCard {
   Id id = 0;            ///< first field of its first data card when an integer (MID, SECID, SID...), else 0
   int cards = 0;        ///< data cards under the keyword
   Source src;
+  bool operator==(const UnsupportedCard&) const = default;
 };
 
 /// Everything a deck says.
@@ -439,13 +463,15 @@ struct Model {
   std::vector<UnsupportedCard> unsupported;
   /// The files the deck was read from (main file first, then *INCLUDEs), for element locations.
   std::vector<std::string> files;
+  bool operator==(const Model&) const = default;
 };
 
 /// Where an element card came from ("" file and line 0 when generated).
 template <class Element>
 Source element_source(const Model& m, const Element& e) {
-  if (e.line <= 0 || e.file < 0 || static_cast<std::size_t>(e.file) >= m.files.size()) return {};
-  return {m.files[static_cast<std::size_t>(e.file)], e.line};
+  const CardLine& at = e.at;
+  if (at.line <= 0 || at.file < 0 || static_cast<std::size_t>(at.file) >= m.files.size()) return {};
+  return {m.files[static_cast<std::size_t>(at.file)], at.line};
 }
 
 /// The material id of any material alternative.

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "slideline/io/output_sink.hpp"
 #include "slideline/scenarios/dyna3d_reported.hpp"
 #include "slideline/scenarios/sslide.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 namespace slideline::scenarios {
 

@@ -11,6 +11,9 @@ namespace slideline {
 struct BuildOptions {
   /// Overrides *CONTROL_TERMINATION's ENDTIM when > 0.
   Real end_time = 0.0;
+  /// Where the simulation's warnings go (initial penetrations moved out, untied slaves, an
+  /// unconverged Lagrange solve); null drops them. Must outlive the simulation.
+  DiagnosticSink* diagnostics = nullptr;
 };
 
 /// Builds the simulation. Throws InputError for a bad reference or value, NotImplementedError for

@@ -16,15 +16,16 @@
 #include <vector>
 
 #include "slideline/contact/contact_manager.hpp"
+#include "slideline/core/diagnostics.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/element/element_block.hpp"
-#include "slideline/io/output_sink.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
 #include "slideline/mesh/mesh_sets.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/solver/boundary.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
+#include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/part_energy_monitor.hpp"
 
 namespace slideline {
@@ -85,6 +86,10 @@ class Simulation {
   /// Computes masses, builds the corner gather lists, evaluates the forces at t = 0 and the first
   /// stable step. Call once after filling the members above.
   void initialize();
+
+  /// Where warnings go (build_simulation sets it from BuildOptions::diagnostics; null, the
+  /// default, drops them): the contact interfaces get it at initialize().
+  void set_diagnostics(DiagnosticSink* sink) { diagnostics_ = sink; }
 
   /// Advances one cycle. Returns false when the end time or cycle limit was reached.
   bool step();
@@ -194,6 +199,7 @@ class Simulation {
   Real last_state_ = -1.0;
   const std::vector<OutputSink*>* sinks_ = nullptr;
   bool initialized_ = false;
+  DiagnosticSink* diagnostics_ = nullptr;
   bool finished_ = false;
   bool forces_current_ = false;  // the forces at t_ are evaluated
   bool has_damping_curves_ = false;

@@ -6,6 +6,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace slideline {
 namespace {
@@ -41,7 +42,7 @@ TEST(KeywordInitialVelocity, FixedColumnsAndTheExemptedCard) {
   EXPECT_EQ(a.vr, Vec3(0.0, 0.0, 1.0));
   EXPECT_EQ(a.ve, Vec3(-1.0, 0.0, 0.0));
   EXPECT_EQ(a.vre, Vec3(0.0, 2.0, 0.0));
-  EXPECT_EQ(a.line, 4);
+  EXPECT_EQ(a.at.line, 4);
   // NSIDEX = 0: no exempted card; the next record starts right after card 2.
   EXPECT_EQ(m.initial_velocities[1].nsid, 0);
   EXPECT_EQ(m.initial_velocities[1].v, Vec3(1.0, 0.0, 0.0));
@@ -49,7 +50,7 @@ TEST(KeywordInitialVelocity, FixedColumnsAndTheExemptedCard) {
   EXPECT_EQ(m.initial_velocity_nodes[1].nid, 6);
   EXPECT_EQ(m.initial_velocity_nodes[1].v, Vec3(0.0, 0.0, -2.0));
   EXPECT_EQ(m.initial_velocity_nodes[1].vr, Vec3(0.5, 0.0, 0.0));
-  EXPECT_EQ(m.initial_velocity_nodes[1].line, 11);
+  EXPECT_EQ(m.initial_velocity_nodes[1].at.line, 11);
   ASSERT_EQ(m.initial_velocity_generations.size(), 1u);
   const auto& g = m.initial_velocity_generations[0];
   EXPECT_EQ(g.id, 7);

@@ -6,6 +6,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace slideline {
 namespace {

@@ -8,6 +8,7 @@
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace slideline {
 namespace {

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "slideline/core/error.hpp"
-#include "slideline/io/output_sink.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 using namespace slideline;
 

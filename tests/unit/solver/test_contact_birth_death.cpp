@@ -17,9 +17,9 @@
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/io/keyword_writer.hpp"
-#include "slideline/io/output_sink.hpp"
 #include "slideline/scenarios/sslide.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 namespace slideline {
 namespace {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "slideline/contact/search/closest_point.hpp"
+#include "slideline/core/diagnostics.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/mesh/surface.hpp"
@@ -97,11 +98,11 @@ inline std::vector<TiePoint> find_tie_points(std::span<const Index> slaves, cons
 /// The ties of an interface at initialisation (Types 2, 6, 7, 8, 9 alike): find_tie_points for
 /// each of `candidates` that is not itself a node of `master` (a shared node is not tied to
 /// itself); the tied ones go to `links`, the others to `untied` (both cleared first) and, when
-/// there are any, to a stderr line naming the interface and the first ten node ids: an untied
-/// slave is free, which the user must hear about.
+/// there are any, to a warning (`diagnostics`) naming the interface and the first ten node ids: an
+/// untied slave is free, which the user must hear about.
 inline void tie_candidates(const std::string& name, std::span<const Index> candidates, const Surface& master,
                            const NodalFields& nodes, const TieSearchOptions& opt, std::vector<TiePoint>& links,
-                           std::vector<Index>& untied) {
+                           std::vector<Index>& untied, DiagnosticSink* diagnostics) {
   std::vector<std::uint8_t> is_master(nodes.size(), 0);
   for (Index m : master.conn) is_master[m] = 1;
   std::vector<Index> slaves;
@@ -116,8 +117,8 @@ inline void tie_candidates(const std::string& name, std::span<const Index> candi
   if (untied.empty()) return;
   std::string ids;
   for (std::size_t k = 0; k < untied.size() && k < 10; ++k) ids += (k ? ", " : "") + std::to_string(nodes.ids[untied[k]]);
-  std::fprintf(stderr, "contact %s: %zu slave node(s) project outside every master segment and are left free "
-               "(first ids: %s)\n", name.c_str(), untied.size(), ids.c_str());
+  warn(diagnostics, "contact %s: %zu slave node(s) project outside every master segment and are left free "
+       "(first ids: %s)", name.c_str(), untied.size(), ids.c_str());
 }
 
 /// x at the master point of t: sum_a N_a f(master_a).

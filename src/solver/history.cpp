@@ -1,7 +1,7 @@
 #include <stdexcept>
 
 #include "slideline/core/error.hpp"
-#include "slideline/io/output_sink.hpp"
+#include "slideline/solver/output_sink.hpp"
 
 namespace slideline {
 

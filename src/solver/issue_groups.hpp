@@ -1,12 +1,12 @@
 #pragma once
 // Internal: the same problem found on many items (elements, mostly) reported as one line with a
 // count and the first few items, instead of one line each (a tetrahedral mesh gave thousands).
-// Used by check_references and validate_model. Not installed.
+// Used by check_references and validate_model (the validation layer). Not installed.
 #include <map>
 #include <string>
 #include <vector>
 
-#include "slideline/io/keyword_reader.hpp"
+#include "slideline/core/diagnostics.hpp"
 #include "slideline/model/model.hpp"
 
 namespace slideline {
@@ -52,5 +52,14 @@ class IssueGroups {
   std::map<std::string, std::vector<Occurrence>> groups_;
   std::map<std::string, std::string> units_;
 };
+
+/// "<subject> nodes (*NODE): nothing to run" and the same for elements, located at the deck's main
+/// file, when the model has none (`subject`: "the deck defines no", "the model has no").
+inline void add_empty_model_problems(const model::Model& m, const std::string& subject, std::vector<Diagnostic>& out) {
+  const std::string file = m.files.empty() ? std::string() : m.files.front();
+  if (m.nodes.empty()) out.push_back({file, 0, subject + " nodes (*NODE): nothing to run"});
+  if (m.solids.empty() && m.shells.empty())
+    out.push_back({file, 0, subject + " elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run"});
+}
 
 }  // namespace slideline

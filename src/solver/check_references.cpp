@@ -1,12 +1,13 @@
-// check_references: dangling and duplicate ids of a model, each named with its card and line.
+// check_references: dangling and duplicate ids of a model, each named with its card and line
+// (the validation layer, solver/validate_model.hpp).
 #include <string>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "issue_groups.hpp"
-#include "keyword_unsupported.hpp"
-#include "slideline/io/keyword_reader.hpp"
+#include "slideline/model/unsupported.hpp"
+#include "slideline/solver/validate_model.hpp"
 
 namespace slideline {
 namespace {
@@ -43,10 +44,7 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
   Checker ck;
   // Without nodes or elements every other reference problem is a consequence: say only that.
   if (m.nodes.empty() || (m.solids.empty() && m.shells.empty())) {
-    const std::string file = m.files.empty() ? std::string() : m.files.front();
-    if (m.nodes.empty()) ck.out.push_back({file, 0, "the deck defines no nodes (*NODE): nothing to run"});
-    if (m.solids.empty() && m.shells.empty())
-      ck.out.push_back({file, 0, "the deck defines no elements (*ELEMENT_SOLID, *ELEMENT_SHELL): nothing to run"});
+    add_empty_model_problems(m, "the deck defines no", ck.out);
     return ck.out;
   }
   const model::Source none;
@@ -106,8 +104,8 @@ std::vector<Diagnostic> check_references(const model::Model& m) {
   element_issues.append_to(ck.out);
   // A reference to an id that only an unsupported (dropped) card defines names that card.
   const auto dropped = [&](const model::Source& from, const std::string& who, std::string_view kind, Id id) {
-    if (const auto* u = keyword::find_unsupported(m, kind, id)) {
-      ck.add(from, who + " uses " + keyword::card_and_place(*u, from.file) + ", not supported");
+    if (const auto* u = model::find_unsupported(m, kind, id)) {
+      ck.add(from, who + " uses " + model::card_and_place(*u, from.file) + ", not supported");
       return true;
     }
     return false;
