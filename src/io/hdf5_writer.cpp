@@ -141,8 +141,12 @@ struct Hdf5Writer::Impl {
   static std::string state_group(std::size_t s) { return "/states/state_" + std::to_string(s); }
   std::vector<Real> state_times;  // for the XDMF file
   std::size_t nodes = 0;
-  std::size_t hexes = 0;
-  std::size_t quads = 0;
+  /// One XDMF grid per topology the mesh has cells of (the topologies in the description's order).
+  struct CellGrid {
+    const ElementTopology* topology;
+    std::size_t count;
+  };
+  std::vector<CellGrid> grids;
   bool begun = false;
 
   void write_buffer() {
@@ -180,12 +184,14 @@ struct Hdf5Writer::Impl {
           << "/" << name << "</DataItem>\n";
         return d.str();
       };
-      const auto grid = [&](const char* name, const char* topology, std::size_t cells, int per_cell,
-                            const char* dataset, const std::string& time) {
-        x << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n" << time
-          << "        <Topology TopologyType=\"" << topology << "\" NumberOfElements=\"" << cells << "\">\n"
-          << "          <DataItem Dimensions=\"" << cells << " " << per_cell
-          << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ":" << dataset << "</DataItem>\n"
+      const auto grid = [&](const CellGrid& g, const std::string& time_tag) {
+        const ElementTopology& t = *g.topology;
+        x << "      <Grid Name=\"" << t.cell_set << "\" GridType=\"Uniform\">\n" << time_tag
+          << "        <Topology TopologyType=\"" << t.xdmf_cell << "\" NumberOfElements=\"" << g.count
+          << "\">\n"
+          << "          <DataItem Dimensions=\"" << g.count << " " << t.nodes
+          << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ":/mesh/" << t.cell_set
+          << "</DataItem>\n"
           << "        </Topology>\n"
           << "        <Geometry GeometryType=\"XYZ\">\n"
           << slab("coordinates") << "        </Geometry>\n"
@@ -193,20 +199,18 @@ struct Hdf5Writer::Impl {
           << slab("displacement") << "        </Attribute>\n"
           << "      </Grid>\n";
       };
-      if (hexes > 0 && quads > 0) {
-        // Both element kinds: a spatial collection of two grids per state.
+      if (grids.size() > 1) {
+        // Several topologies: a spatial collection of one grid each per state.
         x << "     <Grid Name=\"state " << s << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
           << "      <Time Value=\"" << state_times[s] << "\"/>\n";
-        grid("hexahedra", "Hexahedron", hexes, 8, "/mesh/hexahedra", "");
-        grid("quadrilaterals", "Quadrilateral", quads, 4, "/mesh/quadrilaterals", "");
+        for (const CellGrid& g : grids) grid(g, "");
         x << "     </Grid>\n";
-      } else {
-        // One element kind: the grid itself is the state (the layout every XDMF reader takes).
+      } else if (grids.size() == 1) {
+        // One topology: the grid itself is the state (the layout every XDMF reader takes).
         std::ostringstream tv;
         tv.precision(17);
         tv << "        <Time Value=\"" << state_times[s] << "\"/>\n";
-        if (hexes > 0) grid("hexahedra", "Hexahedron", hexes, 8, "/mesh/hexahedra", tv.str());
-        if (quads > 0) grid("quadrilaterals", "Quadrilateral", quads, 4, "/mesh/quadrilaterals", tv.str());
+        grid(grids.front(), tv.str());
       }
     }
     x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
@@ -277,12 +281,13 @@ void Hdf5Writer::begin(const std::vector<HistoryChannel>& channels, const MeshDe
   d.width = static_cast<std::size_t>(off);
 
   d.nodes = mesh.node_ids.size();
-  d.hexes = mesh.hex_connectivity.size() / 8;
-  d.quads = mesh.quad_connectivity.size() / 4;
   write_fixed(f, "/mesh/node_ids", H5T_NATIVE_INT64, H5T_STD_I64LE, mesh.node_ids, 1);
   write_fixed(f, "/mesh/coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, mesh.x0, 3);
-  write_fixed(f, "/mesh/hexahedra", H5T_NATIVE_INT32, H5T_STD_I32LE, mesh.hex_connectivity, 8);
-  write_fixed(f, "/mesh/quadrilaterals", H5T_NATIVE_INT32, H5T_STD_I32LE, mesh.quad_connectivity, 4);
+  for (const TopologyCells& c : mesh.cells) {
+    write_fixed(f, "/mesh/" + std::string(c.topology->cell_set), H5T_NATIVE_INT32, H5T_STD_I32LE,
+                c.connectivity, static_cast<hsize_t>(c.topology->nodes));
+    if (c.count() > 0) d.grids.push_back({c.topology, c.count()});
+  }
   d.state_time.create(f, "/states/time", {}, 64);
   if (d.nodes > 0) {
     d.state_disp.create(f, "/states/displacement", {hsize_t(d.nodes), 3}, 1);

@@ -8,8 +8,6 @@
 #include <utility>
 
 #include "slideline/core/error.hpp"
-#include "slideline/element/hex8.hpp"
-#include "slideline/mesh/block_topology.hpp"
 
 namespace slideline {
 
@@ -26,6 +24,7 @@ struct Candidate {
   Index block;
   Index element;
   SegmentKind kind;
+  Real thickness;  ///< the shell's section thickness; 0 for a solid face
 };
 
 /// Removes cyclically repeated neighbours (a wedge's collapsed corner) and writes the face in
@@ -82,67 +81,77 @@ std::string node_ids(const NodalFields& nodes, const SegmentNodes& c) {
   return s;
 }
 
-/// Appends the outward faces of hexahedron e of `block` (block index b) to `out`. An element of
-/// zero volume has no outward side: an error when `strict`, else skipped (a segment set only
-/// looks at the elements its segments name, so an unrelated bad element must not stop it).
-void append_hex_faces(const ElementBlock& block, Index b, const BlockTopology& topo, Index e,
-                      const NodalFields& nodes, const std::string& context, bool strict,
-                      std::vector<Candidate>& out) {
-  const Index* c = block.connectivity().data() + topo.node_offset(e);
-  const hex8::NodeMat X = gather_rows<8>(nodes.x0, c);
-  const Real v = hex8::volume(X, hex8::volume_gradient(X));
+/// The nodes of local face f of the element whose connectivity starts at c.
+SegmentNodes face_nodes(const Index* c, const LocalFace& f) { return {c[f[0]], c[f[1]], c[f[2]], c[f[3]]}; }
+
+/// Appends the outward faces of solid element e of `block` (block index b; nodes from c) to
+/// `out`. An element of zero volume has no outward side: an error when `strict`, else skipped (a
+/// segment set only looks at the elements its segments name, so an unrelated bad element must not
+/// stop it).
+void append_solid_faces(const MeshBlock& block, Index b, const ElementTopology& topo, Index e,
+                        const Index* c, const NodalFields& nodes, const std::string& context,
+                        bool strict, std::vector<Candidate>& out) {
+  const Real v = topo.measure(nodes.x0, c);
   if (!(std::abs(v) > 0.0)) {
     if (!strict) return;
     throw InputError(context + ": solid element " + std::to_string(block.element_id(e)) +
                      " of part " + std::to_string(block.part_id()) +
                      " has zero volume, so its faces have no outward side");
   }
-  for (const auto& f : hex8::outward_faces) {
-    SegmentNodes raw{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+  for (const LocalFace& f : topo.faces) {
+    SegmentNodes raw = face_nodes(c, f);
     if (v < 0.0) raw = reversed(raw);  // a mirrored element: the table points in
     SegmentNodes face;
     if (!normalize_face(raw, face)) continue;
-    out.push_back({face_key(face), face, b, e, SegmentKind::solid_face});
+    out.push_back({face_key(face), face, b, e, SegmentKind::solid_face, 0.0});
   }
 }
 
-void append_shell(const ElementBlock& block, Index b, const BlockTopology& topo, Index e,
-                  std::vector<Candidate>& out) {
-  const Index* c = block.connectivity().data() + topo.node_offset(e);
-  SegmentNodes face;
-  if (!normalize_face({c[0], c[1], c[2], c[3]}, face)) return;
-  out.push_back({face_key(face), face, b, e, SegmentKind::shell});
+/// Appends surface element e (a shell: its one face, in its own order) of a run to `out`.
+void append_surface_element(Index b, const TopologyRun& run, Index e, const Index* c,
+                            std::vector<Candidate>& out) {
+  for (const LocalFace& f : run.topology->faces) {
+    SegmentNodes face;
+    if (!normalize_face(face_nodes(c, f), face)) continue;
+    out.push_back({face_key(face), face, b, e, SegmentKind::shell, run.thickness});
+  }
 }
 
-/// Every face (hexahedra) and shell of the blocks for which `use(block)` is true, ordered by
-/// block, element, face.
+/// Every solid face and shell of the blocks for which `use(block)` is true, ordered by block,
+/// element, face. A topology without faces cannot carry a surface: an error when `strict`, else
+/// its elements are skipped.
 template <class Use>
-std::vector<Candidate> collect(const ElementBlocks& blocks, const NodalFields& nodes,
+std::vector<Candidate> collect(MeshBlocks blocks, const NodalFields& nodes,
                                const std::string& context, bool strict, Use use) {
   std::vector<Candidate> out;
   for (Index b = 0; b < static_cast<Index>(blocks.size()); ++b) {
-    const ElementBlock& block = *blocks[b];
+    const MeshBlock& block = *blocks[b];
     if (!use(block)) continue;
-    const BlockTopology topo = block_topology(block);
-    for (Index e = 0; e < block.element_count(); ++e) {
-      if (topo.is_hex(e))
-        append_hex_faces(block, b, topo, e, nodes, context, strict, out);
+    const Index* conn = block.connectivity().data();
+    block.topology().for_each_element([&](const TopologyRun& run, Index e, std::size_t offset) {
+      const ElementTopology& topo = *run.topology;
+      if (topo.faces.empty()) {
+        if (!strict) return;
+        throw NotImplementedError("element block '" + block.kind() + "' of part " +
+                                  std::to_string(block.part_id()) + ": " + std::string(topo.name) +
+                                  " elements have no faces, so they cannot carry a contact surface");
+      }
+      if (topo.is_solid())
+        append_solid_faces(block, b, topo, e, conn + offset, nodes, context, strict, out);
       else
-        append_shell(block, b, topo, e, out);
-    }
+        append_surface_element(b, run, e, conn + offset, out);
+    });
   }
   return out;
 }
 
-void push_segment(Surface& surf, const ElementBlocks& blocks, const Candidate& c,
-                  const SegmentNodes& conn) {
+void push_segment(Surface& surf, MeshBlocks blocks, const Candidate& c, const SegmentNodes& conn) {
   surf.conn.insert(surf.conn.end(), conn.begin(), conn.end());
   surf.block.push_back(c.block);
   surf.element.push_back(c.element);
   surf.part.push_back(blocks[c.block]->part_id());
   surf.kind.push_back(c.kind);
-  surf.thickness.push_back(c.kind == SegmentKind::shell ? block_topology(*blocks[c.block]).shell_thickness
-                                                        : 0.0);
+  surf.thickness.push_back(c.thickness);
 }
 
 /// A candidate's key next to its index: sorting these contiguous pairs, rather than indices that
@@ -163,7 +172,7 @@ std::vector<KeyRef> sorted_by_key(const std::vector<Candidate>& cand) {
 
 }  // namespace
 
-Surface build_surface_from_parts(const ElementBlocks& blocks, const NodalFields& nodes,
+Surface build_surface_from_parts(MeshBlocks blocks, const NodalFields& nodes,
                                  std::span<const Id> parts, const std::string& context) {
   const std::set<Id> wanted(parts.begin(), parts.end());
   std::set<Id> found;
@@ -176,9 +185,9 @@ Surface build_surface_from_parts(const ElementBlocks& blocks, const NodalFields&
 
   const std::vector<Candidate> cand =
       collect(blocks, nodes, context, true,
-              [&](const ElementBlock& b) { return wanted.count(b.part_id()) != 0; });
+              [&](const MeshBlock& b) { return wanted.count(b.part_id()) != 0; });
 
-  // A hexahedron face is interior when another hexahedron face of these parts has its nodes.
+  // A solid face is interior when another solid face of these parts has its nodes.
   // Shells are never interior: a shell on a solid's face is a surface of its own.
   std::vector<char> keep(cand.size(), 1);
   const std::vector<KeyRef> order = sorted_by_key(cand);
@@ -202,11 +211,12 @@ Surface build_surface_from_parts(const ElementBlocks& blocks, const NodalFields&
   return surf;
 }
 
-Surface build_surface_from_segments(const ElementBlocks& blocks, const NodalFields& nodes,
+Surface build_surface_from_segments(MeshBlocks blocks, const NodalFields& nodes,
                                     std::span<const SegmentNodes> segments,
                                     const std::string& context) {
-  // Every block that has faces: a segment may name any element of the model.
-  const std::vector<Candidate> cand = collect(blocks, nodes, context, false, has_faces);
+  // Every block: a segment may name any element of the model.
+  const std::vector<Candidate> cand =
+      collect(blocks, nodes, context, false, [](const MeshBlock&) { return true; });
   const std::vector<KeyRef> order = sorted_by_key(cand);
 
   Surface surf;

@@ -41,12 +41,7 @@ MeshDescription Simulation::mesh_description() const {
     m.x0[3 * i + 1] = nodes.x0.y[i];
     m.x0[3 * i + 2] = nodes.x0.z[i];
   }
-  for (const auto& b : blocks) {
-    const auto conn = b->connectivity();
-    auto& dst = b->nodes_per_element() == 8 ? m.hex_connectivity : m.quad_connectivity;
-    if (b->nodes_per_element() == 8 || b->nodes_per_element() == 4)
-      dst.insert(dst.end(), conn.begin(), conn.end());
-  }
+  m.cells = cells_by_topology(mesh_blocks(blocks));
   return m;
 }
 

@@ -3,6 +3,7 @@
 /// A block holds elements of one part: one formulation, one material, one section.
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
+#include "slideline/mesh/mesh_block.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 
 namespace slideline {
@@ -72,18 +74,15 @@ inline std::size_t argmin_chunk(const std::vector<Real>& dt) {
   return k;
 }
 
-class ElementBlock {
+/// An element block: the mesh's view of it (MeshBlock: part, connectivity, topology, ids) plus
+/// the element formulation (mass, forces, time step).
+class ElementBlock : public MeshBlock {
  public:
-  virtual ~ElementBlock() = default;
+  ~ElementBlock() override = default;
 
-  virtual std::string kind() const = 0;
-  virtual Id part_id() const = 0;
-  virtual Index element_count() const = 0;
+  /// Nodes per element when every element has the same topology, 0 for a mixed block (the
+  /// topology() runs say which element has which).
   virtual int nodes_per_element() const = 0;
-  /// Flat connectivity, nodes_per_element() internal node indices per element.
-  virtual std::span<const Index> connectivity() const = 0;
-  /// Deck id of element e, for messages.
-  virtual Id element_id(Index e) const = 0;
   /// True when the block writes corner moments (its nodes carry rotations).
   virtual bool has_moments() const { return false; }
   /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in
@@ -92,9 +91,6 @@ class ElementBlock {
   /// Deck id of the element whose stable step was the smallest at the last compute_forces
   /// (for messages when the step collapses); -1 when the block has no step of its own.
   virtual Id smallest_step_element() const { return -1; }
-  /// Small-strain bulk modulus of the block's material (force/length^2), for contact penalty
-  /// stiffness; 0 for a block without one.
-  virtual Real bulk_modulus() const { return 0.0; }
 
   /// Computes reference element data and adds this block's lumped mass (and rotary inertia) to
   /// the nodes. Called once, before the first step.
@@ -119,5 +115,8 @@ class ElementBlock {
   Index force_base_ = 0;
   Index moment_base_ = 0;
 };
+
+/// The blocks of a model, in the order their segments and output cells are listed.
+using ElementBlocks = std::vector<std::unique_ptr<ElementBlock>>;
 
 }  // namespace slideline

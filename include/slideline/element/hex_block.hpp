@@ -61,6 +61,7 @@ class HexBlock final : public ElementBlock {
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return static_cast<Index>(ids_.size()); }
   int nodes_per_element() const override { return 8; }
+  BlockTopology topology() const override { return {hex8_topology, element_count()}; }
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }
   const Material& material() const { return mat_; }

@@ -59,11 +59,15 @@ class RigidMassBlock final : public ElementBlock {
   std::string kind() const override { return "rigid"; }
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return n_hex_ + n_quad_; }
-  /// 8 or 4 for a part of one element kind; 0 for a mixed part (then the output mesh omits it).
+  /// 8 or 4 for a part of one element kind; 0 for a mixed part (topology() has both runs).
   int nodes_per_element() const override {
     return n_quad_ == 0 ? 8 : (n_hex_ == 0 ? 4 : 0);
   }
   std::span<const Index> connectivity() const override { return conn_; }
+  /// The hexahedra, then the shells (with the part's shell thickness).
+  BlockTopology topology() const override {
+    return BlockTopology(hex8_topology, n_hex_).add(quad4_topology, n_quad_, thickness_);
+  }
   Id element_id(Index e) const override { return ids_[e]; }
 
   /// Adds rho V / 8 per hexahedron corner and rho A t / 4 per shell corner (mass only: the
@@ -118,10 +122,6 @@ class RigidMassBlock final : public ElementBlock {
   Real stable_dt() const { return dt_; }
   /// E / (3 (1 - 2 nu)) of the rigid material: the stiffness contact sees on a rigid surface.
   Real bulk_modulus() const override { return youngs_ / (3.0 * (1.0 - 2.0 * poisson_)); }
-  /// Elements 0 .. hex_count() - 1 are hexahedra (8 nodes each), the rest shells (4 each, after
-  /// the hexahedra in connectivity()).
-  Index hex_count() const { return n_hex_; }
-  Real shell_thickness() const { return thickness_; }
 
  private:
   Id part_id_;

@@ -1,57 +1,84 @@
 #pragma once
-/// Which elements of an element block are hexahedra and which are shells, and where their nodes
-/// are in connectivity(). Deformable blocks hold one kind; a rigid part (RigidMassBlock) may hold
-/// both, hexahedra first. Surface builders and the stiffness query go through this so that they
-/// treat rigid and deformable parts alike.
-#include <string>
+/// The topologies of the elements of one block, as runs of consecutive elements (a deformable
+/// block holds one run; a rigid part may hold hexahedra then shells), and where each element's
+/// nodes are in the block's flat connectivity. A block reports it (MeshBlock::topology()); mesh
+/// code reads it instead of asking what class a block is.
+#include <array>
+#include <cstddef>
+#include <span>
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/types.hpp"
-#include "slideline/element/element_block.hpp"
-#include "slideline/element/rigid_mass_block.hpp"
-#include "slideline/element/shell_block.hpp"
+#include "slideline/mesh/element_topology.hpp"
 
 namespace slideline {
 
-struct BlockTopology {
-  Index hex_count = 0;          ///< elements 0 .. hex_count - 1 are hexahedra
-  Index shell_count = 0;        ///< elements hex_count .. hex_count + shell_count - 1 are shells
-  Real shell_thickness = 0.0;   ///< length; 0 when the block has no shells
-
-  bool is_hex(Index e) const { return e < hex_count; }
-  /// Offset of element e's first node in connectivity(): 8 per hexahedron, then 4 per shell.
-  std::size_t node_offset(Index e) const {
-    return e < hex_count ? 8 * static_cast<std::size_t>(e)
-                         : 8 * static_cast<std::size_t>(hex_count) +
-                               4 * static_cast<std::size_t>(e - hex_count);
-  }
+/// Consecutive elements of one topology.
+struct TopologyRun {
+  const ElementTopology* topology = nullptr;
+  Index count = 0;       ///< elements in the run
+  Real thickness = 0.0;  ///< section thickness (length) of a surface element (shell); 0 for a solid
 };
 
-/// True when `block` holds hexahedra and/or shells (a kind block_topology knows).
-inline bool has_faces(const ElementBlock& block) {
-  return dynamic_cast<const RigidMassBlock*>(&block) != nullptr ||
-         dynamic_cast<const ShellBlock*>(&block) != nullptr || block.nodes_per_element() == 8;
-}
+/// At most one run per topology, so a fixed capacity: a value, no allocation (cheap to return).
+class BlockTopology {
+ public:
+  BlockTopology() = default;
+  /// One run: every element of the block has topology `t`.
+  BlockTopology(const ElementTopology& t, Index count, Real thickness = 0.0) { add(t, count, thickness); }
 
-/// The topology of `block`. Throws NotImplementedError for a block kind that is neither
-/// hexahedra, shells nor a rigid part (it cannot carry a contact surface yet).
-inline BlockTopology block_topology(const ElementBlock& block) {
-  BlockTopology t;
-  if (const auto* rigid = dynamic_cast<const RigidMassBlock*>(&block)) {
-    t.hex_count = rigid->hex_count();
-    t.shell_count = rigid->element_count() - rigid->hex_count();
-    t.shell_thickness = t.shell_count > 0 ? rigid->shell_thickness() : 0.0;
-  } else if (const auto* shell = dynamic_cast<const ShellBlock*>(&block)) {
-    t.shell_count = shell->element_count();
-    t.shell_thickness = shell->section().thickness;
-  } else if (block.nodes_per_element() == 8) {
-    t.hex_count = block.element_count();
-  } else {
-    throw NotImplementedError("element block '" + block.kind() + "' of part " +
-                              std::to_string(block.part_id()) +
-                              " cannot carry a contact surface (only hexahedra and shells can)");
+  /// Appends a run of `count` elements after the existing ones (nothing for count 0).
+  /// Throws Error when the capacity (one run per declared topology) is exceeded.
+  BlockTopology& add(const ElementTopology& t, Index count, Real thickness = 0.0) {
+    if (count == 0) return *this;
+    if (size_ == runs_.size()) throw Error("BlockTopology: more runs than declared topologies");
+    runs_[size_++] = {&t, count, thickness};
+    return *this;
   }
-  return t;
-}
+
+  std::span<const TopologyRun> runs() const { return {runs_.data(), size_}; }
+  Index element_count() const {
+    Index n = 0;
+    for (const TopologyRun& r : runs()) n += r.count;
+    return n;
+  }
+  /// Length of the flat connectivity: the sum of nodes over the elements.
+  std::size_t connectivity_size() const {
+    std::size_t n = 0;
+    for (const TopologyRun& r : runs()) n += static_cast<std::size_t>(r.count) * r.topology->nodes;
+    return n;
+  }
+
+  /// Element e (0 <= e < element_count()): its run (a copy, valid after this value is gone) and
+  /// the offset of its first node in the block's connectivity.
+  struct Element {
+    TopologyRun run;
+    std::size_t node_offset;
+    const ElementTopology& topology() const { return *run.topology; }
+  };
+  Element element(Index e) const {
+    std::size_t offset = 0;
+    for (const TopologyRun& r : runs()) {
+      if (e < r.count) return {r, offset + static_cast<std::size_t>(e) * r.topology->nodes};
+      e -= r.count;
+      offset += static_cast<std::size_t>(r.count) * r.topology->nodes;
+    }
+    throw Error("BlockTopology: element index out of range");
+  }
+
+  /// Calls f(run, e, node_offset) for every element e of the block in order.
+  template <class F>
+  void for_each_element(F&& f) const {
+    Index e = 0;
+    std::size_t offset = 0;
+    for (const TopologyRun& r : runs())
+      for (Index k = 0; k < r.count; ++k, ++e, offset += static_cast<std::size_t>(r.topology->nodes))
+        f(r, e, offset);
+  }
+
+ private:
+  std::array<TopologyRun, all_topologies.size()> runs_{};
+  std::size_t size_ = 0;
+};
 
 }  // namespace slideline

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "slideline/core/types.hpp"
+#include "slideline/mesh/mesh_block.hpp"
 
 namespace slideline {
 
@@ -25,8 +26,10 @@ struct HistoryChannel {
 struct MeshDescription {
   std::vector<Id> node_ids;
   std::vector<Real> x0;              ///< reference coordinates, 3 per node
-  std::vector<Index> hex_connectivity;    ///< 8 internal node indices per hexahedron
-  std::vector<Index> quad_connectivity;   ///< 4 internal node indices per shell
+  /// The cells, grouped by topology (cells_by_topology: every declared topology, in
+  /// all_topologies order, empty where the model has none). Writers write each group as its
+  /// topology says (HDF5 /mesh/<cell_set>, XDMF TopologyType xdmf_cell).
+  std::vector<TopologyCells> cells;
 };
 
 class OutputSink {

@@ -32,16 +32,32 @@ std::vector<HistoryChannel> fake_channels() {
           {"energy/internal", 1}};
 }
 
-/// Two hexahedra sharing a face plus one quadrilateral: 12 + 4 nodes.
-MeshDescription fake_mesh() {
+/// 16 nodes and the given cells, listed for every declared topology as mesh_description does.
+MeshDescription fake_mesh(std::vector<Index> hexes, std::vector<Index> tets, std::vector<Index> quads,
+                          std::vector<Index> triangles) {
   MeshDescription m;
   for (int k = 0; k < 16; ++k) {
     m.node_ids.push_back(100 + k);
     m.x0.insert(m.x0.end(), {Real(k % 3), Real(k / 3), 0.5 * k});
   }
-  m.hex_connectivity = {0, 1, 2, 3, 4, 5, 6, 7, 4, 5, 6, 7, 8, 9, 10, 11};
-  m.quad_connectivity = {12, 13, 14, 15};
+  m.cells = {{&hex8_topology, std::move(hexes)},
+             {&tet4_topology, std::move(tets)},
+             {&quad4_topology, std::move(quads)},
+             {&tri3_topology, std::move(triangles)}};
   return m;
+}
+
+/// Two hexahedra sharing a face plus one quadrilateral: 12 + 4 nodes.
+MeshDescription fake_mesh() {
+  return fake_mesh({0, 1, 2, 3, 4, 5, 6, 7, 4, 5, 6, 7, 8, 9, 10, 11}, {}, {12, 13, 14, 15}, {});
+}
+
+/// The XDMF text written next to `h5`.
+std::string xdmf_text(const Hdf5Writer& w) {
+  std::ifstream in(w.xdmf_path());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 Real value_of(int record, int column) { return 0.25 * record - 1.5 * column + (column == 3 ? 1e-9 : 0.0); }
@@ -120,6 +136,11 @@ TEST(Hdf5Writer, HistoriesStatesAndMeshReadBack) {
   EXPECT_EQ(hex[15], 11.0);
   read_doubles(f, "/mesh/quadrilaterals", &dims);
   EXPECT_EQ(dims, (std::vector<std::size_t>{1, 4}));
+  // Every declared topology has its dataset, empty where the mesh has none.
+  EXPECT_TRUE(read_doubles(f, "/mesh/tetrahedra", &dims).empty());
+  EXPECT_EQ(dims, (std::vector<std::size_t>{0, 4}));
+  EXPECT_TRUE(read_doubles(f, "/mesh/triangles", &dims).empty());
+  EXPECT_EQ(dims, (std::vector<std::size_t>{0, 3}));
   const auto ids = read_doubles(f, "/mesh/node_ids");
   EXPECT_EQ(ids[15], 115.0);
   EXPECT_EQ(read_hdf5_root_attribute(path.string(), "units"), "consistent units of the deck");
@@ -146,10 +167,7 @@ TEST(Xdmf, EveryDatasetItRefersToExistsInTheHdf5File) {
   write_run(w, fake_mesh());
   w.flush();
   EXPECT_EQ(w.xdmf_path(), scratch("paraview.xdmf").string());
-  std::ifstream in(w.xdmf_path());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string xml = ss.str();
+  const std::string xml = xdmf_text(w);
   EXPECT_NE(xml.find("CollectionType=\"Temporal\""), std::string::npos);
   EXPECT_NE(xml.find("TopologyType=\"Hexahedron\" NumberOfElements=\"2\""), std::string::npos);
   EXPECT_NE(xml.find("TopologyType=\"Quadrilateral\" NumberOfElements=\"1\""), std::string::npos);
@@ -189,6 +207,45 @@ TEST(Xdmf, EveryDatasetItRefersToExistsInTheHdf5File) {
   EXPECT_EQ(count("<Grid "), count("</Grid>"));
   EXPECT_EQ(count("<DataItem "), count("</DataItem>"));
   EXPECT_EQ(count("<Grid Name=\"state "), std::size_t(kStates));
+}
+
+TEST(Xdmf, CellTypesComeFromTheTopologies) {
+  // Tetrahedra alone: one grid per state (no spatial collection), 4 nodes per cell.
+  {
+    const auto path = scratch("tets.h5");
+    Hdf5Writer w(path.string());
+    write_run(w, fake_mesh({}, {0, 1, 2, 3, 1, 2, 3, 4}, {}, {}));
+    w.flush();
+    const std::string xml = xdmf_text(w);
+    EXPECT_NE(xml.find("<Grid Name=\"tetrahedra\" GridType=\"Uniform\">"), std::string::npos);
+    EXPECT_NE(xml.find("TopologyType=\"Tetrahedron\" NumberOfElements=\"2\""), std::string::npos);
+    EXPECT_NE(xml.find("Dimensions=\"2 4\""), std::string::npos);
+    EXPECT_NE(xml.find("tets.h5:/mesh/tetrahedra<"), std::string::npos);
+    EXPECT_EQ(xml.find("CollectionType=\"Spatial\""), std::string::npos);
+    EXPECT_EQ(xml.find("Hexahedron"), std::string::npos);
+    std::vector<std::size_t> dims;
+    const auto tets = read_doubles(path, "/mesh/tetrahedra", &dims);
+    ASSERT_EQ(dims, (std::vector<std::size_t>{2, 4}));
+    EXPECT_EQ(tets[7], 4.0);
+  }
+  // Tetrahedra and triangles: a spatial collection of one grid per topology, solids first.
+  {
+    const auto path = scratch("tets_and_triangles.h5");
+    Hdf5Writer w(path.string());
+    write_run(w, fake_mesh({}, {0, 1, 2, 3}, {}, {5, 6, 7, 8, 9, 10}));
+    w.flush();
+    const std::string xml = xdmf_text(w);
+    const auto tet = xml.find("TopologyType=\"Tetrahedron\" NumberOfElements=\"1\"");
+    const auto tri = xml.find("TopologyType=\"Triangle\" NumberOfElements=\"2\"");
+    ASSERT_NE(tet, std::string::npos);
+    ASSERT_NE(tri, std::string::npos);
+    EXPECT_LT(tet, tri);
+    EXPECT_NE(xml.find("Dimensions=\"2 3\""), std::string::npos);
+    EXPECT_NE(xml.find("CollectionType=\"Spatial\""), std::string::npos);
+    std::vector<std::size_t> dims;
+    read_doubles(path, "/mesh/triangles", &dims);
+    EXPECT_EQ(dims, (std::vector<std::size_t>{2, 3}));
+  }
 }
 
 TEST(CsvWriter, HeaderAndValues) {

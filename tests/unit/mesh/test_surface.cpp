@@ -25,9 +25,10 @@ namespace {
 /// Centroid of the element behind segment s, at the reference coordinates.
 Vec3 element_centroid(const Simulation& sim, const Surface& surf, Index s) {
   const ElementBlock& b = *sim.blocks[surf.block[s]];
-  const BlockTopology t = block_topology(b);
-  const int n = t.is_hex(surf.element[s]) ? 8 : 4;
-  const Index* c = b.connectivity().data() + t.node_offset(surf.element[s]);
+  const BlockTopology t = b.topology();
+  const BlockTopology::Element el = t.element(surf.element[s]);
+  const int n = el.topology().nodes;
+  const Index* c = b.connectivity().data() + el.node_offset;
   Vec3 sum = Vec3::Zero();
   for (int k = 0; k < n; ++k) sum += sim.nodes.x0.get(c[k]);
   return sum / n;
@@ -60,35 +61,6 @@ std::vector<Index> row(const Csr& c, Index r) {
 const std::vector<Id> kPart1{1};
 
 }  // namespace
-
-// --- The outward face table ---------------------------------------------------------------------
-
-TEST(SurfaceHexFaces, OutwardTablePointsAlongTheNaturalAxes) {
-  const hex8::NodeMat X = test_support::unit_hex();
-  // zeta-, zeta+, eta-, xi+, eta+, xi- of the unit cube (xi = x, eta = y, zeta = z).
-  const Vec3 expected[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
-  for (int k = 0; k < 6; ++k) {
-    const auto& f = hex8::outward_faces[k];
-    const Vec3 a = 0.5 * Vec3(X.row(f[2]) - X.row(f[0])).cross(Vec3(X.row(f[3]) - X.row(f[1])));
-    EXPECT_NEAR((a - expected[k]).norm(), 0.0, 1e-15) << "face " << k;
-    // Same node set as the (unoriented) face table used for the time step.
-    std::set<int> s1(f, f + 4), s2(hex8::detail::faces[k], hex8::detail::faces[k] + 4);
-    EXPECT_EQ(s1, s2) << "face " << k;
-  }
-}
-
-TEST(SurfaceHexFaces, OutwardTableOnADistortedHexahedron) {
-  const hex8::NodeMat X = test_support::distorted_hex();
-  const Vec3 c = X.colwise().mean().transpose();
-  Vec3 sum = Vec3::Zero();
-  for (const auto& f : hex8::outward_faces) {
-    const Vec3 a = 0.5 * Vec3(X.row(f[2]) - X.row(f[0])).cross(Vec3(X.row(f[3]) - X.row(f[1])));
-    const Vec3 fc = 0.25 * Vec3((X.row(f[0]) + X.row(f[1]) + X.row(f[2]) + X.row(f[3])).transpose());
-    EXPECT_GT(a.dot(fc - c), 0.0);
-    sum += a;
-  }
-  EXPECT_NEAR(sum.norm(), 0.0, 1e-14);  // closed
-}
 
 // --- Surfaces from parts ------------------------------------------------------------------------
 

@@ -47,6 +47,7 @@
 #include "slideline/contact/search/segment_tracking.hpp"
 #include "slideline/contact/search/slave_orientation.hpp"
 #include "slideline/core/parallel.hpp"
+#include "slideline/element/element_block.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 #include "slideline/mesh/segment_stiffness.hpp"
 #include "slideline/mesh/surface.hpp"

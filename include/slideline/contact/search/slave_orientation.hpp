@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "slideline/contact/search/closest_point.hpp"
+#include "slideline/element/element_block.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 #include "slideline/mesh/segment_stiffness.hpp"
 #include "slideline/mesh/surface.hpp"
