@@ -13,15 +13,19 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/hex8.hpp"
+#include "slideline/material/solid_material.hpp"
 
 namespace slideline {
 
-/// Hexahedra with material law `Material` (MooneyRivlin, ElasticSolid): a class with
-/// density(), wave_speed(), youngs_modulus(), shear_modulus(), lame_lambda() and
-/// cauchy_stress(F).
-template <class Material>
+/// Hexahedra with the law `Material` (material/solid_material.hpp). The block owns the law's state
+/// of every element, one Material::State<Lanes> per batch of kLanes elements (batch e / kLanes,
+/// lane e % kLanes; the spare lanes of a last partial batch follow its last element).
+template <SolidMaterial Material>
 class HexBlock final : public ElementBlock {
  public:
+  /// The law's state of one batch of kLanes elements.
+  using State = typename Material::template State<Lanes>;
+
   /// `damping.beta` > 0 adds the stiffness-proportional damping stress
   /// beta (lambda tr(D) I + 2 mu D) with the material's small-strain Lame constants.
   HexBlock(Id part_id, Material material, HexHourglass hourglass, BulkViscosity bulk,
@@ -46,6 +50,7 @@ class HexBlock final : public ElementBlock {
     chunk_power_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
     volume0_.assign(padded(ne), 0.0);
+    state_.assign(static_cast<std::size_t>(padded(ne) / kLanes), State{});
     // Lane-major connectivity: batch j, node k, lane l at 64 j + 8 k + l, the spare lanes of a
     // last partial batch repeating its last element.
     conn_lanes_.assign(8 * static_cast<std::size_t>(padded(ne)), 0);
@@ -64,9 +69,10 @@ class HexBlock final : public ElementBlock {
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }
   const Material& material() const { return mat_; }
-  /// K = lambda + 2 G / 3 from the material's small-strain moduli: E / (3 (1 - 2 nu)) for the
-  /// elastic solid, 2 G (1 + nu) / (3 (1 - 2 nu)) with G = 2 (A + B) for Mooney-Rivlin.
-  Real bulk_modulus() const override { return mat_.lame_lambda() + 2.0 / 3.0 * mat_.shear_modulus(); }
+  /// The law's small-strain bulk modulus (force/length^2).
+  Real bulk_modulus() const override { return mat_.bulk_modulus(); }
+  /// The law's state of every element, by batch (see the class comment).
+  std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
   void initialize(NodalFields& nodes) override {
@@ -90,19 +96,21 @@ class HexBlock final : public ElementBlock {
   /// hourglass, bulk-viscosity and stiffness-damping powers into `energy`; returns the smallest
   /// element time step. Throws InstabilityError naming the first element (of the first chunk)
   /// that inverted or produced a non-finite force.
-  Real compute_forces(const NodalFields& nodes, Real /*dt*/, CornerBuffer& corners,
+  /// `dt` (time) is the step the law integrates its state over; velocities are at t^{n-1/2}, the
+  /// geometry at x^n, so the rate of deformation the law sees is sym(v^{n-1/2} (x) B(x^n)).
+  Real compute_forces(const NodalFields& nodes, Real dt, CornerBuffer& corners,
                       BlockEnergy& energy) override {
     // One branch per block: a block without stiffness damping runs the kernel without it.
     const bool viscous = hg_.kind == HexHourglass::Kind::viscous;
     const bool damped = damping_.beta > 0.0;
     if (viscous && !damped)
-      compute_chunks<true, false>(nodes, corners);
+      compute_chunks<true, false>(nodes, dt, corners);
     else if (!damped)
-      compute_chunks<false, false>(nodes, corners);
+      compute_chunks<false, false>(nodes, dt, corners);
     else if (viscous)
-      compute_chunks<true, true>(nodes, corners);
+      compute_chunks<true, true>(nodes, dt, corners);
     else
-      compute_chunks<false, true>(nodes, corners);
+      compute_chunks<false, true>(nodes, dt, corners);
     return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
                                  "solid", ids_, part_id_,
                                  "inverted (non-positive volume or non-finite force)");
@@ -114,7 +122,7 @@ class HexBlock final : public ElementBlock {
   /// batches of kLanes elements, one per lane; a last partial batch repeats its last element in
   /// the spare lanes and discards them.
   template <bool viscous, bool damped>
-  void compute_chunks(const NodalFields& nodes, CornerBuffer& corners) {
+  void compute_chunks(const NodalFields& nodes, Real dt_law, CornerBuffer& corners) {
     static_assert(kChunkSize % kLanes == 0, "batches must not straddle chunks");
     const Index ne = element_count();
     const Real c = mat_.wave_speed();
@@ -174,7 +182,8 @@ class HexBlock final : public ElementBlock {
           finv[2][1] += z0[k] * by[k];
           finv[2][2] += z0[k] * bz[k];
         }
-        Tensor3<Lanes> sigma = mat_.cauchy_stress(inverse(finv));
+        const Tensor3<Lanes> d = rate_of_deformation(vx, vy, vz, bx, by, bz);
+        Tensor3<Lanes> sigma = mat_.update(state_[e0 / kLanes], inverse(finv), d, dt_law);
         Lanes trd = Lanes::Zero();
         for (int k = 0; k < 8; ++k) trd += vx[k] * bx[k] + vy[k] * by[k] + vz[k] * bz[k];
         const Lanes len = vol / hex8::max_face_area(x, y, z);
@@ -189,22 +198,9 @@ class HexBlock final : public ElementBlock {
         Lanes qdt = compressing.select(bulk_.linear * c + bulk_.quadratic * len * (-trd), 0.0);
         Lanes damp = Lanes::Zero();
         if constexpr (damped) {
-          // Rayleigh stiffness damping: sigma_d = beta (lambda tr(D) I + 2 mu D), D = sym(v (x) B).
-          Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
-          Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
-          Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
-          for (int k = 0; k < 8; ++k) {
-            dxx += vx[k] * bx[k];
-            dyy += vy[k] * by[k];
-            dzz += vz[k] * bz[k];
-            lxy += vx[k] * by[k];
-            lyx += vy[k] * bx[k];
-            lyz += vy[k] * bz[k];
-            lzy += vz[k] * by[k];
-            lxz += vx[k] * bz[k];
-            lzx += vz[k] * bx[k];
-          }
-          const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
+          // Rayleigh stiffness damping: sigma_d = beta (lambda tr(D) I + 2 mu D).
+          const Lanes &dxx = d[0][0], &dyy = d[1][1], &dzz = d[2][2];
+          const Lanes &dxy = d[0][1], &dyz = d[1][2], &dxz = d[0][2];
           const Lanes lt = beta_lambda * trd;
           const Lanes sxx = lt + beta_2mu * dxx, syy = lt + beta_2mu * dyy, szz = lt + beta_2mu * dzz;
           const Lanes sxy = beta_2mu * dxy, syz = beta_2mu * dyz, sxz = beta_2mu * dxz;
@@ -306,6 +302,28 @@ class HexBlock final : public ElementBlock {
     });
   }
 
+  /// D = sym(v (x) B) of a batch (1/time), from the nodal velocities and the gradient operator.
+  static Tensor3<Lanes> rate_of_deformation(const hex8::NodeLanes& vx, const hex8::NodeLanes& vy,
+                                            const hex8::NodeLanes& vz, const hex8::NodeLanes& bx,
+                                            const hex8::NodeLanes& by, const hex8::NodeLanes& bz) {
+    Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
+    Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
+    Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) {
+      dxx += vx[k] * bx[k];
+      dyy += vy[k] * by[k];
+      dzz += vz[k] * bz[k];
+      lxy += vx[k] * by[k];
+      lyx += vy[k] * bx[k];
+      lyz += vy[k] * bz[k];
+      lzy += vz[k] * by[k];
+      lxz += vx[k] * bz[k];
+      lzx += vz[k] * bx[k];
+    }
+    const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
+    return {{{dxx, dxy, dxz}, {dxy, dyy, dyz}, {dxz, dyz, dzz}}};
+  }
+
   static Index padded(Index n) { return (n + kLanes - 1) / kLanes * kLanes; }
 
   hex8::NodeMat gather(const Vec3Field& f, Index e) const {
@@ -321,6 +339,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Id> ids_;
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
+  std::vector<State> state_;       ///< the law's state, one per batch
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;

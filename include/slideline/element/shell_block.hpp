@@ -1,9 +1,9 @@
 #pragma once
-/// A block of 4-node Belytschko-Tsay shells of one part, one elastic material and one section.
+/// A block of 4-node Belytschko-Tsay shells of one part, one plane-stress law and one section.
 ///
-/// Stresses are hypoelastic: each step adds C : D dt to the stress stored per element and
-/// through-thickness point in the element's co-rotational frame, so the stored stress turns with
-/// the element (Belytschko, Lin & Tsay 1984). See docs/shells_and_rigid.md for the options.
+/// The law (material/shell_material.hpp) works in the element's co-rotational frame: its state,
+/// stored per element and through-thickness point, turns with the element (Belytschko, Lin & Tsay
+/// 1984). See docs/shells_and_rigid.md for the options.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,20 +16,24 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/shell_bt.hpp"
+#include "slideline/material/elastic_shell.hpp"
+#include "slideline/material/shell_material.hpp"
 
 namespace slideline {
 
-/// Stress components stored per through-thickness point, local frame.
-inline constexpr int kShellStressComponents = 5;  // xx, yy, xy, yz, xz
-
-class ShellBlock final : public ElementBlock {
+/// Shells with the plane-stress law `Law`; ShellBlock is the elastic one.
+template <PlaneStressMaterial Law>
+class BasicShellBlock final : public ElementBlock {
  public:
+  /// The law's state of one through-thickness point.
+  using State = typename Law::State;
+
   /// `connectivity`: 4 internal node indices per element (counter-clockwise seen from the side
   /// the normal points to); `damping.beta` > 0 adds the stiffness-proportional damping stress
-  /// beta (C : strain rate) with the plane-stress and transverse-shear moduli.
-  ShellBlock(Id part_id, ShellMaterial material, ShellSection section,
-             std::vector<Index> connectivity, std::vector<Id> element_ids,
-             StiffnessDamping damping = {})
+  /// beta (C : strain rate) with the law's plane-stress and transverse-shear moduli.
+  BasicShellBlock(Id part_id, Law material, ShellSection section,
+                  std::vector<Index> connectivity, std::vector<Id> element_ids,
+                  StiffnessDamping damping = {})
       : part_id_(part_id),
         mat_(material),
         sec_(section),
@@ -39,9 +43,8 @@ class ShellBlock final : public ElementBlock {
         rule_(shell_bt::ThicknessRule::make(section.nip, section.rule)),
         conn_(std::move(connectivity)),
         ids_(std::move(element_ids)) {
-    if (!(mat_.density > 0.0) || !(mat_.youngs > 0.0) || !(mat_.poisson > -1.0 && mat_.poisson < 0.5))
-      throw InputError("shell part " + std::to_string(part_id_) +
-                       ": density and Young's modulus must be positive and Poisson's ratio in (-1, 0.5)");
+    if (const std::string why = mat_.problem(); !why.empty())
+      throw InputError("shell part " + std::to_string(part_id_) + ": " + why);
     if (!(sec_.thickness > 0.0))
       throw InputError("shell part " + std::to_string(part_id_) + ": thickness must be positive");
     if (!(sec_.shear_factor > 0.0))
@@ -61,7 +64,7 @@ class ShellBlock final : public ElementBlock {
     chunk_power_.assign(nc, 0.0);
     chunk_bad_.assign(nc, -1);
     area0_.assign(ne, 0.0);
-    stress_.assign(static_cast<std::size_t>(ne) * rule_.n * kShellStressComponents, 0.0);
+    state_.assign(static_cast<std::size_t>(ne) * rule_.n, State{});
   }
 
   std::string kind() const override { return "shell_bt"; }
@@ -74,10 +77,10 @@ class ShellBlock final : public ElementBlock {
     return ids_.empty() ? Id{-1} : ids_[static_cast<std::size_t>(chunk_dt_element_[argmin_chunk(chunk_dt_)])];
   }
   bool has_moments() const override { return true; }
-  const ShellMaterial& material() const { return mat_; }
+  const Law& material() const { return mat_; }
   const ShellSection& section() const { return sec_; }
-  /// E / (3 (1 - 2 nu)), the 3-D bulk modulus of the shell's elastic material.
-  Real bulk_modulus() const override { return mat_.youngs / (3.0 * (1.0 - 2.0 * mat_.poisson)); }
+  /// The law's 3-D bulk modulus (force/length^2).
+  Real bulk_modulus() const override { return mat_.bulk_modulus(); }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
 
@@ -95,7 +98,7 @@ class ShellBlock final : public ElementBlock {
                          std::to_string(part_id_) + " has non-positive area " +
                          std::to_string(g.area) + " (check the node order)");
       area0_[e] = g.area;
-      const Real m = mat_.density * g.area * t / 4.0;
+      const Real m = mat_.density() * g.area * t / 4.0;
       const Real j = m * std::max(t * t, g.area) / 12.0;
       for (int k = 0; k < 4; ++k) {
         const Index n = conn_[4 * e + k];
@@ -128,14 +131,15 @@ class ShellBlock final : public ElementBlock {
   void compute_chunks(const NodalFields& nodes, Real dt, CornerBuffer& corners) {
     const Index ne = element_count();
     const Real c = mat_.wave_speed();
-    const Real rho = mat_.density;
+    const Real rho = mat_.density();
     [[maybe_unused]] const Real beta = damping_.beta;
     const Real t = sec_.thickness;
     const Real half_t = 0.5 * t;
-    const Real c11 = mat_.youngs / (1.0 - mat_.poisson * mat_.poisson);
-    const Real c12 = mat_.poisson * c11;
-    const Real g_mod = mat_.shear_modulus();
-    const Real gs = sec_.shear_factor * g_mod;
+    const PlaneStressStiffness stiffness = mat_.stiffness();
+    [[maybe_unused]] const Real c11 = stiffness.c11, c12 = stiffness.c12;
+    const Real g_mod = stiffness.g;
+    const Real kappa = sec_.shear_factor;
+    const Real gs = kappa * g_mod;
     const Index fbase = force_slot_base();
     const Index mbase = moment_slot_base();
     const int nip = rule_.n;
@@ -154,7 +158,7 @@ class ShellBlock final : public ElementBlock {
           continue;
         }
         shell_bt::Resultants r;
-        Real* sig = stress_.data() + static_cast<std::size_t>(e) * nip * kShellStressComponents;
+        State* st = state_.data() + static_cast<std::size_t>(e) * nip;
         shell_bt::StrainRates sr;
         [[maybe_unused]] Real damp = 0.0;  // damping power per unit area
         // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: a rigid rotation's chord velocities
@@ -167,17 +171,11 @@ class ShellBlock final : public ElementBlock {
         }
         sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
         for (int ip = 0; ip < nip; ++ip) {
-          Real* s = sig + ip * kShellStressComponents;
           const Real z = rule_.xi[ip] * half_t;
           const Real wz = rule_.w[ip] * half_t;  // dz weight
-          const Real dxx = dt * (sr.membrane[0] + z * sr.curvature[0]);
-          const Real dyy = dt * (sr.membrane[1] + z * sr.curvature[1]);
-          const Real gxy = dt * (sr.membrane[2] + z * sr.curvature[2]);
-          s[0] += c11 * dxx + c12 * dyy;
-          s[1] += c12 * dxx + c11 * dyy;
-          s[2] += g_mod * gxy;
-          s[3] += gs * dt * sr.shear[0];
-          s[4] += gs * dt * sr.shear[1];
+          const ShellRate rate{sr.membrane[0] + z * sr.curvature[0], sr.membrane[1] + z * sr.curvature[1],
+                               sr.membrane[2] + z * sr.curvature[2], sr.shear[0], sr.shear[1]};
+          const ShellStress s = mat_.update(st[ip], rate, dt, kappa);
           r.n[0] += wz * s[0];
           r.n[1] += wz * s[1];
           r.n[2] += wz * s[2];
@@ -188,9 +186,7 @@ class ShellBlock final : public ElementBlock {
           r.q[1] += wz * s[4];
           if constexpr (damped) {
             // Rayleigh stiffness damping: beta (C : strain rate), in the resultants only.
-            const Real rxx = sr.membrane[0] + z * sr.curvature[0];
-            const Real ryy = sr.membrane[1] + z * sr.curvature[1];
-            const Real rxy = sr.membrane[2] + z * sr.curvature[2];
+            const Real rxx = rate.xx, ryy = rate.yy, rxy = rate.xy;
             const Real d0 = beta * (c11 * rxx + c12 * ryy);
             const Real d1 = beta * (c12 * rxx + c11 * ryy);
             const Real d2 = beta * g_mod * rxy;
@@ -246,9 +242,9 @@ class ShellBlock final : public ElementBlock {
           const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
           // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass
           // displacement); the viscous coefficient is qhg times the critical damping of the mode.
-          const Real k_m = mat_.youngs * t * gm.area * bb / 8.0;
+          const Real k_m = mat_.youngs_modulus() * t * gm.area * bb / 8.0;
           const Real k_w = gs * t * t * t * bb / 12.0;
-          const Real k_r = mat_.youngs * t * t * t * gm.area * bb / 192.0;
+          const Real k_r = mat_.youngs_modulus() * t * t * t * gm.area * bb / 192.0;
           const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
           const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
           const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
@@ -294,8 +290,7 @@ class ShellBlock final : public ElementBlock {
   /// Stress (force/length^2, local co-rotational frame: xx, yy, xy, yz, xz) of element e at
   /// through-thickness point ip (0 = bottom, z = xi * t / 2).
   Eigen::Matrix<Real, 5, 1> stress(Index e, int ip) const {
-    const Real* s = stress_.data() +
-                    (static_cast<std::size_t>(e) * rule_.n + ip) * kShellStressComponents;
+    const ShellStress s = mat_.stress(state_[static_cast<std::size_t>(e) * rule_.n + ip]);
     return Eigen::Matrix<Real, 5, 1>(s[0], s[1], s[2], s[3], s[4]);
   }
 
@@ -304,11 +299,11 @@ class ShellBlock final : public ElementBlock {
   /// in-plane stress is linear through the thickness). Needs nip >= 2.
   Eigen::Matrix<Real, 3, 1> surface_stress(Index e, bool top) const {
     const int n = rule_.n;
-    if (n < 2) return stress(e, 0).head<3>();
+    if (n < 2) return stress(e, 0).template head<3>();
     const int i1 = top ? n - 1 : 0, i2 = top ? n - 2 : 1;
     const Real z1 = rule_.xi[i1], z2 = rule_.xi[i2], zs = top ? 1.0 : -1.0;
     const Real a = (zs - z2) / (z1 - z2);
-    return a * stress(e, i1).head<3>() + (1.0 - a) * stress(e, i2).head<3>();
+    return a * stress(e, i1).template head<3>() + (1.0 - a) * stress(e, i2).template head<3>();
   }
 
  private:
@@ -317,7 +312,7 @@ class ShellBlock final : public ElementBlock {
   }
 
   Id part_id_;
-  ShellMaterial mat_;
+  Law mat_;
   ShellSection sec_;
   Real qhg_;
   BulkViscosity bulk_;
@@ -326,10 +321,13 @@ class ShellBlock final : public ElementBlock {
   std::vector<Index> conn_;
   std::vector<Id> ids_;
   std::vector<Real> area0_;
-  std::vector<Real> stress_;  // element-major, then point, then component
+  std::vector<State> state_;  ///< the law's state, element-major, then point
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
 };
+
+/// The elastic shell block (*MAT_ELASTIC).
+using ShellBlock = BasicShellBlock<ElasticShell>;
 
 }  // namespace slideline
