@@ -129,21 +129,10 @@ class BasicShellBlock final : public ElementBlock {
  private:
   template <bool damped>
   void compute_chunks(const NodalFields& nodes, Real dt, CornerBuffer& corners) {
-    const Index ne = element_count();
     const Real c = mat_.wave_speed();
     const Real rho = mat_.density();
-    [[maybe_unused]] const Real beta = damping_.beta;
     const Real t = sec_.thickness;
-    const Real half_t = 0.5 * t;
-    const PlaneStressStiffness stiffness = mat_.stiffness();
-    [[maybe_unused]] const Real c11 = stiffness.c11, c12 = stiffness.c12;
-    const Real g_mod = stiffness.g;
-    const Real kappa = sec_.shear_factor;
-    const Real gs = kappa * g_mod;
-    const Index fbase = force_slot_base();
-    const Index mbase = moment_slot_base();
-    const int nip = rule_.n;
-    parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
+    parallel_for_chunks(element_count(), [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
       Index dtarg = b;
       Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
@@ -157,10 +146,6 @@ class BasicShellBlock final : public ElementBlock {
           if (bad < 0) bad = e;
           continue;
         }
-        shell_bt::Resultants r;
-        State* st = state_.data() + static_cast<std::size_t>(e) * nip;
-        shell_bt::StrainRates sr;
-        [[maybe_unused]] Real damp = 0.0;  // damping power per unit area
         // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: a rigid rotation's chord velocities
         // are exactly rigid there, so strain and hourglass rates vanish for it.
         const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
@@ -169,40 +154,9 @@ class BasicShellBlock final : public ElementBlock {
           if (bad < 0) bad = e;
           continue;
         }
-        sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
-        for (int ip = 0; ip < nip; ++ip) {
-          const Real z = rule_.xi[ip] * half_t;
-          const Real wz = rule_.w[ip] * half_t;  // dz weight
-          const ShellRate rate{sr.membrane[0] + z * sr.curvature[0], sr.membrane[1] + z * sr.curvature[1],
-                               sr.membrane[2] + z * sr.curvature[2], sr.shear[0], sr.shear[1]};
-          const ShellStress s = mat_.update(st[ip], rate, dt, kappa);
-          r.n[0] += wz * s[0];
-          r.n[1] += wz * s[1];
-          r.n[2] += wz * s[2];
-          r.m[0] += wz * z * s[0];
-          r.m[1] += wz * z * s[1];
-          r.m[2] += wz * z * s[2];
-          r.q[0] += wz * s[3];
-          r.q[1] += wz * s[4];
-          if constexpr (damped) {
-            // Rayleigh stiffness damping: beta (C : strain rate), in the resultants only.
-            const Real rxx = rate.xx, ryy = rate.yy, rxy = rate.xy;
-            const Real d0 = beta * (c11 * rxx + c12 * ryy);
-            const Real d1 = beta * (c12 * rxx + c11 * ryy);
-            const Real d2 = beta * g_mod * rxy;
-            const Real d3 = beta * gs * sr.shear[0];
-            const Real d4 = beta * gs * sr.shear[1];
-            r.n[0] += wz * d0;
-            r.n[1] += wz * d1;
-            r.n[2] += wz * d2;
-            r.m[0] += wz * z * d0;
-            r.m[1] += wz * z * d1;
-            r.m[2] += wz * z * d2;
-            r.q[0] += wz * d3;
-            r.q[1] += wz * d4;
-            damp += wz * (d0 * rxx + d1 * ryy + d2 * rxy + d3 * sr.shear[0] + d4 * sr.shear[1]);
-          }
-        }
+        const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
+        shell_bt::Resultants r;
+        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r);
         // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
         const Real len = shell_bt::characteristic_length(X, g.area);
         const Real trd = sr.membrane[0] + sr.membrane[1];
@@ -216,48 +170,14 @@ class BasicShellBlock final : public ElementBlock {
         }
         if constexpr (damped) {
           p_damp += damp * g.area;
-          qdt += beta * c * c / len;  // the damped step, as for the hexahedron
+          qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
         }
         shell_bt::NodeMat fl, ml;
         shell_bt::resultant_forces(g, r, fl, ml);
 
         shell_bt::NodeMat f = fl * g.e.transpose();
         shell_bt::NodeMat m = ml * g.e.transpose();
-
-        // Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes, on the
-        // mid-step geometry.
-        if (qhg_ > 0.0) {
-          // Relative to the element's mean rigid rotation: on a warped element the rotation
-          // about an in-plane axis moves the nodes in plane in proportion to their warp, which
-          // is an hourglass pattern; it must not be resisted.
-          const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
-          const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
-          shell_bt::NodeMat vrel;
-          for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
-          const shell_bt::NodeMat vl = vrel * gm.e;
-          const shell_bt::NodeMat wl = W * gm.e;
-          const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
-          const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
-          const Real m_node = rho * area0_[e] * t / 4.0;
-          const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
-          // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass
-          // displacement); the viscous coefficient is qhg times the critical damping of the mode.
-          const Real k_m = mat_.youngs_modulus() * t * gm.area * bb / 8.0;
-          const Real k_w = gs * t * t * t * bb / 12.0;
-          const Real k_r = mat_.youngs_modulus() * t * t * t * gm.area * bb / 192.0;
-          const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
-          const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
-          const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
-          const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
-          const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
-          const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
-          const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
-          const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
-          f += gam * (hv * gm.e.transpose());
-          m += gam * (hw * gm.e.transpose());
-          p_hg += cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] +
-                  cr * (qw[0] * qw[0] + qw[1] * qw[1]);
-        }
+        if (qhg_ > 0.0) p_hg += add_hourglass(e, gm, Xm, V, W, f, m);
         if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
         p_all -= f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum();
         const Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
@@ -265,16 +185,7 @@ class BasicShellBlock final : public ElementBlock {
           dtmin = dt_e;
           dtarg = e;
         }
-        const Index s0 = fbase + 4 * e;
-        const Index m0 = mbase + 4 * e;
-        for (int k = 0; k < 4; ++k) {
-          corners.force.x[s0 + k] = f(k, 0);
-          corners.force.y[s0 + k] = f(k, 1);
-          corners.force.z[s0 + k] = f(k, 2);
-          corners.moment.x[m0 + k] = m(k, 0);
-          corners.moment.y[m0 + k] = m(k, 1);
-          corners.moment.z[m0 + k] = m(k, 2);
-        }
+        store_element(e, f, m, corners);
       }
       chunk_dt_[chunk] = dtmin;
       chunk_dt_element_[chunk] = dtarg;
@@ -284,6 +195,108 @@ class BasicShellBlock final : public ElementBlock {
       chunk_power_[chunk] = p_all;
       chunk_bad_[chunk] = bad;
     });
+  }
+
+  /// Advances the law's state at every through-thickness point of element e with the strain rates
+  /// `sr` over dt and integrates the stresses into the resultants `r` (which start at zero). When
+  /// damped, adds the Rayleigh stiffness-damping stress beta (C : strain rate) to the resultants
+  /// only, and returns its power per unit area.
+  template <bool damped>
+  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r) {
+    const Real half_t = 0.5 * sec_.thickness;
+    const Real kappa = sec_.shear_factor;
+    [[maybe_unused]] const Real beta = damping_.beta;
+    [[maybe_unused]] const PlaneStressStiffness cs = mat_.stiffness();
+    [[maybe_unused]] const Real gs = kappa * cs.g;
+    Real damp = 0.0;
+    State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
+    for (int ip = 0; ip < rule_.n; ++ip) {
+      const Real z = rule_.xi[ip] * half_t;
+      const Real wz = rule_.w[ip] * half_t;  // dz weight
+      const ShellRate rate{sr.membrane[0] + z * sr.curvature[0], sr.membrane[1] + z * sr.curvature[1],
+                           sr.membrane[2] + z * sr.curvature[2], sr.shear[0], sr.shear[1]};
+      const ShellStress s = mat_.update(st[ip], rate, dt, kappa);
+      r.n[0] += wz * s[0];
+      r.n[1] += wz * s[1];
+      r.n[2] += wz * s[2];
+      r.m[0] += wz * z * s[0];
+      r.m[1] += wz * z * s[1];
+      r.m[2] += wz * z * s[2];
+      r.q[0] += wz * s[3];
+      r.q[1] += wz * s[4];
+      if constexpr (damped) {
+        const Real rxx = rate.xx, ryy = rate.yy, rxy = rate.xy;
+        const Real d0 = beta * (cs.c11 * rxx + cs.c12 * ryy);
+        const Real d1 = beta * (cs.c12 * rxx + cs.c11 * ryy);
+        const Real d2 = beta * cs.g * rxy;
+        const Real d3 = beta * gs * sr.shear[0];
+        const Real d4 = beta * gs * sr.shear[1];
+        r.n[0] += wz * d0;
+        r.n[1] += wz * d1;
+        r.n[2] += wz * d2;
+        r.m[0] += wz * z * d0;
+        r.m[1] += wz * z * d1;
+        r.m[2] += wz * z * d2;
+        r.q[0] += wz * d3;
+        r.q[1] += wz * d4;
+        damp += wz * (d0 * rxx + d1 * ryy + d2 * rxy + d3 * sr.shear[0] + d4 * sr.shear[1]);
+      }
+    }
+    return damp;
+  }
+
+  /// Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes of element e
+  /// on the mid-step geometry (gm, Xm), added to the forces f and moments m (global components);
+  /// returns its power.
+  Real add_hourglass(Index e, const shell_bt::LocalGeometry& gm, const shell_bt::NodeMat& Xm,
+                     const shell_bt::NodeMat& V, const shell_bt::NodeMat& W, shell_bt::NodeMat& f,
+                     shell_bt::NodeMat& m) const {
+    const Real t = sec_.thickness;
+    const Real gs = sec_.shear_factor * mat_.stiffness().g;
+    // Relative to the element's mean rigid rotation: on a warped element the rotation about an
+    // in-plane axis moves the nodes in plane in proportion to their warp, which is an hourglass
+    // pattern; it must not be resisted.
+    const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
+    const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
+    shell_bt::NodeMat vrel;
+    for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
+    const shell_bt::NodeMat vl = vrel * gm.e;
+    const shell_bt::NodeMat wl = W * gm.e;
+    const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
+    const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
+    const Real m_node = mat_.density() * area0_[e] * t / 4.0;
+    const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
+    // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass displacement);
+    // the viscous coefficient is qhg times the critical damping of the mode.
+    const Real k_m = mat_.youngs_modulus() * t * gm.area * bb / 8.0;
+    const Real k_w = gs * t * t * t * bb / 12.0;
+    const Real k_r = mat_.youngs_modulus() * t * t * t * gm.area * bb / 192.0;
+    const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
+    const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
+    const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
+    const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
+    const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
+    const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
+    const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
+    const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
+    f += gam * (hv * gm.e.transpose());
+    m += gam * (hw * gm.e.transpose());
+    return cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] + cr * (qw[0] * qw[0] + qw[1] * qw[1]);
+  }
+
+  /// Writes element e's forces f and moments m (4 x 3, global) into its corner slots.
+  void store_element(Index e, const shell_bt::NodeMat& f, const shell_bt::NodeMat& m,
+                     CornerBuffer& corners) const {
+    const Index s0 = force_slot_base() + 4 * e;
+    const Index m0 = moment_slot_base() + 4 * e;
+    for (int k = 0; k < 4; ++k) {
+      corners.force.x[s0 + k] = f(k, 0);
+      corners.force.y[s0 + k] = f(k, 1);
+      corners.force.z[s0 + k] = f(k, 2);
+      corners.moment.x[m0 + k] = m(k, 0);
+      corners.moment.y[m0 + k] = m(k, 1);
+      corners.moment.z[m0 + k] = m(k, 2);
+    }
   }
 
  public:
