@@ -38,7 +38,7 @@ std::unique_ptr<Simulation> make_plate(int n) {
       conn.insert(conn.end(), {i + np * j, i + 1 + np * j, i + 1 + np * (j + 1), i + np * (j + 1)});
   std::vector<Id> ids(conn.size() / 4);
   for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<Id>(k + 1);
-  sim->blocks.push_back(make_shell_block(1, ShellMaterial{0.1, 1000.0, 0.3},
+  sim->blocks.push_back(make_shell_block(1, ElasticShell(0.1, 1000.0, 0.3),
                                         ShellSection{.thickness = 0.01}, std::move(conn),
                                         std::move(ids)));
   BodyLoad bz;

@@ -9,7 +9,9 @@
 
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/core/error.hpp"
+#include "slideline/core/overloaded.hpp"
 #include "slideline/element/block_factory.hpp"
+#include "slideline/solver/material_registry.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/validate_model.hpp"
 #include "initial_velocity.hpp"
@@ -200,14 +202,15 @@ struct Builder {
       }
 
       // Stiffness damping has nothing to act on in a rigid part.
-      if (const auto* rigid = std::get_if<model::MatRigid>(mit->second)) {
-        build_rigid_part(part, *rigid, g, pn, shsec);
+      const MaterialLaws laws = material_laws(*mit->second);
+      if (laws.rigid) {
+        build_rigid_part(part, std::get<model::MatRigid>(*mit->second), g, pn, shsec);
         continue;
       }
       const auto dit = damped.find(pid);
       const StiffnessDamping damping = dit == damped.end() ? StiffnessDamping{} : dit->second;
       if (!g.quad_ids.empty()) {
-        build_shell_part(part, *mit->second, g, shsec, ihq, qm, bv, damping);
+        build_shell_part(part, *mit->second, laws, g, shsec, ihq, qm, bv, damping);
         continue;
       }
       const auto& sec = ssec.at(part.secid, part.src, "SECID of *PART");
@@ -226,17 +229,11 @@ struct Builder {
                                   " is not implemented (use 1-3 viscous or 10 physical stiffness)");
       }
       hg.coefficient = qm;
-      HexMaterialSpec spec;
-      if (const auto* mr = std::get_if<model::MatMooneyRivlin>(mit->second)) {
-        check_positive(mr->ro, "RO", mr->src);
-        spec = MooneyRivlinSpec{mr->ro, mr->a, mr->b, mr->pr};
-      } else {
-        const auto& el = std::get<model::MatElastic>(*mit->second);
-        check_positive(el.ro, "RO", el.src);
-        check_positive(el.e, "E", el.src);
-        spec = ElasticSolidSpec{el.ro, el.e, el.pr};
-      }
-      sim->blocks.push_back(make_hex_block(pid, spec, hg, bv, std::move(g.hex_conn),
+      if (!laws.solid)
+        throw NotImplementedError(describe(part.src) + ": part " + std::to_string(pid) +
+                                  " combines solids with " + laws.keyword + ", which is not implemented");
+      check_material_constants(*mit->second);
+      sim->blocks.push_back(make_hex_block(pid, *laws.solid, hg, bv, std::move(g.hex_conn),
                                            std::move(g.hex_ids), damping));
     }
   }
@@ -292,12 +289,11 @@ struct Builder {
   }
 
   template <class Sections>
-  void build_shell_part(const model::Part& part, const model::Material& material, PartElements& g,
-                        const Sections& shsec, int ihq, Real qm, const BulkViscosity& bv,
-                        StiffnessDamping damping) {
+  void build_shell_part(const model::Part& part, const model::Material& material,
+                        const MaterialLaws& laws, PartElements& g, const Sections& shsec, int ihq,
+                        Real qm, const BulkViscosity& bv, StiffnessDamping damping) {
     const auto& sec = shell_section(part, shsec);
-    const auto* el = std::get_if<model::MatElastic>(&material);
-    if (el == nullptr)
+    if (!laws.shell)
       throw NotImplementedError(describe(part.src) + ": part " + std::to_string(part.pid) +
                                 " combines shells with a material other than *MAT_ELASTIC or "
                                 "*MAT_RIGID, which is not implemented");
@@ -305,8 +301,7 @@ struct Builder {
       throw NotImplementedError(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) +
                                 " for shells of part " + std::to_string(part.pid) +
                                 " is not implemented (shells take the viscous types 1-3)");
-    check_positive(el->ro, "RO", el->src);
-    check_positive(el->e, "E", el->src);
+    check_material_constants(material);
     const int nip = sec.nip == 0 ? 2 : sec.nip;
     if (nip < 1 || nip > 5)
       throw InputError(describe(sec.src) + ": field NIP of *SECTION_SHELL must be 1 to 5 (got " +
@@ -318,8 +313,8 @@ struct Builder {
     ss.shear_factor = sec.shrf == 0.0 ? 1.0 : sec.shrf;
     ss.hourglass_coefficient = qm;
     ss.bulk = bv;
-    sim->blocks.push_back(make_shell_block(part.pid, ShellMaterial{el->ro, el->e, el->pr}, ss,
-                                           std::move(g.quad_conn), std::move(g.quad_ids), damping));
+    sim->blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),
+                                           std::move(g.quad_ids), damping));
   }
 
   /// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x,
@@ -343,8 +338,7 @@ struct Builder {
   template <class Sections>
   void build_rigid_part(const model::Part& part, const model::MatRigid& mat, PartElements& g,
                         const std::vector<Index>& nodes, const Sections& shsec) {
-    check_positive(mat.ro, "RO", mat.src);
-    check_positive(mat.e, "E", mat.src);  // sets the part's time step, as in LS-DYNA
+    check_material_constants(mat);
     if (!(mat.pr > -1.0 && mat.pr < 0.5))
       throw InputError(describe(mat.src) + ": field PR of *MAT_RIGID must be in (-1, 0.5) (got " +
                        std::to_string(mat.pr) + ")");
@@ -388,6 +382,20 @@ struct Builder {
     if (!(v > 0.0))
       throw InputError(describe(src) + ": field " + field + " must be positive (got " +
                        std::to_string(v) + ")");
+  }
+
+  /// The constants a law divides by (validate_model reports them all first, with the rest).
+  static void check_material_constants(const model::Material& material) {
+    std::visit(Overloaded{[](const model::MatElastic& x) {
+                            check_positive(x.ro, "RO", x.src);
+                            check_positive(x.e, "E", x.src);
+                          },
+                          [](const model::MatMooneyRivlin& x) { check_positive(x.ro, "RO", x.src); },
+                          [](const model::MatRigid& x) {
+                            check_positive(x.ro, "RO", x.src);
+                            check_positive(x.e, "E", x.src);  // sets the part's time step, as in LS-DYNA
+                          }},
+               material);
   }
 
   /// Resolves every node, part and segment set into sim->sets (after build_elements, which finds

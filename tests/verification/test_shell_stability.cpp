@@ -55,7 +55,7 @@ HoldResult hold_plate(Real nu, long cycles, Real output_every) {
   sec.thickness = t;
   sec.hourglass_coefficient = 0.1;
   sec.bulk = BulkViscosity{1.5, 0.06};
-  sim.blocks.push_back(std::make_unique<ShellBlock>(1, ShellMaterial{rho, E, nu}, sec, conn, ids));
+  sim.blocks.push_back(std::make_unique<ShellBlock>(1, ElasticShell(rho, E, nu), sec, conn, ids));
   // Beam theory for a uniform load: w_tip = q L^4 / (8 E I) (nu enters through the plate's
   // anticlastic stiffening, below 1% for this narrow strip).
   const Real I = b * t * t * t / 12.0;

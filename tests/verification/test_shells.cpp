@@ -100,7 +100,7 @@ CantileverResult run_cantilever(shell_bt::ThicknessRule::Kind rule) {
   sec.nip = 5;
   sec.rule = rule;
   const std::size_t ne = conn.size() / 4;
-  sim.blocks.push_back(std::make_unique<ShellBlock>(1, ShellMaterial{rho, E, nu}, sec, conn,
+  sim.blocks.push_back(std::make_unique<ShellBlock>(1, ElasticShell(rho, E, nu), sec, conn,
                                                     iota_ids(ne)));
   // Beam theory (nu = 0: the plate's uniaxial bending is the beam's).
   const Real I = b * t * t * t / 12.0;
@@ -186,7 +186,7 @@ TEST(ShellVerification, SpecPlateOnSupportsReactionEqualsLoad) {
   const Grid g{3, 3};
   sim.nodes.resize(16);
   auto conn = shell_grid(sim.nodes, g, 1.0, 1.0, true, 0.0);
-  sim.blocks.push_back(make_shell_block(2, ShellMaterial{0.1, 1000.0, 0.1},
+  sim.blocks.push_back(make_shell_block(2, ElasticShell(0.1, 1000.0, 0.1),
                                         ShellSection{.thickness = 0.1}, conn, iota_ids(9)));
   const Real mass = 0.1 * 1.0 * 0.1;
   BodyLoad by;
@@ -250,7 +250,7 @@ TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i)  // top face y = ly, normal +y
       quad.insert(quad.end(), {id(i, ny, k), id(i, ny, k + 1), id(i + 1, ny, k + 1), id(i + 1, ny, k)});
-  sim.blocks.push_back(make_shell_block(2, ShellMaterial{0.1, 1000.0, 0.1},
+  sim.blocks.push_back(make_shell_block(2, ElasticShell(0.1, 1000.0, 0.1),
                                         ShellSection{.thickness = 0.1}, quad,
                                         iota_ids(quad.size() / 4, 100)));
   const Real shell_mass = 0.1 * lx * lz * 0.1;
@@ -312,7 +312,7 @@ TEST(ShellVerification, ResultsIndependentOfThreadCount) {
       sim.nodes.x0.z[i] = sim.nodes.x.z[i] = z;
     }
     const std::size_t ne = conn.size() / 4;
-    sim.blocks.push_back(make_shell_block(1, ShellMaterial{0.1, 1000.0, 0.3},
+    sim.blocks.push_back(make_shell_block(1, ElasticShell(0.1, 1000.0, 0.3),
                                           ShellSection{.thickness = 0.01}, conn, iota_ids(ne)));
     BodyLoad bz;
     bz.axis = Axis::z;

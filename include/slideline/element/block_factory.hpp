@@ -3,47 +3,29 @@
 /// (src/solver/build.cpp) makes its blocks through them, so that it does not instantiate the
 /// element kernels itself (they compile once, in src/element/*.cpp).
 #include <memory>
-#include <variant>
 #include <vector>
 
 #include "slideline/core/types.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
+#include "slideline/material/laws.hpp"
 
 namespace slideline {
 
-/// Parameters of the St. Venant-Kirchhoff solid (ElasticSolid, material/elastic.hpp).
-struct ElasticSolidSpec {
-  Real density = 0.0;  ///< mass / length^3
-  Real youngs = 0.0;   ///< force / length^2
-  Real poisson = 0.0;
-};
-
-/// Parameters of the Mooney-Rivlin rubber (MooneyRivlin, material/mooney_rivlin.hpp).
-struct MooneyRivlinSpec {
-  Real density = 0.0;  ///< mass / length^3
-  Real a = 0.0;        ///< force / length^2
-  Real b = 0.0;        ///< force / length^2
-  Real poisson = 0.0;
-};
-
-/// The materials a hexahedron block can take.
-using HexMaterialSpec = std::variant<ElasticSolidSpec, MooneyRivlinSpec>;
-
-/// A block of one-point hexahedra (HexBlock<material>) of part `part_id`. `connectivity`: 8
+/// A block of one-point hexahedra (HexBlock<law>) of part `part_id`. `connectivity`: 8
 /// internal node indices per element (LS-DYNA order), `element_ids` the deck ids, one per
 /// element; `damping.beta` > 0 adds stiffness-proportional damping.
-std::unique_ptr<ElementBlock> make_hex_block(Id part_id, const HexMaterialSpec& material,
+std::unique_ptr<ElementBlock> make_hex_block(Id part_id, const SolidLaw& material,
                                              HexHourglass hourglass, BulkViscosity bulk,
                                              std::vector<Index> connectivity,
                                              std::vector<Id> element_ids,
                                              StiffnessDamping damping = {});
 
-/// A block of Belytschko-Tsay shells (ShellBlock) of part `part_id`. `connectivity`: 4 internal
+/// A block of Belytschko-Tsay shells (BasicShellBlock<law>) of part `part_id`. `connectivity`: 4 internal
 /// node indices per element (counter-clockwise seen from the side the normal points to).
 /// Throws InputError on a bad value (non-positive density, modulus, thickness or shear factor,
 /// Poisson's ratio outside (-1, 0.5), an unsupported number of thickness points).
-std::unique_ptr<ElementBlock> make_shell_block(Id part_id, const ShellMaterial& material,
+std::unique_ptr<ElementBlock> make_shell_block(Id part_id, const ShellLaw& material,
                                                const ShellSection& section,
                                                std::vector<Index> connectivity,
                                                std::vector<Id> element_ids,

@@ -1,9 +1,8 @@
 #pragma once
 /// The plain settings an element block is made from: hourglass control, bulk viscosity,
-/// stiffness-proportional damping, the shell material and section. Kept apart from the kernels
+/// stiffness-proportional damping, the shell section. Kept apart from the kernels
 /// (hex_block.hpp, shell_block.hpp) so that code which only builds blocks (block_factory.hpp,
 /// src/solver/build.cpp) does not compile them.
-#include <cmath>
 #include <cstdint>
 
 #include "slideline/core/types.hpp"
@@ -43,16 +42,6 @@ enum class ThicknessRuleKind : std::uint8_t {
   lobatto  ///< Gauss-Lobatto: includes the two surfaces (2 points = trapezoid rule)
 };
 }  // namespace shell_bt
-
-/// Linear elastic, plane-stress material of a shell part.
-struct ShellMaterial {
-  Real density = 0.0;  ///< mass / length^3
-  Real youngs = 0.0;   ///< force / length^2
-  Real poisson = 0.0;
-  /// Plate (plane-stress) wave speed sqrt(E / (rho (1 - nu^2))), length / time.
-  Real wave_speed() const { return std::sqrt(youngs / (density * (1.0 - poisson * poisson))); }
-  Real shear_modulus() const { return youngs / (2.0 * (1.0 + poisson)); }
-};
 
 /// Shell section of a part: constant thickness, through-thickness rule, transverse shear factor,
 /// and the part's viscous hourglass coefficient and membrane bulk viscosity.

@@ -1,6 +1,7 @@
 #pragma once
 /// A block of one-point hexahedra of one part and one material.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -13,15 +14,19 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/hex8.hpp"
+#include "slideline/material/solid_material.hpp"
 
 namespace slideline {
 
-/// Hexahedra with material law `Material` (MooneyRivlin, ElasticSolid): a class with
-/// density(), wave_speed(), youngs_modulus(), shear_modulus(), lame_lambda() and
-/// cauchy_stress(F).
-template <class Material>
+/// Hexahedra with the law `Material` (material/solid_material.hpp). The block owns the law's state
+/// of every element, one Material::State<Lanes> per batch of kLanes elements (batch e / kLanes,
+/// lane e % kLanes; the spare lanes of a last partial batch follow its last element).
+template <SolidMaterial Material>
 class HexBlock final : public ElementBlock {
  public:
+  /// The law's state of one batch of kLanes elements.
+  using State = typename Material::template State<Lanes>;
+
   /// `damping.beta` > 0 adds the stiffness-proportional damping stress
   /// beta (lambda tr(D) I + 2 mu D) with the material's small-strain Lame constants.
   HexBlock(Id part_id, Material material, HexHourglass hourglass, BulkViscosity bulk,
@@ -46,6 +51,7 @@ class HexBlock final : public ElementBlock {
     chunk_power_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
     volume0_.assign(padded(ne), 0.0);
+    state_.assign(static_cast<std::size_t>(padded(ne) / kLanes), State{});
     // Lane-major connectivity: batch j, node k, lane l at 64 j + 8 k + l, the spare lanes of a
     // last partial batch repeating its last element.
     conn_lanes_.assign(8 * static_cast<std::size_t>(padded(ne)), 0);
@@ -65,9 +71,10 @@ class HexBlock final : public ElementBlock {
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }
   const Material& material() const { return mat_; }
-  /// K = lambda + 2 G / 3 from the material's small-strain moduli: E / (3 (1 - 2 nu)) for the
-  /// elastic solid, 2 G (1 + nu) / (3 (1 - 2 nu)) with G = 2 (A + B) for Mooney-Rivlin.
-  Real bulk_modulus() const override { return mat_.lame_lambda() + 2.0 / 3.0 * mat_.shear_modulus(); }
+  /// The law's small-strain bulk modulus (force/length^2).
+  Real bulk_modulus() const override { return mat_.bulk_modulus(); }
+  /// The law's state of every element, by batch (see the class comment).
+  std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
   void initialize(NodalFields& nodes) override {
@@ -91,19 +98,21 @@ class HexBlock final : public ElementBlock {
   /// hourglass, bulk-viscosity and stiffness-damping powers into `energy`; returns the smallest
   /// element time step. Throws InstabilityError naming the first element (of the first chunk)
   /// that inverted or produced a non-finite force.
-  Real compute_forces(const NodalFields& nodes, Real /*dt*/, CornerBuffer& corners,
+  /// `dt` (time) is the step the law integrates its state over; velocities are at t^{n-1/2}, the
+  /// geometry at x^n, so the rate of deformation the law sees is sym(v^{n-1/2} (x) B(x^n)).
+  Real compute_forces(const NodalFields& nodes, Real dt, CornerBuffer& corners,
                       BlockEnergy& energy) override {
     // One branch per block: a block without stiffness damping runs the kernel without it.
     const bool viscous = hg_.kind == HexHourglass::Kind::viscous;
     const bool damped = damping_.beta > 0.0;
     if (viscous && !damped)
-      compute_chunks<true, false>(nodes, corners);
+      compute_chunks<true, false>(nodes, dt, corners);
     else if (!damped)
-      compute_chunks<false, false>(nodes, corners);
+      compute_chunks<false, false>(nodes, dt, corners);
     else if (viscous)
-      compute_chunks<true, true>(nodes, corners);
+      compute_chunks<true, true>(nodes, dt, corners);
     else
-      compute_chunks<false, true>(nodes, corners);
+      compute_chunks<false, true>(nodes, dt, corners);
     return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
                                  "solid", ids_, part_id_,
                                  "inverted (non-positive volume or non-finite force)");
@@ -115,196 +124,277 @@ class HexBlock final : public ElementBlock {
   /// batches of kLanes elements, one per lane; a last partial batch repeats its last element in
   /// the spare lanes and discards them.
   template <bool viscous, bool damped>
-  void compute_chunks(const NodalFields& nodes, CornerBuffer& corners) {
+  void compute_chunks(const NodalFields& nodes, Real dt_law, CornerBuffer& corners) {
     static_assert(kChunkSize % kLanes == 0, "batches must not straddle chunks");
-    const Index ne = element_count();
     const Real c = mat_.wave_speed();
-    const Real rho0 = mat_.density();
-    const Real e_mod = mat_.youngs_modulus();
-    [[maybe_unused]] const Real beta_lambda = damping_.beta * mat_.lame_lambda();
-    [[maybe_unused]] const Real beta_2mu = 2.0 * damping_.beta * mat_.shear_modulus();
-    [[maybe_unused]] const Real beta_c2 = damping_.beta * c * c;
-    Real* fx_out = corners.force.x.data() + force_slot_base();
-    Real* fy_out = corners.force.y.data() + force_slot_base();
-    Real* fz_out = corners.force.z.data() + force_slot_base();
-    parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
-      using hex8::NodeLanes;
-      Lanes dtmin = Lanes::Constant(std::numeric_limits<Real>::max());
-      Lanes dtarg = Lanes::Zero();  // per lane, the element (as a Real) with the smallest step so far
-      Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero(), p_damp = Lanes::Zero(), p_all = Lanes::Zero();
-      Index bad = -1;
+    const KernelConstants kc{c, mat_.density(), mat_.youngs_modulus(), damping_.beta * mat_.lame_lambda(),
+                             2.0 * damping_.beta * mat_.shear_modulus(), damping_.beta * c * c};
+    const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
+                                   corners.force.y.data() + force_slot_base(),
+                                   corners.force.z.data() + force_slot_base()};
+    parallel_for_chunks(element_count(), [&](Index b, Index end, Index chunk) {
+      ChunkSums sums;
       for (Index e0 = b; e0 < end; e0 += kLanes) {
         const int valid = static_cast<int>(std::min<Index>(kLanes, end - e0));
-        const Index* idx = conn_lanes_.data() + 8 * static_cast<std::size_t>(e0);
-        NodeLanes x, y, z, vx, vy, vz, x0, y0, z0;
-        for (int k = 0; k < 8; ++k) {
-          const Index* ik = idx + kLanes * k;
-          x[k] = gather_lanes(nodes.x.x.data(), ik);
-          y[k] = gather_lanes(nodes.x.y.data(), ik);
-          z[k] = gather_lanes(nodes.x.z.data(), ik);
-          vx[k] = gather_lanes(nodes.v.x.data(), ik);
-          vy[k] = gather_lanes(nodes.v.y.data(), ik);
-          vz[k] = gather_lanes(nodes.v.z.data(), ik);
-          x0[k] = gather_lanes(nodes.x0.x.data(), ik);
-          y0[k] = gather_lanes(nodes.x0.y.data(), ik);
-          z0[k] = gather_lanes(nodes.x0.z.data(), ik);
-        }
-        NodeLanes bx, by, bz;
-        hex8::volume_gradient(x, y, z, bx, by, bz);
-        Lanes vol = Lanes::Zero();
-        for (int k = 0; k < 8; ++k) vol += x[k] * bx[k] + y[k] * by[k] + z[k] * bz[k];
-        vol /= 3.0;
-        const Lanes inv_vol = 1.0 / vol;
-        for (int k = 0; k < 8; ++k) {
-          bx[k] *= inv_vol;
-          by[k] *= inv_vol;
-          bz[k] *= inv_vol;
-        }
-        // dX/dx = sum_I X_I (x) B_I, exact for linear fields; F is its inverse.
-        Tensor3<Lanes> finv;
-        for (auto& row : finv)
-          for (Lanes& v : row) v = Lanes::Zero();
-        for (int k = 0; k < 8; ++k) {
-          finv[0][0] += x0[k] * bx[k];
-          finv[0][1] += x0[k] * by[k];
-          finv[0][2] += x0[k] * bz[k];
-          finv[1][0] += y0[k] * bx[k];
-          finv[1][1] += y0[k] * by[k];
-          finv[1][2] += y0[k] * bz[k];
-          finv[2][0] += z0[k] * bx[k];
-          finv[2][1] += z0[k] * by[k];
-          finv[2][2] += z0[k] * bz[k];
-        }
-        Tensor3<Lanes> sigma = mat_.cauchy_stress(inverse(finv));
-        Lanes trd = Lanes::Zero();
-        for (int k = 0; k < 8; ++k) trd += vx[k] * bx[k] + vy[k] * by[k] + vz[k] * bz[k];
-        const Lanes len = vol / hex8::max_face_area(x, y, z);
-        const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
-        // Bulk viscosity in compression only (tr D < 0).
-        const LaneMask compressing = trd < 0.0;
-        const Lanes rho = rho0 * vol0 * inv_vol;
-        const Lanes q = compressing.select(
-            rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd), 0.0);
-        for (int i = 0; i < 3; ++i) sigma[i][i] -= q;
-        Lanes visc = -q * trd * vol;
-        Lanes qdt = compressing.select(bulk_.linear * c + bulk_.quadratic * len * (-trd), 0.0);
-        Lanes damp = Lanes::Zero();
-        if constexpr (damped) {
-          // Rayleigh stiffness damping: sigma_d = beta (lambda tr(D) I + 2 mu D), D = sym(v (x) B).
-          Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
-          Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
-          Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
-          for (int k = 0; k < 8; ++k) {
-            dxx += vx[k] * bx[k];
-            dyy += vy[k] * by[k];
-            dzz += vz[k] * bz[k];
-            lxy += vx[k] * by[k];
-            lyx += vy[k] * bx[k];
-            lyz += vy[k] * bz[k];
-            lzy += vz[k] * by[k];
-            lxz += vx[k] * bz[k];
-            lzx += vz[k] * bx[k];
-          }
-          const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
-          const Lanes lt = beta_lambda * trd;
-          const Lanes sxx = lt + beta_2mu * dxx, syy = lt + beta_2mu * dyy, szz = lt + beta_2mu * dzz;
-          const Lanes sxy = beta_2mu * dxy, syz = beta_2mu * dyz, sxz = beta_2mu * dxz;
-          sigma[0][0] += sxx;
-          sigma[1][1] += syy;
-          sigma[2][2] += szz;
-          sigma[0][1] += sxy;
-          sigma[1][0] += sxy;
-          sigma[1][2] += syz;
-          sigma[2][1] += syz;
-          sigma[0][2] += sxz;
-          sigma[2][0] += sxz;
-          damp = vol * (sxx * dxx + syy * dyy + szz * dzz + 2.0 * (sxy * dxy + syz * dyz + sxz * dxz));
-          // The step of a damped element: (2 / w)(sqrt(1 + xi^2) - xi) with w = 2 c / len and
-          // xi = beta w / 2 adds beta c^2 / len to the bulk-viscosity term.
-          qdt += beta_c2 / len;
-        }
-        // Stress divergence: f_I = -V sigma B_I (residual form).
-        NodeLanes fx, fy, fz;
-        for (int k = 0; k < 8; ++k) {
-          fx[k] = -vol * (bx[k] * sigma[0][0] + by[k] * sigma[0][1] + bz[k] * sigma[0][2]);
-          fy[k] = -vol * (bx[k] * sigma[1][0] + by[k] * sigma[1][1] + bz[k] * sigma[1][2]);
-          fz[k] = -vol * (bx[k] * sigma[2][0] + by[k] * sigma[2][1] + bz[k] * sigma[2][2]);
-        }
-        // Hourglass: f = -k sum_a gamma_a (gamma_a . w) with w the velocities (viscous) or the
-        // total displacements (physical stiffness).
-        NodeLanes hx, hy, hz;
-        Lanes k_hg;
-        if constexpr (viscous) {
-          hex8::hourglass_resistance(x, y, z, bx, by, bz, vx, vy, vz, hx, hy, hz);
-          const Lanes v23 = (vol * vol).unaryExpr([](Real v) { return std::cbrt(v); });
-          k_hg = hg_.coefficient * rho0 * vol0 * inv_vol * c * v23 / 4.0;
-        } else {
-          NodeLanes ux, uy, uz;
-          for (int k = 0; k < 8; ++k) {
-            ux[k] = x[k] - x0[k];
-            uy[k] = y[k] - y0[k];
-            uz[k] = z[k] - z0[k];
-          }
-          hex8::hourglass_resistance(x, y, z, bx, by, bz, ux, uy, uz, hx, hy, hz);
-          Lanes b2 = Lanes::Zero();
-          for (int k = 0; k < 8; ++k) b2 += bx[k] * bx[k] + by[k] * by[k] + bz[k] * bz[k];
-          k_hg = hg_.coefficient * e_mod * vol * b2 / 72.0;
-        }
-        Lanes hg = Lanes::Zero(), fsum = Lanes::Zero(), all = Lanes::Zero();
-        for (int k = 0; k < 8; ++k) {
-          hx[k] *= -k_hg;
-          hy[k] *= -k_hg;
-          hz[k] *= -k_hg;
-          hg -= hx[k] * vx[k] + hy[k] * vy[k] + hz[k] * vz[k];
-          fx[k] += hx[k];
-          fy[k] += hy[k];
-          fz[k] += hz[k];
-          fsum += fx[k] + fy[k] + fz[k];
-          all -= fx[k] * vx[k] + fy[k] * vy[k] + fz[k] * vz[k];
-        }
-        Lanes dt = len / (qdt + lane_sqrt(qdt * qdt + c * c));
-        const LaneMask failed = !(vol > 0.0) || !fsum.isFinite();
-        if (valid < kLanes) {  // the spare lanes of a last partial batch
-          for (int l = valid; l < kLanes; ++l) {
-            hg[l] = visc[l] = damp[l] = all[l] = 0.0;
-            dt[l] = std::numeric_limits<Real>::max();
-          }
-        }
-        if (bad < 0 && failed.head(valid).any())
-          for (int l = 0; l < valid; ++l)
-            if (failed[l]) {
-              bad = e0 + l;
-              break;
-            }
-        p_hg += hg;
-        p_visc += visc;
-        p_all += all;
-        if constexpr (damped) p_damp += damp;
-        dtarg = (dt < dtmin).select(kLaneOffsets + static_cast<Real>(e0), dtarg);
-        dtmin = dtmin.min(dt);
-        const std::size_t s0 = 8 * static_cast<std::size_t>(e0);
-        if (valid == kLanes) {
-          store_transposed(fx, fx_out + s0);
-          store_transposed(fy, fy_out + s0);
-          store_transposed(fz, fz_out + s0);
-        } else {
-          for (int l = 0; l < valid; ++l)
-            for (int k = 0; k < 8; ++k) {
-              fx_out[s0 + 8 * l + k] = fx[k][l];
-              fy_out[s0 + 8 * l + k] = fy[k][l];
-              fz_out[s0 + 8 * l + k] = fz[k][l];
-            }
-        }
+        Batch bt;
+        gather_batch(nodes, e0, bt);
+        BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
+        BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, kc);
+        accumulate<damped>(sums, bt, st, f, e0, valid, kc.c);
+        store_forces(f, e0, valid, out);
       }
       Index lane = 0;
-      chunk_dt_[chunk] = dtmin.minCoeff(&lane);
-      chunk_dt_element_[chunk] = static_cast<Index>(dtarg[lane]);
-      chunk_hg_[chunk] = p_hg.sum();
-      chunk_visc_[chunk] = p_visc.sum();
-      chunk_damp_[chunk] = p_damp.sum();
-      chunk_power_[chunk] = p_all.sum();
-      chunk_bad_[chunk] = bad;
+      chunk_dt_[chunk] = sums.dtmin.minCoeff(&lane);
+      chunk_dt_element_[chunk] = static_cast<Index>(sums.dtarg[lane]);
+      chunk_hg_[chunk] = sums.p_hg.sum();
+      chunk_visc_[chunk] = sums.p_visc.sum();
+      chunk_damp_[chunk] = sums.p_damp.sum();
+      chunk_power_[chunk] = sums.p_all.sum();
+      chunk_bad_[chunk] = sums.bad;
     });
+  }
+
+  /// The block's constants the kernel reads: wave speed, density, Young's modulus, and the
+  /// stiffness-damping factors beta lambda, 2 beta mu, beta c^2.
+  struct KernelConstants {
+    Real c, rho0, e_mod, beta_lambda, beta_2mu, beta_c2;
+  };
+
+  /// One batch of kLanes elements: current, velocity and reference nodal components, the gradient
+  /// operator B = (1/V) dV/dx (1/length), the volume and its inverse.
+  struct Batch {
+    hex8::NodeLanes x, y, z, vx, vy, vz, x0, y0, z0, bx, by, bz;
+    Lanes vol, inv_vol;
+  };
+
+  /// The stress of a batch (law, bulk viscosity, stiffness damping), the viscous and damping
+  /// powers, the characteristic length and the viscous term of the step.
+  struct BatchStress {
+    Tensor3<Lanes> sigma;
+    Lanes visc, damp, qdt, len;
+  };
+
+  /// Nodal forces of a batch (residual form), hourglass power, sum of the force components (to
+  /// detect a non-finite force) and total internal power.
+  struct BatchForces {
+    hex8::NodeLanes fx, fy, fz;
+    Lanes hg, fsum, all;
+  };
+
+  /// A chunk's running minimum step (and its element), powers and first failed element.
+  struct ChunkSums {
+    Lanes dtmin = Lanes::Constant(std::numeric_limits<Real>::max());
+    Lanes dtarg = Lanes::Zero();  ///< per lane, the element (as a Real) with the smallest step so far
+    Lanes p_hg = Lanes::Zero(), p_visc = Lanes::Zero(), p_damp = Lanes::Zero(), p_all = Lanes::Zero();
+    Index bad = -1;
+  };
+
+  /// Gathers the batch starting at element e0 and computes its gradient operator and volume.
+  void gather_batch(const NodalFields& nodes, Index e0, Batch& bt) const {
+    const Index* idx = conn_lanes_.data() + 8 * static_cast<std::size_t>(e0);
+    for (int k = 0; k < 8; ++k) {
+      const Index* ik = idx + kLanes * k;
+      bt.x[k] = gather_lanes(nodes.x.x.data(), ik);
+      bt.y[k] = gather_lanes(nodes.x.y.data(), ik);
+      bt.z[k] = gather_lanes(nodes.x.z.data(), ik);
+      bt.vx[k] = gather_lanes(nodes.v.x.data(), ik);
+      bt.vy[k] = gather_lanes(nodes.v.y.data(), ik);
+      bt.vz[k] = gather_lanes(nodes.v.z.data(), ik);
+      bt.x0[k] = gather_lanes(nodes.x0.x.data(), ik);
+      bt.y0[k] = gather_lanes(nodes.x0.y.data(), ik);
+      bt.z0[k] = gather_lanes(nodes.x0.z.data(), ik);
+    }
+    hex8::volume_gradient(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz);
+    bt.vol = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) bt.vol += bt.x[k] * bt.bx[k] + bt.y[k] * bt.by[k] + bt.z[k] * bt.bz[k];
+    bt.vol /= 3.0;
+    bt.inv_vol = 1.0 / bt.vol;
+    for (int k = 0; k < 8; ++k) {
+      bt.bx[k] *= bt.inv_vol;
+      bt.by[k] *= bt.inv_vol;
+      bt.bz[k] *= bt.inv_vol;
+    }
+  }
+
+  /// F^-1 = dX/dx = sum_I X_I (x) B_I, exact for linear fields.
+  static Tensor3<Lanes> inverse_deformation_gradient(const Batch& bt) {
+    Tensor3<Lanes> finv;
+    for (auto& row : finv)
+      for (Lanes& v : row) v = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) {
+      finv[0][0] += bt.x0[k] * bt.bx[k];
+      finv[0][1] += bt.x0[k] * bt.by[k];
+      finv[0][2] += bt.x0[k] * bt.bz[k];
+      finv[1][0] += bt.y0[k] * bt.bx[k];
+      finv[1][1] += bt.y0[k] * bt.by[k];
+      finv[1][2] += bt.y0[k] * bt.bz[k];
+      finv[2][0] += bt.z0[k] * bt.bx[k];
+      finv[2][1] += bt.z0[k] * bt.by[k];
+      finv[2][2] += bt.z0[k] * bt.bz[k];
+    }
+    return finv;
+  }
+
+  /// The law's stress (its state advanced over dt_law), bulk viscosity in compression only
+  /// (tr D < 0) and, when damped, the stiffness-damping stress.
+  template <bool damped>
+  BatchStress batch_stress(const Batch& bt, Index e0, Real dt_law, const KernelConstants& kc) {
+    const Tensor3<Lanes> d = rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
+    BatchStress st;
+    st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
+    Lanes trd = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) trd += bt.vx[k] * bt.bx[k] + bt.vy[k] * bt.by[k] + bt.vz[k] * bt.bz[k];
+    st.len = bt.vol / hex8::max_face_area(bt.x, bt.y, bt.z);
+    const Lanes& len = st.len;
+    const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
+    const LaneMask compressing = trd < 0.0;
+    const Lanes rho = kc.rho0 * vol0 * bt.inv_vol;
+    const Lanes q = compressing.select(
+        rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * kc.c * trd), 0.0);
+    for (int i = 0; i < 3; ++i) st.sigma[i][i] -= q;
+    st.visc = -q * trd * bt.vol;
+    st.qdt = compressing.select(bulk_.linear * kc.c + bulk_.quadratic * len * (-trd), 0.0);
+    st.damp = Lanes::Zero();
+    if constexpr (damped) add_damping(st, d, trd, bt.vol, kc);
+    return st;
+  }
+
+  /// Rayleigh stiffness damping: sigma_d = beta (lambda tr(D) I + 2 mu D), its power, and the
+  /// step of a damped element: (2 / w)(sqrt(1 + xi^2) - xi) with w = 2 c / len and xi = beta w / 2
+  /// adds beta c^2 / len to the bulk-viscosity term.
+  static void add_damping(BatchStress& st, const Tensor3<Lanes>& d, const Lanes& trd, const Lanes& vol,
+                          const KernelConstants& kc) {
+    const Lanes &dxx = d[0][0], &dyy = d[1][1], &dzz = d[2][2];
+    const Lanes &dxy = d[0][1], &dyz = d[1][2], &dxz = d[0][2];
+    const Lanes lt = kc.beta_lambda * trd;
+    const Lanes sxx = lt + kc.beta_2mu * dxx, syy = lt + kc.beta_2mu * dyy, szz = lt + kc.beta_2mu * dzz;
+    const Lanes sxy = kc.beta_2mu * dxy, syz = kc.beta_2mu * dyz, sxz = kc.beta_2mu * dxz;
+    Tensor3<Lanes>& sigma = st.sigma;
+    sigma[0][0] += sxx;
+    sigma[1][1] += syy;
+    sigma[2][2] += szz;
+    sigma[0][1] += sxy;
+    sigma[1][0] += sxy;
+    sigma[1][2] += syz;
+    sigma[2][1] += syz;
+    sigma[0][2] += sxz;
+    sigma[2][0] += sxz;
+    st.damp = vol * (sxx * dxx + syy * dyy + szz * dzz + 2.0 * (sxy * dxy + syz * dyz + sxz * dxz));
+    st.qdt += kc.beta_c2 / st.len;
+  }
+
+  /// Stress divergence f_I = -V sigma B_I (residual form) plus the hourglass forces
+  /// f = -k sum_a gamma_a (gamma_a . w), w the velocities (viscous) or the total displacements
+  /// (physical stiffness).
+  template <bool viscous>
+  BatchForces batch_forces(const Batch& bt, const Tensor3<Lanes>& sigma, Index e0,
+                           const KernelConstants& kc) const {
+    BatchForces f;
+    for (int k = 0; k < 8; ++k) {
+      f.fx[k] = -bt.vol * (bt.bx[k] * sigma[0][0] + bt.by[k] * sigma[0][1] + bt.bz[k] * sigma[0][2]);
+      f.fy[k] = -bt.vol * (bt.bx[k] * sigma[1][0] + bt.by[k] * sigma[1][1] + bt.bz[k] * sigma[1][2]);
+      f.fz[k] = -bt.vol * (bt.bx[k] * sigma[2][0] + bt.by[k] * sigma[2][1] + bt.bz[k] * sigma[2][2]);
+    }
+    hex8::NodeLanes hx, hy, hz;
+    Lanes k_hg;
+    if constexpr (viscous) {
+      hex8::hourglass_resistance(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, bt.vx, bt.vy, bt.vz, hx, hy, hz);
+      const Lanes v23 = (bt.vol * bt.vol).unaryExpr([](Real v) { return std::cbrt(v); });
+      const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
+      k_hg = hg_.coefficient * kc.rho0 * vol0 * bt.inv_vol * kc.c * v23 / 4.0;
+    } else {
+      hex8::NodeLanes ux, uy, uz;
+      for (int k = 0; k < 8; ++k) {
+        ux[k] = bt.x[k] - bt.x0[k];
+        uy[k] = bt.y[k] - bt.y0[k];
+        uz[k] = bt.z[k] - bt.z0[k];
+      }
+      hex8::hourglass_resistance(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, ux, uy, uz, hx, hy, hz);
+      Lanes b2 = Lanes::Zero();
+      for (int k = 0; k < 8; ++k) b2 += bt.bx[k] * bt.bx[k] + bt.by[k] * bt.by[k] + bt.bz[k] * bt.bz[k];
+      k_hg = hg_.coefficient * kc.e_mod * bt.vol * b2 / 72.0;
+    }
+    f.hg = Lanes::Zero();
+    f.fsum = Lanes::Zero();
+    f.all = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) {
+      hx[k] *= -k_hg;
+      hy[k] *= -k_hg;
+      hz[k] *= -k_hg;
+      f.hg -= hx[k] * bt.vx[k] + hy[k] * bt.vy[k] + hz[k] * bt.vz[k];
+      f.fx[k] += hx[k];
+      f.fy[k] += hy[k];
+      f.fz[k] += hz[k];
+      f.fsum += f.fx[k] + f.fy[k] + f.fz[k];
+      f.all -= f.fx[k] * bt.vx[k] + f.fy[k] * bt.vy[k] + f.fz[k] * bt.vz[k];
+    }
+    return f;
+  }
+
+  /// Adds a batch's step, powers and failure to the chunk's sums; the spare lanes of a last
+  /// partial batch (lanes valid..kLanes-1) count for nothing.
+  template <bool damped>
+  static void accumulate(ChunkSums& s, const Batch& bt, BatchStress& st, BatchForces& f, Index e0,
+                         int valid, Real c) {
+    Lanes dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
+    const LaneMask failed = !(bt.vol > 0.0) || !f.fsum.isFinite();
+    if (valid < kLanes) {
+      for (int l = valid; l < kLanes; ++l) {
+        f.hg[l] = st.visc[l] = st.damp[l] = f.all[l] = 0.0;
+        dt[l] = std::numeric_limits<Real>::max();
+      }
+    }
+    if (s.bad < 0 && failed.head(valid).any())
+      for (int l = 0; l < valid; ++l)
+        if (failed[l]) {
+          s.bad = e0 + l;
+          break;
+        }
+    s.p_hg += f.hg;
+    s.p_visc += st.visc;
+    s.p_all += f.all;
+    if constexpr (damped) s.p_damp += st.damp;
+    s.dtarg = (dt < s.dtmin).select(kLaneOffsets + static_cast<Real>(e0), s.dtarg);
+    s.dtmin = s.dtmin.min(dt);
+  }
+
+  /// Writes a batch's forces into its elements' corner slots (`out`: x, y, z slot arrays).
+  static void store_forces(const BatchForces& f, Index e0, int valid, const std::array<Real*, 3>& out) {
+    const std::size_t s0 = 8 * static_cast<std::size_t>(e0);
+    if (valid == kLanes) {
+      store_transposed(f.fx, out[0] + s0);
+      store_transposed(f.fy, out[1] + s0);
+      store_transposed(f.fz, out[2] + s0);
+      return;
+    }
+    for (int l = 0; l < valid; ++l)
+      for (int k = 0; k < 8; ++k) {
+        out[0][s0 + 8 * l + k] = f.fx[k][l];
+        out[1][s0 + 8 * l + k] = f.fy[k][l];
+        out[2][s0 + 8 * l + k] = f.fz[k][l];
+      }
+  }
+
+  /// D = sym(v (x) B) of a batch (1/time), from the nodal velocities and the gradient operator.
+  static Tensor3<Lanes> rate_of_deformation(const hex8::NodeLanes& vx, const hex8::NodeLanes& vy,
+                                            const hex8::NodeLanes& vz, const hex8::NodeLanes& bx,
+                                            const hex8::NodeLanes& by, const hex8::NodeLanes& bz) {
+    Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
+    Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
+    Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) {
+      dxx += vx[k] * bx[k];
+      dyy += vy[k] * by[k];
+      dzz += vz[k] * bz[k];
+      lxy += vx[k] * by[k];
+      lyx += vy[k] * bx[k];
+      lyz += vy[k] * bz[k];
+      lzy += vz[k] * by[k];
+      lxz += vx[k] * bz[k];
+      lzx += vz[k] * bx[k];
+    }
+    const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
+    return {{{dxx, dxy, dxz}, {dxy, dyy, dyz}, {dxz, dyz, dzz}}};
   }
 
   static Index padded(Index n) { return (n + kLanes - 1) / kLanes * kLanes; }
@@ -322,6 +412,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Id> ids_;
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
+  std::vector<State> state_;       ///< the law's state, one per batch
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;

@@ -1,9 +1,9 @@
 #pragma once
-/// A block of 4-node Belytschko-Tsay shells of one part, one elastic material and one section.
+/// A block of 4-node Belytschko-Tsay shells of one part, one plane-stress law and one section.
 ///
-/// Stresses are hypoelastic: each step adds C : D dt to the stress stored per element and
-/// through-thickness point in the element's co-rotational frame, so the stored stress turns with
-/// the element (Belytschko, Lin & Tsay 1984). See docs/shells_and_rigid.md for the options.
+/// The law (material/shell_material.hpp) works in the element's co-rotational frame: its state,
+/// stored per element and through-thickness point, turns with the element (Belytschko, Lin & Tsay
+/// 1984). See docs/shells_and_rigid.md for the options.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,20 +16,24 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/shell_bt.hpp"
+#include "slideline/material/elastic_shell.hpp"
+#include "slideline/material/shell_material.hpp"
 
 namespace slideline {
 
-/// Stress components stored per through-thickness point, local frame.
-inline constexpr int kShellStressComponents = 5;  // xx, yy, xy, yz, xz
-
-class ShellBlock final : public ElementBlock {
+/// Shells with the plane-stress law `Law`; ShellBlock is the elastic one.
+template <PlaneStressMaterial Law>
+class BasicShellBlock final : public ElementBlock {
  public:
+  /// The law's state of one through-thickness point.
+  using State = typename Law::State;
+
   /// `connectivity`: 4 internal node indices per element (counter-clockwise seen from the side
   /// the normal points to); `damping.beta` > 0 adds the stiffness-proportional damping stress
-  /// beta (C : strain rate) with the plane-stress and transverse-shear moduli.
-  ShellBlock(Id part_id, ShellMaterial material, ShellSection section,
-             std::vector<Index> connectivity, std::vector<Id> element_ids,
-             StiffnessDamping damping = {})
+  /// beta (C : strain rate) with the law's plane-stress and transverse-shear moduli.
+  BasicShellBlock(Id part_id, Law material, ShellSection section,
+                  std::vector<Index> connectivity, std::vector<Id> element_ids,
+                  StiffnessDamping damping = {})
       : part_id_(part_id),
         mat_(material),
         sec_(section),
@@ -39,9 +43,8 @@ class ShellBlock final : public ElementBlock {
         rule_(shell_bt::ThicknessRule::make(section.nip, section.rule)),
         conn_(std::move(connectivity)),
         ids_(std::move(element_ids)) {
-    if (!(mat_.density > 0.0) || !(mat_.youngs > 0.0) || !(mat_.poisson > -1.0 && mat_.poisson < 0.5))
-      throw InputError("shell part " + std::to_string(part_id_) +
-                       ": density and Young's modulus must be positive and Poisson's ratio in (-1, 0.5)");
+    if (const std::string why = mat_.problem(); !why.empty())
+      throw InputError("shell part " + std::to_string(part_id_) + ": " + why);
     if (!(sec_.thickness > 0.0))
       throw InputError("shell part " + std::to_string(part_id_) + ": thickness must be positive");
     if (!(sec_.shear_factor > 0.0))
@@ -61,7 +64,7 @@ class ShellBlock final : public ElementBlock {
     chunk_power_.assign(nc, 0.0);
     chunk_bad_.assign(nc, -1);
     area0_.assign(ne, 0.0);
-    stress_.assign(static_cast<std::size_t>(ne) * rule_.n * kShellStressComponents, 0.0);
+    state_.assign(static_cast<std::size_t>(ne) * rule_.n, State{});
   }
 
   std::string kind() const override { return "shell_bt"; }
@@ -75,10 +78,10 @@ class ShellBlock final : public ElementBlock {
     return ids_.empty() ? Id{-1} : ids_[static_cast<std::size_t>(chunk_dt_element_[argmin_chunk(chunk_dt_)])];
   }
   bool has_moments() const override { return true; }
-  const ShellMaterial& material() const { return mat_; }
+  const Law& material() const { return mat_; }
   const ShellSection& section() const { return sec_; }
-  /// E / (3 (1 - 2 nu)), the 3-D bulk modulus of the shell's elastic material.
-  Real bulk_modulus() const override { return mat_.youngs / (3.0 * (1.0 - 2.0 * mat_.poisson)); }
+  /// The law's 3-D bulk modulus (force/length^2).
+  Real bulk_modulus() const override { return mat_.bulk_modulus(); }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
 
@@ -96,7 +99,7 @@ class ShellBlock final : public ElementBlock {
                          std::to_string(part_id_) + " has non-positive area " +
                          std::to_string(g.area) + " (check the node order)");
       area0_[e] = g.area;
-      const Real m = mat_.density * g.area * t / 4.0;
+      const Real m = mat_.density() * g.area * t / 4.0;
       const Real j = m * std::max(t * t, g.area) / 12.0;
       for (int k = 0; k < 4; ++k) {
         const Index n = conn_[4 * e + k];
@@ -127,20 +130,10 @@ class ShellBlock final : public ElementBlock {
  private:
   template <bool damped>
   void compute_chunks(const NodalFields& nodes, Real dt, CornerBuffer& corners) {
-    const Index ne = element_count();
     const Real c = mat_.wave_speed();
-    const Real rho = mat_.density;
-    [[maybe_unused]] const Real beta = damping_.beta;
+    const Real rho = mat_.density();
     const Real t = sec_.thickness;
-    const Real half_t = 0.5 * t;
-    const Real c11 = mat_.youngs / (1.0 - mat_.poisson * mat_.poisson);
-    const Real c12 = mat_.poisson * c11;
-    const Real g_mod = mat_.shear_modulus();
-    const Real gs = sec_.shear_factor * g_mod;
-    const Index fbase = force_slot_base();
-    const Index mbase = moment_slot_base();
-    const int nip = rule_.n;
-    parallel_for_chunks(ne, [&](Index b, Index end, Index chunk) {
+    parallel_for_chunks(element_count(), [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
       Index dtarg = b;
       Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
@@ -154,10 +147,6 @@ class ShellBlock final : public ElementBlock {
           if (bad < 0) bad = e;
           continue;
         }
-        shell_bt::Resultants r;
-        Real* sig = stress_.data() + static_cast<std::size_t>(e) * nip * kShellStressComponents;
-        shell_bt::StrainRates sr;
-        [[maybe_unused]] Real damp = 0.0;  // damping power per unit area
         // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: a rigid rotation's chord velocities
         // are exactly rigid there, so strain and hourglass rates vanish for it.
         const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
@@ -166,48 +155,9 @@ class ShellBlock final : public ElementBlock {
           if (bad < 0) bad = e;
           continue;
         }
-        sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
-        for (int ip = 0; ip < nip; ++ip) {
-          Real* s = sig + ip * kShellStressComponents;
-          const Real z = rule_.xi[ip] * half_t;
-          const Real wz = rule_.w[ip] * half_t;  // dz weight
-          const Real dxx = dt * (sr.membrane[0] + z * sr.curvature[0]);
-          const Real dyy = dt * (sr.membrane[1] + z * sr.curvature[1]);
-          const Real gxy = dt * (sr.membrane[2] + z * sr.curvature[2]);
-          s[0] += c11 * dxx + c12 * dyy;
-          s[1] += c12 * dxx + c11 * dyy;
-          s[2] += g_mod * gxy;
-          s[3] += gs * dt * sr.shear[0];
-          s[4] += gs * dt * sr.shear[1];
-          r.n[0] += wz * s[0];
-          r.n[1] += wz * s[1];
-          r.n[2] += wz * s[2];
-          r.m[0] += wz * z * s[0];
-          r.m[1] += wz * z * s[1];
-          r.m[2] += wz * z * s[2];
-          r.q[0] += wz * s[3];
-          r.q[1] += wz * s[4];
-          if constexpr (damped) {
-            // Rayleigh stiffness damping: beta (C : strain rate), in the resultants only.
-            const Real rxx = sr.membrane[0] + z * sr.curvature[0];
-            const Real ryy = sr.membrane[1] + z * sr.curvature[1];
-            const Real rxy = sr.membrane[2] + z * sr.curvature[2];
-            const Real d0 = beta * (c11 * rxx + c12 * ryy);
-            const Real d1 = beta * (c12 * rxx + c11 * ryy);
-            const Real d2 = beta * g_mod * rxy;
-            const Real d3 = beta * gs * sr.shear[0];
-            const Real d4 = beta * gs * sr.shear[1];
-            r.n[0] += wz * d0;
-            r.n[1] += wz * d1;
-            r.n[2] += wz * d2;
-            r.m[0] += wz * z * d0;
-            r.m[1] += wz * z * d1;
-            r.m[2] += wz * z * d2;
-            r.q[0] += wz * d3;
-            r.q[1] += wz * d4;
-            damp += wz * (d0 * rxx + d1 * ryy + d2 * rxy + d3 * sr.shear[0] + d4 * sr.shear[1]);
-          }
-        }
+        const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
+        shell_bt::Resultants r;
+        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r);
         // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
         const Real len = shell_bt::characteristic_length(X, g.area);
         const Real trd = sr.membrane[0] + sr.membrane[1];
@@ -221,48 +171,14 @@ class ShellBlock final : public ElementBlock {
         }
         if constexpr (damped) {
           p_damp += damp * g.area;
-          qdt += beta * c * c / len;  // the damped step, as for the hexahedron
+          qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
         }
         shell_bt::NodeMat fl, ml;
         shell_bt::resultant_forces(g, r, fl, ml);
 
         shell_bt::NodeMat f = fl * g.e.transpose();
         shell_bt::NodeMat m = ml * g.e.transpose();
-
-        // Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes, on the
-        // mid-step geometry.
-        if (qhg_ > 0.0) {
-          // Relative to the element's mean rigid rotation: on a warped element the rotation
-          // about an in-plane axis moves the nodes in plane in proportion to their warp, which
-          // is an hourglass pattern; it must not be resisted.
-          const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
-          const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
-          shell_bt::NodeMat vrel;
-          for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
-          const shell_bt::NodeMat vl = vrel * gm.e;
-          const shell_bt::NodeMat wl = W * gm.e;
-          const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
-          const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
-          const Real m_node = rho * area0_[e] * t / 4.0;
-          const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
-          // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass
-          // displacement); the viscous coefficient is qhg times the critical damping of the mode.
-          const Real k_m = mat_.youngs * t * gm.area * bb / 8.0;
-          const Real k_w = gs * t * t * t * bb / 12.0;
-          const Real k_r = mat_.youngs * t * t * t * gm.area * bb / 192.0;
-          const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
-          const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
-          const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
-          const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
-          const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
-          const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
-          const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
-          const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
-          f += gam * (hv * gm.e.transpose());
-          m += gam * (hw * gm.e.transpose());
-          p_hg += cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] +
-                  cr * (qw[0] * qw[0] + qw[1] * qw[1]);
-        }
+        if (qhg_ > 0.0) p_hg += add_hourglass(e, gm, Xm, V, W, f, m);
         if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
         p_all -= f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum();
         const Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
@@ -270,16 +186,7 @@ class ShellBlock final : public ElementBlock {
           dtmin = dt_e;
           dtarg = e;
         }
-        const Index s0 = fbase + 4 * e;
-        const Index m0 = mbase + 4 * e;
-        for (int k = 0; k < 4; ++k) {
-          corners.force.x[s0 + k] = f(k, 0);
-          corners.force.y[s0 + k] = f(k, 1);
-          corners.force.z[s0 + k] = f(k, 2);
-          corners.moment.x[m0 + k] = m(k, 0);
-          corners.moment.y[m0 + k] = m(k, 1);
-          corners.moment.z[m0 + k] = m(k, 2);
-        }
+        store_element(e, f, m, corners);
       }
       chunk_dt_[chunk] = dtmin;
       chunk_dt_element_[chunk] = dtarg;
@@ -291,12 +198,113 @@ class ShellBlock final : public ElementBlock {
     });
   }
 
+  /// Advances the law's state at every through-thickness point of element e with the strain rates
+  /// `sr` over dt and integrates the stresses into the resultants `r` (which start at zero). When
+  /// damped, adds the Rayleigh stiffness-damping stress beta (C : strain rate) to the resultants
+  /// only, and returns its power per unit area.
+  template <bool damped>
+  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r) {
+    const Real half_t = 0.5 * sec_.thickness;
+    const Real kappa = sec_.shear_factor;
+    [[maybe_unused]] const Real beta = damping_.beta;
+    [[maybe_unused]] const PlaneStressStiffness cs = mat_.stiffness();
+    [[maybe_unused]] const Real gs = kappa * cs.g;
+    Real damp = 0.0;
+    State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
+    for (int ip = 0; ip < rule_.n; ++ip) {
+      const Real z = rule_.xi[ip] * half_t;
+      const Real wz = rule_.w[ip] * half_t;  // dz weight
+      const ShellRate rate{sr.membrane[0] + z * sr.curvature[0], sr.membrane[1] + z * sr.curvature[1],
+                           sr.membrane[2] + z * sr.curvature[2], sr.shear[0], sr.shear[1]};
+      const ShellStress s = mat_.update(st[ip], rate, dt, kappa);
+      r.n[0] += wz * s[0];
+      r.n[1] += wz * s[1];
+      r.n[2] += wz * s[2];
+      r.m[0] += wz * z * s[0];
+      r.m[1] += wz * z * s[1];
+      r.m[2] += wz * z * s[2];
+      r.q[0] += wz * s[3];
+      r.q[1] += wz * s[4];
+      if constexpr (damped) {
+        const Real rxx = rate.xx, ryy = rate.yy, rxy = rate.xy;
+        const Real d0 = beta * (cs.c11 * rxx + cs.c12 * ryy);
+        const Real d1 = beta * (cs.c12 * rxx + cs.c11 * ryy);
+        const Real d2 = beta * cs.g * rxy;
+        const Real d3 = beta * gs * sr.shear[0];
+        const Real d4 = beta * gs * sr.shear[1];
+        r.n[0] += wz * d0;
+        r.n[1] += wz * d1;
+        r.n[2] += wz * d2;
+        r.m[0] += wz * z * d0;
+        r.m[1] += wz * z * d1;
+        r.m[2] += wz * z * d2;
+        r.q[0] += wz * d3;
+        r.q[1] += wz * d4;
+        damp += wz * (d0 * rxx + d1 * ryy + d2 * rxy + d3 * sr.shear[0] + d4 * sr.shear[1]);
+      }
+    }
+    return damp;
+  }
+
+  /// Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes of element e
+  /// on the mid-step geometry (gm, Xm), added to the forces f and moments m (global components);
+  /// returns its power.
+  Real add_hourglass(Index e, const shell_bt::LocalGeometry& gm, const shell_bt::NodeMat& Xm,
+                     const shell_bt::NodeMat& V, const shell_bt::NodeMat& W, shell_bt::NodeMat& f,
+                     shell_bt::NodeMat& m) const {
+    const Real t = sec_.thickness;
+    const Real gs = sec_.shear_factor * mat_.stiffness().g;
+    // Relative to the element's mean rigid rotation: on a warped element the rotation about an
+    // in-plane axis moves the nodes in plane in proportion to their warp, which is an hourglass
+    // pattern; it must not be resisted.
+    const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
+    const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
+    shell_bt::NodeMat vrel;
+    for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
+    const shell_bt::NodeMat vl = vrel * gm.e;
+    const shell_bt::NodeMat wl = W * gm.e;
+    const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
+    const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
+    const Real m_node = mat_.density() * area0_[e] * t / 4.0;
+    const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
+    // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass displacement);
+    // the viscous coefficient is qhg times the critical damping of the mode.
+    const Real k_m = mat_.youngs_modulus() * t * gm.area * bb / 8.0;
+    const Real k_w = gs * t * t * t * bb / 12.0;
+    const Real k_r = mat_.youngs_modulus() * t * t * t * gm.area * bb / 192.0;
+    const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
+    const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
+    const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
+    const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
+    const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
+    const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
+    const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
+    const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
+    f += gam * (hv * gm.e.transpose());
+    m += gam * (hw * gm.e.transpose());
+    return cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] + cr * (qw[0] * qw[0] + qw[1] * qw[1]);
+  }
+
+  /// Writes element e's forces f and moments m (4 x 3, global) into its corner slots.
+  void store_element(Index e, const shell_bt::NodeMat& f, const shell_bt::NodeMat& m,
+                     CornerBuffer& corners) const {
+    const Index s0 = force_slot_base() + 4 * e;
+    const Index m0 = moment_slot_base() + 4 * e;
+    for (int k = 0; k < 4; ++k) {
+      corners.force.x[s0 + k] = f(k, 0);
+      corners.force.y[s0 + k] = f(k, 1);
+      corners.force.z[s0 + k] = f(k, 2);
+      corners.moment.x[m0 + k] = m(k, 0);
+      corners.moment.y[m0 + k] = m(k, 1);
+      corners.moment.z[m0 + k] = m(k, 2);
+    }
+  }
+
  public:
   /// Stress (force/length^2, local co-rotational frame: xx, yy, xy, yz, xz) of element e at
   /// through-thickness point ip (0 = bottom, z = xi * t / 2).
   Eigen::Matrix<Real, 5, 1> stress(Index e, int ip) const {
-    const Real* s = stress_.data() +
-                    (static_cast<std::size_t>(e) * rule_.n + ip) * kShellStressComponents;
+    const ShellStress s = mat_.stress(state_[static_cast<std::size_t>(e) * rule_.n + ip]);
     return Eigen::Matrix<Real, 5, 1>(s[0], s[1], s[2], s[3], s[4]);
   }
 
@@ -305,11 +313,11 @@ class ShellBlock final : public ElementBlock {
   /// in-plane stress is linear through the thickness). Needs nip >= 2.
   Eigen::Matrix<Real, 3, 1> surface_stress(Index e, bool top) const {
     const int n = rule_.n;
-    if (n < 2) return stress(e, 0).head<3>();
+    if (n < 2) return stress(e, 0).template head<3>();
     const int i1 = top ? n - 1 : 0, i2 = top ? n - 2 : 1;
     const Real z1 = rule_.xi[i1], z2 = rule_.xi[i2], zs = top ? 1.0 : -1.0;
     const Real a = (zs - z2) / (z1 - z2);
-    return a * stress(e, i1).head<3>() + (1.0 - a) * stress(e, i2).head<3>();
+    return a * stress(e, i1).template head<3>() + (1.0 - a) * stress(e, i2).template head<3>();
   }
 
  private:
@@ -318,7 +326,7 @@ class ShellBlock final : public ElementBlock {
   }
 
   Id part_id_;
-  ShellMaterial mat_;
+  Law mat_;
   ShellSection sec_;
   Real qhg_;
   BulkViscosity bulk_;
@@ -327,10 +335,13 @@ class ShellBlock final : public ElementBlock {
   std::vector<Index> conn_;
   std::vector<Id> ids_;
   std::vector<Real> area0_;
-  std::vector<Real> stress_;  // element-major, then point, then component
+  std::vector<State> state_;  ///< the law's state, element-major, then point
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
 };
+
+/// The elastic shell block (*MAT_ELASTIC).
+using ShellBlock = BasicShellBlock<ElasticShell>;
 
 }  // namespace slideline

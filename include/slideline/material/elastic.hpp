@@ -6,22 +6,27 @@
 
 #include "slideline/core/tensor3.hpp"
 #include "slideline/core/types.hpp"
+#include "slideline/material/solid_material.hpp"
 
 namespace slideline {
 
-class ElasticSolid {
+/// A SolidMaterial (solid_material.hpp) without state: the stress is a function of F alone.
+class ElasticSolid : public IsotropicModuli {
  public:
-  ElasticSolid(Real density, Real youngs, Real poisson)
-      : rho_(density), e_(youngs), nu_(poisson) {
-    mu_ = e_ / (2.0 * (1.0 + nu_));
-    lambda_ = e_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_));
-  }
+  template <class T>
+  using State = NoState<T>;
 
-  Real density() const { return rho_; }
-  Real shear_modulus() const { return mu_; }
-  Real lame_lambda() const { return lambda_; }
-  Real youngs_modulus() const { return e_; }
-  Real wave_speed() const { return std::sqrt((lambda_ + 2.0 * mu_) / rho_); }
+  /// `density` mass/length^3, `youngs` force/length^2, `poisson` in (-1, 0.5).
+  ElasticSolid(Real density, Real youngs, Real poisson)
+      : IsotropicModuli(density, youngs, youngs / (2.0 * (1.0 + poisson)),
+                        youngs * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson))) {}
+
+  /// The SolidMaterial step: the Cauchy stress at F (the rate of deformation and dt do not enter).
+  template <class T>
+  Tensor3<T> update(State<T>& /*state*/, const Tensor3<T>& F, const Tensor3<T>& /*D*/,
+                    Real /*dt*/) const {
+    return cauchy_stress(F);
+  }
 
   /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
   Mat3 cauchy_stress(const Mat3& F) const { return to_mat3(cauchy_stress(to_tensor3(F))); }
@@ -34,10 +39,11 @@ class ElasticSolid {
     for (int i = 0; i < 3; ++i) E[i][i] -= 1.0;
     for (auto& row : E)
       for (T& v : row) v *= 0.5;
+    const Real mu = shear_modulus(), lambda = lame_lambda();
     Tensor3<T> S;
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) S[i][j] = 2.0 * mu_ * E[i][j];
-    const T lambda_tr_e = lambda_ * (E[0][0] + E[1][1] + E[2][2]);
+      for (int j = 0; j < 3; ++j) S[i][j] = 2.0 * mu * E[i][j];
+    const T lambda_tr_e = lambda * (E[0][0] + E[1][1] + E[2][2]);
     for (int i = 0; i < 3; ++i) S[i][i] += lambda_tr_e;
     const Tensor3<T> fs = product(F, S);
     const T inv_j = 1.0 / determinant(F);
@@ -49,9 +55,6 @@ class ElasticSolid {
       }
     return s;
   }
-
- private:
-  Real rho_, e_, nu_, mu_, lambda_;
 };
 
 }  // namespace slideline

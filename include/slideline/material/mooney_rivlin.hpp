@@ -13,24 +13,27 @@
 
 #include "slideline/core/tensor3.hpp"
 #include "slideline/core/types.hpp"
+#include "slideline/material/solid_material.hpp"
 
 namespace slideline {
 
-class MooneyRivlin {
+/// A SolidMaterial (solid_material.hpp) without state: the stress is a function of F alone. Its
+/// small-strain constants: G = 2 (A + B), lambda = 2 G nu / (1 - 2 nu), E = 2 G (1 + nu).
+class MooneyRivlin : public IsotropicModuli {
  public:
-  MooneyRivlin(Real density, Real a, Real b, Real poisson)
-      : rho_(density), a_(a), b_(b), nu_(poisson) {
-    c_ = 0.5 * a_ + b_;
-    d_ = (a_ * (5.0 * nu_ - 2.0) + b_ * (11.0 * nu_ - 5.0)) / (2.0 * (1.0 - 2.0 * nu_));
-  }
+  template <class T>
+  using State = NoState<T>;
 
-  Real density() const { return rho_; }
-  /// Small-strain shear modulus 2 (A + B).
-  Real shear_modulus() const { return 2.0 * (a_ + b_); }
-  Real lame_lambda() const { return 2.0 * shear_modulus() * nu_ / (1.0 - 2.0 * nu_); }
-  Real youngs_modulus() const { return 2.0 * shear_modulus() * (1.0 + nu_); }
-  /// Small-strain dilatational wave speed sqrt((lambda + 2G) / rho).
-  Real wave_speed() const { return std::sqrt((lame_lambda() + 2.0 * shear_modulus()) / rho_); }
+  /// `density` mass/length^3, `a`, `b` force/length^2, `poisson` in (-1, 0.5).
+  MooneyRivlin(Real density, Real a, Real b, Real poisson)
+      : MooneyRivlin(density, a, b, poisson, 2.0 * (a + b)) {}
+
+  /// The SolidMaterial step: the Cauchy stress at F (the rate of deformation and dt do not enter).
+  template <class T>
+  Tensor3<T> update(State<T>& /*state*/, const Tensor3<T>& F, const Tensor3<T>& /*D*/,
+                    Real /*dt*/) const {
+    return cauchy_stress(F);
+  }
 
   /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
   Mat3 cauchy_stress(const Mat3& F) const { return to_mat3(cauchy_stress(to_tensor3(F))); }
@@ -63,7 +66,15 @@ class MooneyRivlin {
   }
 
  private:
-  Real rho_, a_, b_, nu_, c_, d_;
+  /// `g` = 2 (A + B), the small-strain shear modulus.
+  MooneyRivlin(Real density, Real a, Real b, Real poisson, Real g)
+      : IsotropicModuli(density, 2.0 * g * (1.0 + poisson), g, 2.0 * g * poisson / (1.0 - 2.0 * poisson)),
+        a_(a),
+        b_(b),
+        c_(0.5 * a + b),
+        d_((a * (5.0 * poisson - 2.0) + b * (11.0 * poisson - 5.0)) / (2.0 * (1.0 - 2.0 * poisson))) {}
+
+  Real a_, b_, c_, d_;
 };
 
 }  // namespace slideline

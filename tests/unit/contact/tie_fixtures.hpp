@@ -35,10 +35,7 @@ inline std::unique_ptr<ElementBlock> elastic_hexes(Id pid, const TieBox& b, Real
 /// Shells on the quads `conn` (4 per element).
 inline std::unique_ptr<ElementBlock> elastic_shells(Id pid, std::vector<Index> conn, Real rho, Real E, Real nu,
                                                     Real t) {
-  ShellMaterial m;
-  m.density = rho;
-  m.youngs = E;
-  m.poisson = nu;
+  const ElasticShell m(rho, E, nu);
   ShellSection s;
   s.thickness = t;
   std::vector<Id> ids(conn.size() / 4);

@@ -59,7 +59,7 @@ ShellBlock make_block(const ShellMesh& m, Real qhg = 0.1, int nip = 5,
   sec.nip = nip;
   sec.rule = rule;
   sec.hourglass_coefficient = qhg;
-  return ShellBlock(7, ShellMaterial{kRho, kE, kNu}, sec, m.conn, m.ids);
+  return ShellBlock(7, ElasticShell(kRho, kE, kNu), sec, m.conn, m.ids);
 }
 
 Real evaluate(ShellBlock& b, NodalFields& n, CornerBuffer& c, Real dt) {
@@ -277,7 +277,7 @@ TEST(ShellBlock, ReportedStepIsStable) {
         sec.thickness = t;
         sec.hourglass_coefficient = 0.0;
         sec.bulk = BulkViscosity{0.0, 0.0};
-        ShellBlock b(1, ShellMaterial{kRho, kE, nu}, sec, m.conn, m.ids);
+        ShellBlock b(1, ElasticShell(kRho, kE, nu), sec, m.conn, m.ids);
         CornerBuffer c;
         test_support::prepare(b, m.nodes, c);
         const Real h = 1e-7;

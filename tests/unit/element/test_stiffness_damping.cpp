@@ -161,11 +161,11 @@ TEST(HexStiffnessDamping, StepShrinksToTheDampedLimit) {
 
 TEST(HexStiffnessDamping, FactoryPassesTheCoefficientAndRejectsANegativeOne) {
   HexGrid g = hex_grid(1, 1, 1, 1.0, 0.0);
-  auto b = make_hex_block(1, ElasticSolidSpec{kRho, kE, kNu}, {}, {}, g.conn, g.ids, {kBeta});
+  auto b = make_hex_block(1, ElasticSolid(kRho, kE, kNu), {}, {}, g.conn, g.ids, {kBeta});
   const auto* hex = dynamic_cast<const HexBlock<ElasticSolid>*>(b.get());
   ASSERT_NE(hex, nullptr);
   EXPECT_EQ(hex->stiffness_damping().beta, kBeta);
-  EXPECT_THROW(make_hex_block(1, ElasticSolidSpec{kRho, kE, kNu}, {}, {}, g.conn, g.ids, {-1.0}), InputError);
+  EXPECT_THROW(make_hex_block(1, ElasticSolid(kRho, kE, kNu), {}, {}, g.conn, g.ids, {-1.0}), InputError);
 }
 
 namespace {
@@ -204,7 +204,7 @@ std::unique_ptr<ElementBlock> shell_block(const ShellGrid& g, Real beta) {
   sec.thickness = kT;
   sec.hourglass_coefficient = 0.0;
   sec.bulk = BulkViscosity{0.0, 0.0};
-  return make_shell_block(1, ShellMaterial{kRho, kE, kNu}, sec, g.conn, g.ids, StiffnessDamping{beta});
+  return make_shell_block(1, ElasticShell(kRho, kE, kNu), sec, g.conn, g.ids, StiffnessDamping{beta});
 }
 
 }  // namespace
@@ -247,7 +247,7 @@ TEST(ShellStiffnessDamping, PowerIsTheWorkRateOfTheDampingForcesAndMoments) {
 // Square shells of side h: len = h / sqrt(2) (area over the diagonal), c the plate wave speed.
 TEST(ShellStiffnessDamping, StepShrinksToTheDampedLimit) {
   const Real h = 0.25, len = h / std::sqrt(2.0);
-  const Real c = ShellMaterial{kRho, kE, kNu}.wave_speed();
+  const Real c = ElasticShell(kRho, kE, kNu).wave_speed();
   ShellGrid g = shell_grid(2, 2, h);
   auto plain = shell_block(g, 0.0);
   EXPECT_NEAR(evaluate(*plain, g.nodes).dt, len / c, 1e-12 * len / c);

@@ -25,7 +25,7 @@ void unit_hex(Simulation& sim) {
     sim.nodes.x.set(i, Vec3(xs[i][0], xs[i][1], xs[i][2]));
   }
   HexHourglass hg;
-  sim.blocks.push_back(make_hex_block(3, ElasticSolidSpec{1.0, 1000.0, 0.3}, hg, BulkViscosity{1.5, 0.06},
+  sim.blocks.push_back(make_hex_block(3, ElasticSolid(1.0, 1000.0, 0.3), hg, BulkViscosity{1.5, 0.06},
                                       {0, 1, 2, 3, 4, 5, 6, 7}, {7}));
   SupportGroup g;
   g.name = "bottom";

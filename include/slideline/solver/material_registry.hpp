@@ -1,0 +1,26 @@
+#pragma once
+/// The material registry: the one place that maps a deck's material card (model::Material) to the
+/// law its elements run (material/laws.hpp). It visits the card with one case per alternative and
+/// no generic case, so a material added to model::Material without a case here does not compile.
+#include <optional>
+
+#include "slideline/material/laws.hpp"
+#include "slideline/model/model.hpp"
+
+namespace slideline {
+
+/// What the elements of a part made of one material run.
+struct MaterialLaws {
+  std::optional<SolidLaw> solid;  ///< the law of hexahedra; empty: not available for solids
+  std::optional<ShellLaw> shell;  ///< the law of shells; empty: not available for shells
+  /// *MAT_RIGID: no deformable law. The part becomes one rigid body (solver/rigid_body.hpp) made
+  /// from the card itself; E and PR set only its contact stiffness and time step.
+  bool rigid = false;
+  const char* keyword = "";  ///< the card, for messages: "*MAT_ELASTIC"
+};
+
+/// The laws of `material`. Its constants are taken as they are: the deck's values are checked
+/// before (validate_model, the builder), with the file and line of the card.
+MaterialLaws material_laws(const model::Material& material);
+
+}  // namespace slideline
