@@ -302,18 +302,23 @@ void Simulation::compute_external_forces() {
 }
 
 void Simulation::apply_contact_forces() {
-  dt_crit_ = dt_elements_;
-  if (contacts.empty()) return;
-  const auto t0 = std::chrono::steady_clock::now();
-  // Birth and death (BT, DT): the interfaces that act in the cycle from t_ (contact_manager.hpp).
-  if (contacts.update_activity(t_)) classify_contact_nodes();
-  nodes.f_contact.fill(0.0);
-  if (has_rotations_) nodes.m_contact.fill(0.0);
-  // The coming step is not known yet (the interfaces vote for it here).
-  const StepTimes times{t_, dt_, 0.0, 0.0, cycle_};
-  const Real dtc = contacts.apply_forces(nodes, times, ContactForceView{nodes.f_contact, nodes.m_contact});
-  dt_crit_ = std::min(dt_crit_, dtc);
-  contact_seconds_ += seconds_since(t0);
+  Real dt_contact = std::numeric_limits<Real>::max();
+  if (!contacts.empty()) {
+    const auto t0 = std::chrono::steady_clock::now();
+    // Birth and death (BT, DT): the interfaces that act in the cycle from t_ (contact_manager.hpp).
+    if (contacts.update_activity(t_)) classify_contact_nodes();
+    nodes.f_contact.fill(0.0);
+    if (has_rotations_) nodes.m_contact.fill(0.0);
+    // The coming step is not known yet (the interfaces vote for it here).
+    const StepTimes times{t_, dt_, 0.0, 0.0, cycle_};
+    dt_contact = contacts.apply_forces(nodes, times, ContactForceView{nodes.f_contact, nodes.m_contact});
+    contact_seconds_ += seconds_since(t0);
+  }
+  // Exchange points 1 and 2 (exchange.hpp): the forces of shared nodes, the step over all processes.
+  exchange_->sum_forces(nodes);
+  const StepVotes votes = exchange_->min_dt(StepVotes{dt_elements_, dt_contact});
+  dt_elements_ = votes.elements;
+  dt_crit_ = votes.stable();
 }
 
 // ---- The step --------------------------------------------------------------------------------
@@ -675,8 +680,11 @@ void Simulation::update_velocities(const StepPlan& plan) {
     book_dictated_nodes(plan);
     total += dictated_sums_;
   }
+  // Exchange point 3 (exchange.hpp): the energy sums over all processes.
+  Real friction = contacts.friction_work();
+  exchange_->sum_energies(total, friction);
   ledger_.book(total, first);
-  ledger_.set_friction(contacts.friction_work());
+  ledger_.set_friction(friction);
 }
 
 void Simulation::book_dictated_nodes(const StepPlan& plan) {

@@ -24,6 +24,7 @@
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/solver/boundary.hpp"
 #include "slideline/solver/energy_ledger.hpp"
+#include "slideline/solver/exchange.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
 #include "slideline/solver/part_energy_monitor.hpp"
 
@@ -156,6 +157,8 @@ class Simulation {
   std::string locate_non_finite() const;
   std::string describe_node(Index i) const;
 
+  /// Where a distributed run exchanges data (exchange.hpp); one process here.
+  std::unique_ptr<Exchange> exchange_ = std::make_unique<SingleProcessExchange>();
   CornerBuffer corners_;
   std::vector<Real> alpha_;             // per-node mass-damping coefficient
   std::vector<std::uint8_t> fixed_[3];  // per axis: 1 if a support prescribes this component
