@@ -18,11 +18,16 @@
 
 namespace slideline {
 
+class ElementBlock;
+
 /// The stable steps the force evaluation votes for (unscaled, time): the elements' and the
-/// contact interfaces' (+max when no interface votes). The step is the smaller of the two.
+/// contact interfaces' (the largest finite number when no interface votes). The step is the
+/// smaller of the two.
 struct StepVotes {
   Real elements = 0.0;
   Real contact = 0.0;
+  /// The block whose element sets `elements` (null when none does on this process), for messages.
+  const ElementBlock* block = nullptr;
   /// The stable step (the smaller vote).
   Real stable() const { return contact < elements ? contact : elements; }
   /// True when an interface, not an element, sets the step.
@@ -35,7 +40,8 @@ class Exchange {
   /// Completes the internal and contact forces and moments (f_int, m_int, f_contact, m_contact)
   /// of the nodes shared with other processes, after the corner gather and the contact forces.
   virtual void sum_forces(NodalFields& nodes) = 0;
-  /// The votes' minima over all processes (each component reduced on its own).
+  /// The votes' minima over all processes (elements and contact each reduced on its own; `block`
+  /// stays this process's).
   virtual StepVotes min_dt(const StepVotes& local) = 0;
   /// Adds the energy sums of all processes into `sums` (the nodal sums of one velocity update)
   /// and `friction` (the interfaces' running friction dissipation).
