@@ -36,6 +36,12 @@ namespace slideline {
 
 class Simulation {
  public:
+  Simulation() = default;
+  /// A simulation whose exchange points (exchange.hpp: the force gather, the dt reduction, the
+  /// energy sums) go through `exchange`, e.g. a distributed run's; null means one process.
+  explicit Simulation(std::unique_ptr<Exchange> exchange)
+      : exchange_(exchange ? std::move(exchange) : std::make_unique<SingleProcessExchange>()) {}
+
   NodalFields nodes;
   std::vector<std::unique_ptr<ElementBlock>> blocks;
   std::vector<std::unique_ptr<NodalConstraint>> constraints;  ///< rigid parts
