@@ -6,6 +6,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
+#include "slideline/solver/total_force.hpp"
 
 namespace slideline {
 
@@ -26,15 +27,13 @@ struct ConstraintLoads {
 
   Vec3 force(Index i) const {
     if (total_force != nullptr) return total_force->get(i);
-    return {nodes.f_int.x[i] + nodes.f_ext.x[i] + nodes.f_contact.x[i],
-            nodes.f_int.y[i] + nodes.f_ext.y[i] + nodes.f_contact.y[i],
-            nodes.f_int.z[i] + nodes.f_ext.z[i] + nodes.f_contact.z[i]};
+    return {slideline::total_force(nodes, 0, i), slideline::total_force(nodes, 1, i),
+            slideline::total_force(nodes, 2, i)};
   }
   Vec3 moment(Index i) const {
     if (total_moment != nullptr) return total_moment->get(i);
-    return {nodes.m_int.x[i] + nodes.m_ext.x[i] + nodes.m_contact.x[i],
-            nodes.m_int.y[i] + nodes.m_ext.y[i] + nodes.m_contact.y[i],
-            nodes.m_int.z[i] + nodes.m_ext.z[i] + nodes.m_contact.z[i]};
+    return {slideline::total_moment(nodes, 0, i), slideline::total_moment(nodes, 1, i),
+            slideline::total_moment(nodes, 2, i)};
   }
 };
 

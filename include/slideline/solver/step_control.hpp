@@ -35,4 +35,13 @@ inline StepChoice step_towards(Real t, Real target, Real dt_stable, Real tol) {
   return {remaining / steps, false};
 }
 
+/// The first output time strictly after `after` (0 when `after` < 0, i.e. nothing was written
+/// yet): output times are exact multiples of `interval` (> 0), and a time that already sits on a
+/// multiple, to round-off, counts as that multiple.
+inline Real next_output_time(Real interval, Real after) {
+  if (after < 0.0) return 0.0;
+  const Real k = std::floor(after / interval + 1e-9) + 1.0;
+  return k * interval;
+}
+
 }  // namespace slideline

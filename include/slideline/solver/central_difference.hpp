@@ -1,0 +1,41 @@
+#pragma once
+/// The central-difference update of the nodal state, as free functions of their inputs:
+///   a^n = F^n / m;  v^{n+1/2} = ((1 - h) v^{n-1/2} + dt_avg a^n) / (1 + h), h = alpha dt_avg / 2;
+///   x^{n+1} = x^n + dt_next v^{n+1/2}.
+/// The velocity update also forms the cycle's energy sums: the audit needs v^{n-1/2}, v^{n+1/2}
+/// and the forces of each node together, and one pass over the nodal arrays is cheaper than two.
+#include <span>
+
+#include "slideline/core/types.hpp"
+#include "slideline/mesh/nodal_fields.hpp"
+#include "slideline/solver/energy_ledger.hpp"
+#include "slideline/solver/node_roles.hpp"
+#include "slideline/solver/simulation_controls.hpp"
+
+namespace slideline {
+
+/// a = F / m and, for nodes with rotations, alpha = M / I, from the total loads (total_force.hpp;
+/// contact loads read only `with_contact`). Nodes without mass (inertia) get zero.
+void form_accelerations(NodalFields& nodes, bool with_contact, bool rotations);
+
+/// The step of one velocity update.
+struct VelocityStep {
+  Real dt_prev = 0.0;  ///< t^n - t^{n-1} (0 on the first cycle)
+  Real dt_avg = 0.0;   ///< the velocity step (StepPlan::dt_avg)
+  Real dt_next = 0.0;  ///< t^{n+1} - t^n
+  bool first = false;  ///< the first cycle: the kinetic energy is that of v(0) itself
+  bool with_contact = false;
+};
+
+/// v^{n+1/2} and omega^{n+1/2} of every node with mass except tied slaves (kDictated), damped by
+/// `damping` (1/time, per node); components a support fixes take the acceleration in `nodes.a`
+/// undamped, rotations a support fixes are zeroed. Returns the energy sums of the cycle (work
+/// halves of each force, kinetic energy at t^n), summed per chunk into `chunk_sums` (size
+/// chunk_count(n)) and then in chunk order, so that the sums do not depend on the thread count.
+NodalEnergySums update_velocities(NodalFields& nodes, const NodeRoles& roles, std::span<const Real> damping,
+                                  const VelocityStep& step, std::span<NodalEnergySums> chunk_sums);
+
+/// x^{n+1} = x^n + dt v^{n+1/2}.
+void update_positions(NodalFields& nodes, Real dt);
+
+}  // namespace slideline

@@ -1,0 +1,111 @@
+// Simulation: the force assembly at t^n. Element, external and contact forces into their own
+// buffers (f_int, f_ext, f_contact and the moments), and the stable step they vote for, returned
+// as a value (the one place the step is decided; plan_step() scales it).
+#include <chrono>
+#include <limits>
+
+#include "slideline/core/error.hpp"
+#include "slideline/core/parallel.hpp"
+#include "slideline/solver/simulation.hpp"
+
+namespace slideline {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+StepVotes Simulation::assemble_forces() {
+  StepVotes local;
+  local.elements = compute_internal_forces(local.block);
+  compute_external_forces();
+  local.contact = apply_contact_forces();
+  // Exchange points 1 and 2 (exchange.hpp): the forces of shared nodes, the step over all processes.
+  exchange_->sum_forces(nodes);
+  return exchange_->min_dt(local);
+}
+
+Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Real dtc = std::numeric_limits<Real>::max();
+  BlockEnergy be;
+  controlling = nullptr;
+  try {
+    Real dt_other = std::numeric_limits<Real>::max();  // steps of blocks that do not bound it
+    const ElementBlock* controlling_other = nullptr;
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      const auto& b = blocks[k];
+      BlockEnergy bk;
+      const Real d = b->compute_forces(nodes, dt_, corners_, bk);
+      be += bk;
+      part_energy_.add(k, bk, cycle_ == 0 ? 0.0 : dt_);
+      if (b->bounds_time_step()) {
+        if (d < dtc) controlling = b.get();
+        dtc = std::min(dtc, d);
+      } else {
+        if (d < dt_other) controlling_other = b.get();
+        dt_other = std::min(dt_other, d);
+      }
+    }
+    if (dtc == std::numeric_limits<Real>::max()) {
+      dtc = dt_other;
+      controlling = controlling_other;
+    }
+  } catch (const InstabilityError& e) {
+    throw InstabilityError(std::string(e.what()) + " at t = " + std::to_string(t_) +
+                               ", cycle " + std::to_string(cycle_),
+                           t_, cycle_);
+  }
+  corners_.gather(nodes.f_int, nodes.m_int);
+  element_seconds_ += seconds_since(t0);
+  // Element powers at t^n, integrated over the step that ends at t^n.
+  ledger_.add_element_powers(be.hourglass_power, be.viscous_power, be.damping_power,
+                             cycle_ == 0 ? 0.0 : dt_);
+  return dtc;
+}
+
+void Simulation::compute_external_forces() {
+  // In parallel: serial node loops here would cap the two-thread speed-up.
+  const Index n = static_cast<Index>(nodes.size());
+  const bool rotations = has_rotations_;
+  parallel_for(n, [&](Index i) {
+    nodes.f_ext.x[i] = 0.0;
+    nodes.f_ext.y[i] = 0.0;
+    nodes.f_ext.z[i] = 0.0;
+    if (rotations) {
+      nodes.m_ext.x[i] = 0.0;
+      nodes.m_ext.y[i] = 0.0;
+      nodes.m_ext.z[i] = 0.0;
+    }
+  });
+  for (const auto& bl : body_loads) {
+    const Real acc = bl.scale * bl.curve(t_);
+    auto& f = nodes.f_ext[static_cast<int>(bl.axis)];
+    // bl.nodes is unique, so the iterations write distinct entries.
+    parallel_for(static_cast<Index>(bl.nodes.size()),
+                 [&](Index k) { f[bl.nodes[k]] += bl.mass[k] * acc; });
+  }
+  // Serial and in card order: a node may appear in several loads (same sum for any thread count).
+  for (const auto& nl : nodal_loads) {
+    const Real v = nl.scale * nl.curve(t_);
+    auto& f = nl.moment ? nodes.m_ext[static_cast<int>(nl.axis)] : nodes.f_ext[static_cast<int>(nl.axis)];
+    for (Index i : nl.nodes) f[i] += v;
+  }
+}
+
+Real Simulation::apply_contact_forces() {
+  if (!has_contact()) return std::numeric_limits<Real>::max();
+  const auto t0 = std::chrono::steady_clock::now();
+  // Birth and death (BT, DT): the interfaces that act in the cycle from t_ (contact_manager.hpp).
+  if (contacts.update_activity(t_)) classify_contact_nodes();
+  nodes.f_contact.fill(0.0);
+  if (has_rotations_) nodes.m_contact.fill(0.0);
+  // The coming step is not known yet (the interfaces vote for it here).
+  const StepTimes times{t_, dt_, 0.0, 0.0, cycle_};
+  const Real dtc = contacts.apply_forces(nodes, times, ContactForceView{nodes.f_contact, nodes.m_contact});
+  contact_seconds_ += seconds_since(t0);
+  return dtc;
+}
+
+}  // namespace slideline
