@@ -90,7 +90,7 @@ struct SlidingOnlyKind {
 };
 
 template <class Kind>
-class LagrangeInterface final : public ContactAlgorithm {
+class LagrangeInterface final : public ContactAlgorithm, public ContactConstraint {
  public:
   /// master: the master surface; slaves: slave node indices; slave_surface: the surface the slaves
   /// come from (empty for a node set); first_part_nodes: nodes of the first body, for the
@@ -104,6 +104,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   }
 
   const std::string& name() const override { return s_.title; }
+  ContactPhases phases() override { return {.constraint = this}; }
 
   /// The faces that orient node-set slaves (Type 5: the exterior faces of the parts the nodes
   /// belong to; search/slave_orientation.hpp); set before initialize(). Slaves of a slave
