@@ -1,25 +1,13 @@
 // Types 3, 5, 10 and 12 with Lagrange-multiplier enforcement (the _LAGRANGE keyword suffix):
-// the card's sides and options become a LagrangeContact (contact/lagrange_contact.hpp).
+// the resolved card (InterfaceSpec) becomes a LagrangeContact (contact/lagrange_contact.hpp).
 #include <variant>
 
 #include "slideline/contact/lagrange_contact.hpp"
 #include "slideline/contact/make_contact_interface.hpp"
-#include "slideline/core/error.hpp"
-#include "slideline/solver/build.hpp"
 
 namespace slideline {
 
 namespace {
-
-ExponentialCoulomb friction_of(const model::Contact& card) {
-  if (card.fs < 0.0 || card.fd < 0.0 || card.dc < 0.0)
-    throw InputError(describe(card.src) + ": " + card.keyword + ": FS, FD and DC must not be negative");
-  ExponentialCoulomb f;
-  f.mu_s = card.fs;
-  f.mu_k = card.fd > 0.0 ? card.fd : card.fs;  // FD = 0: constant coefficient FS
-  f.beta = card.dc;
-  return f;
-}
 
 /// Translations held by the *MAT_RIGID constraints (CMO = +1, CON1 coded as in LS-DYNA: 1 x,
 /// 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 xyz) of every rigid part; the builder has validated the codes.
@@ -37,48 +25,33 @@ std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations(const mo
 
 }  // namespace
 
-std::unique_ptr<ContactAlgorithm> make_lagrange_contact(const model::Contact& card, const std::string& title,
-                                                        const ContactBuildContext& ctx) {
-  using T = model::ContactType;
-  if (card.type != T::surface_to_surface && card.type != T::one_way && card.type != T::nodes_to_surface &&
-      card.type != T::automatic)
-    throw_contact_not_implemented(card);
-  if (card.sliding_only_option)
-    throw_contact_not_implemented(card, "the sliding-only option with Lagrange enforcement is not implemented");
-  if (card.vc != 0.0 || card.vdc != 0.0)
-    throw_contact_not_implemented(card, "viscous friction (VC) and viscous damping (VDC) with Lagrange enforcement");
-  const bool automatic = card.type == T::automatic;
-  ContactSide slave = resolve_contact_side(card, true, ctx);
-  // Type 12 (single surface): every node a slave, every segment a master, unless a master side
-  // is given.
-  ContactSide master = (automatic && card.msid == 0) ? slave : resolve_contact_side(card, false, ctx);
-  if (master.surface.segment_count() == 0)
-    throw InputError(describe(card.src) + ": MSID of " + card.keyword + " selects no master segments");
-
+std::unique_ptr<ContactAlgorithm> make_lagrange_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  const bool automatic = spec.type == model::ContactType::automatic;
   LagrangeContactSettings s;
-  s.title = title;
-  s.friction = friction_of(card);
-  s.shell_offsets = automatic || ctx.model.control_contact.shlthk >= 1;
-  s.slave_thickness = card.sst;
-  s.master_thickness = card.mst;
-  s.slave_thickness_scale = card.sfst;
-  s.master_thickness_scale = card.sfmt;
-  // Node-set slaves (Type 5) stand off by the nodal radius, else half the SST thickness.
-  if (slave.surface.nodes.empty()) s.nodal_radius = card.radius > 0.0 ? card.radius : 0.5 * card.sst;
+  s.title = spec.title;
+  s.friction = spec.friction;
+  s.shell_offsets = spec.slave_shells.on;
+  s.slave_thickness = spec.slave_shells.thickness;
+  s.master_thickness = spec.master_shells.thickness;
+  s.slave_thickness_scale = spec.slave_shells.scale;
+  s.master_thickness_scale = spec.master_shells.scale;
+  // Node-set slaves stand off by the nodal radius; surface slaves by their shell offsets only
+  // (penalty Type 5 takes the larger of the two: docs/contact.md, "Offsets").
+  if (spec.node_set_slaves) s.nodal_radius = spec.nodal_radius;
   s.skip_incident = automatic;
   s.one_constraint_per_mutual_pair = automatic;  // no over-constrained pairs (lagrange_contact.hpp)
   s.rigid_fixed_translations = rigid_fixed_translations(ctx.model);
-  s.transmitted_output = automatic;
+  s.transmitted_output = spec.transmitted_output;
   std::vector<Index> first;
-  if (automatic && !slave.parts.empty())
-    first = ctx.sets.nodes_of_part(slave.parts.front(), describe(card.src) + ": SSID of " + card.keyword);
+  if (automatic && !spec.slave.parts.empty())
+    first = ctx.sets.nodes_of_part(spec.slave.parts.front(), spec.where + ": SSID");
   // Node-set slaves (Type 5) are oriented by the faces of the parts they lie on
   // (search/slave_orientation.hpp); a slave surface orients its own nodes.
   Surface faces;
-  if (slave.surface.nodes.empty())
-    faces = node_set_faces(slave.nodes, ctx, describe(card.src) + ": SSID of " + card.keyword);
-  auto contact = std::make_unique<LagrangeContact>(std::move(s), std::move(master.surface), std::move(slave.nodes),
-                                                   std::move(slave.surface), std::move(first));
+  if (spec.node_set_slaves) faces = node_set_faces(spec.slave.nodes, ctx, spec.where + ": SSID");
+  auto contact = std::make_unique<LagrangeContact>(std::move(s), std::move(spec.master.surface),
+                                                   std::move(spec.slave.nodes), std::move(spec.slave.surface),
+                                                   std::move(first));
   contact->set_orientation_surface(std::move(faces));
   return contact;
 }

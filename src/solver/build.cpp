@@ -10,6 +10,7 @@
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/core/overloaded.hpp"
+#include "slideline/core/source_location.hpp"
 #include "slideline/element/block_factory.hpp"
 #include "slideline/solver/material_registry.hpp"
 #include "slideline/solver/rigid_body.hpp"
@@ -18,10 +19,7 @@
 
 namespace slideline {
 
-std::string describe(const model::Source& src) {
-  if (src.line <= 0) return src.file.empty() ? "(generated)" : src.file;
-  return (src.file.empty() ? std::string("deck") : src.file) + ":" + std::to_string(src.line);
-}
+std::string describe(const model::Source& src) { return describe_location(src.file, src.line); }
 
 namespace {
 
@@ -685,8 +683,9 @@ struct Builder {
         throw InputError(describe(card.src) + ": contact title '" + title +
                          "' is used by an earlier contact; output channels need distinct titles");
       titles.push_back(title);
+      InterfaceSpec spec = resolve_interface(card, k + 1, ctx);
       // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
-      sim->contacts.add(make_contact_interface(card, k + 1, ctx), ContactWindow{card.bt, card.dt});
+      sim->contacts.add(make_contact_interface(spec, ctx), spec.window);
     }
   }
 };

@@ -1,13 +1,14 @@
 #pragma once
-/// The plug-in point for contact: one final class per interface type implements ContactAlgorithm.
-/// The simulation calls a few virtual functions per interface and cycle (none per node), through
-/// the ContactManager, in the phases of docs/solver.md:
+/// The plug-in point for contact: one final class per interface type implements ContactAlgorithm
+/// (what every family offers) and one role interface (its family's hooks). The simulation calls a
+/// few virtual functions per interface and cycle (none per node), through the ContactManager, in
+/// the phases of docs/solver.md:
 ///
-///   apply_contact_forces:  apply_forces      (penalty, friction: into f_contact / m_contact)
-///   apply_constraints:     condense          (kinematic ties: slave mass and force -> masters)
-///                          enforce           (Lagrange multipliers: forces at predicted x^{n+1})
-///   update_velocities:     follow_velocities (kinematic ties: slave velocity from the masters)
-///   update_positions:      follow_positions  (kinematic ties: slave position from the masters)
+///   apply_contact_forces:  ContactForces::apply_forces          (penalty, tiebreak)
+///   apply_constraints:     KinematicTie::condense               (ties: slave mass and force -> masters)
+///                          ContactConstraint::enforce           (Lagrange multipliers at x^{n+1})
+///   update_velocities:     KinematicTie::follow_velocities      (ties: slave velocity from the masters)
+///   update_positions:      KinematicTie::follow_positions       (ties: slave position from the masters)
 ///
 /// An interface reads the nodal state through const references and writes only its own force
 /// buffer (f_contact, m_contact), or, for constraint interfaces, the accelerations, velocities and
@@ -80,31 +81,68 @@ struct ConstraintView {
   Vec3Field& f_contact;
 };
 
+/// Penalty-type forces at t^n (penalty interfaces, tiebreaks): the apply_contact_forces phase.
+class ContactForces {
+ public:
+  /// Penalty and friction forces at t^n (x^n, v^{n-1/2}) added into `out`.
+  virtual void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) = 0;
+  /// Once, right after initialize() and before the first step: move the nodes the interface found
+  /// below its surface at t = 0 out to it (LS-DYNA's IGNORE = 0), x and x0 together so that no
+  /// element starts strained. Default: nothing (penetrations, if any, stay the interface's business).
+  virtual void resolve_initial_penetrations(NodalFields& /*nodes*/) {}
+
+ protected:
+  ~ContactForces() = default;
+};
+
+/// Lagrange multipliers (Types 3, 5, 10, 12 _LAGRANGE, Type 1): the apply_constraints phase.
+class ContactConstraint {
+ public:
+  virtual void enforce(ConstraintView view, const StepTimes& times) = 0;
+
+ protected:
+  ~ContactConstraint() = default;
+};
+
+/// Kinematic ties (Types 2, 6, 7): slave mass and force condensed onto the masters, slave motion
+/// following them. The simulation keeps effective mass arrays apart from NodalFields::mass while
+/// an interface with this role is active.
+class KinematicTie {
+ public:
+  virtual void condense(const NodalFields& nodes, CondenseView view) = 0;
+  /// After the velocity update: tied slaves take the velocity of their master point.
+  virtual void follow_velocities(NodalFields& nodes) = 0;
+  /// After the position update (and after rigid bodies reset their nodes).
+  virtual void follow_positions(NodalFields& nodes) = 0;
+  /// Nodes whose motion the tie dictates (its slaves): the simulation books the work of the forces
+  /// that move them to the contact term.
+  virtual std::span<const Index> dictated_nodes() const = 0;
+  /// Nodes that receive condensed slave mass and force (its masters): the simulation books the
+  /// work of the tie forces on them to the contact term.
+  virtual std::span<const Index> tie_master_nodes() const = 0;
+
+ protected:
+  ~KinematicTie() = default;
+};
+
+/// The phases an interface takes part in: each family implements one role (null for the others).
+struct ContactPhases {
+  ContactForces* forces = nullptr;
+  ContactConstraint* constraint = nullptr;
+  KinematicTie* tie = nullptr;
+};
+
+/// What every interface family offers; the family-specific hooks are behind phases().
 class ContactAlgorithm {
  public:
   virtual ~ContactAlgorithm() = default;
 
   /// Output title (deck heading, else "contact_<id>").
   virtual const std::string& name() const = 0;
-  /// Once, after masses are lumped and before the first force evaluation.
+  /// Once, after masses are lumped and before the first force evaluation (at birth).
   virtual void initialize(const ContactContext& context) = 0;
-  /// Once, right after initialize() and before the first step: move the nodes the interface found
-  /// below its surface at t = 0 out to it (LS-DYNA's IGNORE = 0), x and x0 together so that no
-  /// element starts strained. Default: nothing (penetrations, if any, stay the interface's business).
-  virtual void resolve_initial_penetrations(NodalFields& /*nodes*/) {}
-
-  /// Penalty and friction forces at t^n (x^n, v^{n-1/2}) added into `out`.
-  virtual void apply_forces(const NodalFields& /*nodes*/, const StepTimes& /*times*/,
-                            ContactForceView /*out*/) {}
-  /// True when the interface condenses tied slaves onto masters (the simulation then keeps
-  /// effective mass arrays apart from NodalFields::mass).
-  virtual bool condenses() const { return false; }
-  virtual void condense(const NodalFields& /*nodes*/, CondenseView /*view*/) {}
-  virtual void enforce(ConstraintView /*view*/, const StepTimes& /*times*/) {}
-  /// After the velocity update: tied slaves take the velocity of their master point.
-  virtual void follow_velocities(NodalFields& /*nodes*/) {}
-  /// After the position update (and after rigid bodies reset their nodes).
-  virtual void follow_positions(NodalFields& /*nodes*/) {}
+  /// The roles this interface plays; the same pointers for the interface's lifetime.
+  virtual ContactPhases phases() = 0;
 
   /// Largest step this interface allows (penalty springs), before the global scale factor.
   virtual Real stable_dt() const { return std::numeric_limits<Real>::max(); }
@@ -113,16 +151,26 @@ class ContactAlgorithm {
   virtual Vec3 master_force() const = 0;
   /// Energy dissipated by friction so far (>= 0), for the energy ledger's friction term.
   virtual Real friction_work() const { return 0.0; }
-  /// Nodes whose motion the interface dictates (tied slaves): the simulation books the work of
-  /// the forces that move them to the contact term.
-  virtual std::span<const Index> dictated_nodes() const { return {}; }
-  /// Nodes that receive condensed slave mass and force (tie masters): the simulation books the
-  /// work of the tie forces on them to the contact term.
-  virtual std::span<const Index> tie_master_nodes() const { return {}; }
   /// Extra 3-vector history channels, named relative to interfaces/<name>/ (e.g.
   /// "transmitted_force"); values written 3 per name into a preallocated span.
   virtual void append_output_names(std::vector<std::string>& /*names*/) const {}
   virtual void write_output_values(std::span<Real> /*out*/) const {}
+
+  /// True when the interface condenses tied slaves onto masters (a KinematicTie).
+  bool condenses() const { return tie() != nullptr; }
+  /// KinematicTie::dictated_nodes(), empty for the other families.
+  std::span<const Index> dictated_nodes() const {
+    const KinematicTie* t = tie();
+    return t ? t->dictated_nodes() : std::span<const Index>{};
+  }
+  /// KinematicTie::tie_master_nodes(), empty for the other families.
+  std::span<const Index> tie_master_nodes() const {
+    const KinematicTie* t = tie();
+    return t ? t->tie_master_nodes() : std::span<const Index>{};
+  }
+
+ private:
+  const KinematicTie* tie() const { return const_cast<ContactAlgorithm*>(this)->phases().tie; }
 };
 
 }  // namespace slideline

@@ -34,6 +34,7 @@ struct ContactWindow {
 class ContactManager {
  public:
   void add(std::unique_ptr<ContactAlgorithm> algorithm, ContactWindow window = {}) {
+    phases_.push_back(algorithm->phases());
     algorithms_.push_back(std::move(algorithm));
     windows_.push_back(window);
     state_.push_back(State::waiting);
@@ -78,7 +79,7 @@ class ContactManager {
     if (changed) {
       condenses_ = false;
       for (std::size_t k = 0; k < algorithms_.size(); ++k)
-        condenses_ = condenses_ || (active(k) && algorithms_[k]->condenses());
+        condenses_ = condenses_ || (active(k) && phases_[k].tie);
     }
     return changed;
   }
@@ -87,7 +88,7 @@ class ContactManager {
   /// at t = 0 only: a later birth takes the geometry as it finds it).
   void resolve_initial_penetrations(NodalFields& nodes) {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
-      if (active(k)) algorithms_[k]->resolve_initial_penetrations(nodes);
+      if (active(k) && phases_[k].forces) phases_[k].forces->resolve_initial_penetrations(nodes);
   }
 
   /// Penalty and friction forces into `out`; returns the smallest stable step the active
@@ -96,26 +97,26 @@ class ContactManager {
     Real dt = std::numeric_limits<Real>::max();
     for (std::size_t k = 0; k < algorithms_.size(); ++k) {
       if (!active(k)) continue;
-      algorithms_[k]->apply_forces(nodes, times, out);
+      if (phases_[k].forces) phases_[k].forces->apply_forces(nodes, times, out);
       dt = std::min(dt, algorithms_[k]->stable_dt());
     }
     return dt;
   }
   void condense(const NodalFields& nodes, CondenseView view) {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
-      if (active(k)) algorithms_[k]->condense(nodes, view);
+      if (active(k) && phases_[k].tie) phases_[k].tie->condense(nodes, view);
   }
   void enforce(ConstraintView view, const StepTimes& times) {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
-      if (active(k)) algorithms_[k]->enforce(view, times);
+      if (active(k) && phases_[k].constraint) phases_[k].constraint->enforce(view, times);
   }
   void follow_velocities(NodalFields& nodes) {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
-      if (active(k)) algorithms_[k]->follow_velocities(nodes);
+      if (active(k) && phases_[k].tie) phases_[k].tie->follow_velocities(nodes);
   }
   void follow_positions(NodalFields& nodes) {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
-      if (active(k)) algorithms_[k]->follow_positions(nodes);
+      if (active(k) && phases_[k].tie) phases_[k].tie->follow_positions(nodes);
   }
   /// Energy dissipated by friction in all interfaces so far (a dead interface keeps its share).
   Real friction_work() const {
@@ -128,6 +129,7 @@ class ContactManager {
  private:
   enum class State : std::uint8_t { waiting, active, dead };
   std::vector<std::unique_ptr<ContactAlgorithm>> algorithms_;
+  std::vector<ContactPhases> phases_;  ///< algorithms_[k]->phases(), read once
   std::vector<ContactWindow> windows_;
   std::vector<State> state_;
   std::optional<ContactContext> context_;

@@ -39,6 +39,7 @@
 #include "slideline/contact/search/fcl_broad_phase.hpp"
 #include "slideline/contact/search/narrow_phase.hpp"
 #include "slideline/contact/search/search_cadence.hpp"
+#include "slideline/contact/shell_offset.hpp"
 #include "slideline/mesh/mesh_sets.hpp"
 
 namespace slideline {
@@ -89,7 +90,7 @@ struct SlidingOnlyKind {
 };
 
 template <class Kind>
-class LagrangeInterface final : public ContactAlgorithm {
+class LagrangeInterface final : public ContactAlgorithm, public ContactConstraint {
  public:
   /// master: the master surface; slaves: slave node indices; slave_surface: the surface the slaves
   /// come from (empty for a node set); first_part_nodes: nodes of the first body, for the
@@ -103,6 +104,7 @@ class LagrangeInterface final : public ContactAlgorithm {
   }
 
   const std::string& name() const override { return s_.title; }
+  ContactPhases phases() override { return {.constraint = this}; }
 
   /// The faces that orient node-set slaves (Type 5: the exterior faces of the parts the nodes
   /// belong to; search/slave_orientation.hpp); set before initialize(). Slaves of a slave
@@ -120,10 +122,8 @@ class LagrangeInterface final : public ContactAlgorithm {
     for (Index s = 0; s < nseg; ++s) {
       const auto cs = segment_corners(master_, s, c.nodes.x);
       min_size = std::min(min_size, std::max((cs[2] - cs[0]).norm(), (cs[3] - cs[1]).norm()));
-      if (s_.shell_offsets && master_.kind[static_cast<std::size_t>(s)] == SegmentKind::shell) {
-        const Real t = s_.master_thickness > 0.0 ? s_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
-        master_offset_[static_cast<std::size_t>(s)] = 0.5 * t * s_.master_thickness_scale;
-      }
+      master_offset_[static_cast<std::size_t>(s)] =
+          segment_offset(master_, s, {s_.shell_offsets, s_.master_thickness, s_.master_thickness_scale});
       max_master_offset = std::max(max_master_offset, master_offset_[static_cast<std::size_t>(s)]);
     }
     if (nseg == 0) min_size = 1.0;
@@ -136,14 +136,7 @@ class LagrangeInterface final : public ContactAlgorithm {
         const auto it = std::lower_bound(slave_surface_.nodes.begin(), slave_surface_.nodes.end(), slaves_[i]);
         if (it == slave_surface_.nodes.end() || *it != slaves_[i]) continue;
         const Index row = static_cast<Index>(it - slave_surface_.nodes.begin());
-        Real off = 0.0;
-        for (Index j = slave_surface_.node_segments.begin(row); j < slave_surface_.node_segments.end(row); ++j) {
-          const auto seg = static_cast<std::size_t>(slave_surface_.node_segments.value[static_cast<std::size_t>(j)]);
-          if (slave_surface_.kind[seg] != SegmentKind::shell || !s_.shell_offsets) continue;
-          const Real t = s_.slave_thickness > 0.0 ? s_.slave_thickness : slave_surface_.thickness[seg];
-          off = std::max(off, 0.5 * t * s_.slave_thickness_scale);
-        }
-        slave_offset_[i] = off;
+        slave_offset_[i] = node_offset(slave_surface_, row, {s_.shell_offsets, s_.slave_thickness, s_.slave_thickness_scale});
       }
     }
     BroadPhaseOptions bo;

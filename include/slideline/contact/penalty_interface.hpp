@@ -27,7 +27,7 @@
 namespace slideline {
 
 template <class Kind, class Friction>
-class PenaltyInterface final : public ContactAlgorithm {
+class PenaltyInterface final : public ContactAlgorithm, public ContactForces {
  public:
   /// One pass (Types 5, 10): the card's slave nodes on its master surface.
   PenaltyInterface(std::string title, std::unique_ptr<PenaltyPass> pass, Friction friction)
@@ -53,6 +53,7 @@ class PenaltyInterface final : public ContactAlgorithm {
 
   const std::string& name() const override { return core_.name(); }
   void initialize(const ContactContext& context) override { core_.initialize(context); }
+  ContactPhases phases() override { return {.forces = this}; }
   void resolve_initial_penetrations(NodalFields& nodes) override { core_.resolve_initial_penetrations(nodes); }
   void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override {
     core_.apply_forces(nodes, times, out, friction_);

@@ -72,7 +72,7 @@ struct TiebreakParameters {
   ExponentialCoulomb friction;
 };
 
-class TiebreakContact final : public ContactAlgorithm {
+class TiebreakContact final : public ContactAlgorithm, public ContactForces {
  public:
   /// slaves: slave node indices (Type 8: a node set; Type 9: the slave surface's nodes);
   /// slave_surface: the slave segments (Type 9; empty for Type 8); master: with adjacency built.
@@ -84,6 +84,7 @@ class TiebreakContact final : public ContactAlgorithm {
   const std::string& name() const override { return name_; }
 
   void initialize(const ContactContext& c) override;
+  ContactPhases phases() override { return {.forces = this}; }
   void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override;
   Real stable_dt() const override { return dt_; }
   Vec3 slave_force() const override { return slave_; }

@@ -40,7 +40,7 @@ struct TiedShellEdgeKind {
 };
 
 template <class Kind>
-class TiedInterface final : public ContactAlgorithm {
+class TiedInterface final : public ContactAlgorithm, public KinematicTie {
  public:
   /// slaves: candidate slave node indices; master: the master surface.
   TiedInterface(std::string name, std::vector<Index> slaves, Surface master, TieSearchOptions options = {})
@@ -72,7 +72,7 @@ class TiedInterface final : public ContactAlgorithm {
     slave_ = master_total_ = Vec3::Zero();
   }
 
-  bool condenses() const override { return true; }
+  ContactPhases phases() override { return {.tie = this}; }
 
   void condense(const NodalFields& /*nodes*/, CondenseView v) override {
     for (std::size_t m = 0; m < masters_.size(); ++m) {  // before: what follows is this tie's

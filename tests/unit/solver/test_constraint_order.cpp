@@ -52,7 +52,7 @@ SupportGroup fixed_group(const std::string& name, const std::vector<Index>& node
 /// Kinematic tie of slave nodes to master points (4 master nodes, bilinear weights), as the
 /// condensation scheme of docs/solver.md prescribes: slave mass and force onto the masters,
 /// slaves follow the masters' velocities and positions (with their initial offsets).
-class StandInTie final : public ContactAlgorithm {
+class StandInTie final : public ContactAlgorithm, public KinematicTie {
  public:
   struct Link {
     Index slave;
@@ -72,7 +72,7 @@ class StandInTie final : public ContactAlgorithm {
     offset_.clear();
     for (const auto& l : links_) offset_.push_back(c.nodes.x.get(l.slave) - point(c.nodes.x, l));
   }
-  bool condenses() const override { return true; }
+  ContactPhases phases() override { return {.tie = this}; }
   void condense(const NodalFields&, CondenseView v) override {
     for (const auto& l : links_) {
       const Real ms = v.mass[l.slave];
@@ -305,11 +305,12 @@ namespace {
 /// Forward-increment Lagrange stand-in: slave nodes may not go below the plane y = y_plane of a
 /// rigid master (whose top nodes are `masters`). Forces that the prediction needs are added as
 /// contact forces on the slaves and, equal and opposite, spread over the master nodes.
-class StandInLagrange final : public ContactAlgorithm {
+class StandInLagrange final : public ContactAlgorithm, public ContactConstraint {
  public:
   StandInLagrange(std::vector<Index> slaves, std::vector<Index> masters, Index plane_node)
       : slaves_(std::move(slaves)), masters_(std::move(masters)), plane_node_(plane_node) {}
   const std::string& name() const override { return name_; }
+  ContactPhases phases() override { return {.constraint = this}; }
   void initialize(const ContactContext&) override {}
   void enforce(ConstraintView v, const StepTimes& t) override {
     slave_ = Vec3::Zero();
@@ -418,10 +419,11 @@ TEST(ConstraintOrder, LagrangeContactPushesAFreeRigidMaster) {
 namespace {
 
 /// A compression-only penalty spring between node pairs along y (slave above master).
-class StandInPenalty final : public ContactAlgorithm {
+class StandInPenalty final : public ContactAlgorithm, public ContactForces {
  public:
   StandInPenalty(std::vector<std::pair<Index, Index>> pairs, Real k) : pairs_(std::move(pairs)), k_(k) {}
   const std::string& name() const override { return name_; }
+  ContactPhases phases() override { return {.forces = this}; }
   void initialize(const ContactContext& c) override {
     Real m = 1e300;
     for (auto [s, ms] : pairs_) m = std::min({m, c.nodes.mass[s], c.nodes.mass[ms]});

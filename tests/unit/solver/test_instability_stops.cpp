@@ -62,8 +62,9 @@ class HiddenPush final : public NodalConstraint {
 };
 
 /// A contact stand-in whose stable step halves every cycle.
-class ShrinkingStep final : public ContactAlgorithm {
+class ShrinkingStep final : public ContactAlgorithm, public ContactForces {
  public:
+  ContactPhases phases() override { return {.forces = this}; }
   const std::string& name() const override { return name_; }
   void initialize(const ContactContext&) override {}
   void apply_forces(const NodalFields&, const StepTimes& t, ContactForceView) override {

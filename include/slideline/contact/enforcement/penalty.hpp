@@ -46,6 +46,7 @@
 #include "slideline/contact/search/search_cadence.hpp"
 #include "slideline/contact/search/segment_tracking.hpp"
 #include "slideline/contact/search/slave_orientation.hpp"
+#include "slideline/contact/shell_offset.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
@@ -69,9 +70,9 @@ enum class PenaltyCoupling : std::uint8_t { node, mortar };
 /// How a pass is set up (the factory fills it from the card).
 struct PenaltyPassOptions {
   Real stiffness_scale = 0.1;        ///< f = SLSFAC x SFS (dimensionless)
-  bool shell_thickness = true;       ///< offset by half the master shell thickness
-  Real master_thickness = 0.0;       ///< > 0: replaces the shells' thickness (MST/SST, length)
-  Real master_thickness_scale = 1.0; ///< SFMT/SFST (dimensionless)
+  /// Offsets of the master's shell segments (shell_offset.hpp): on, thickness MST/SST, scale
+  /// SFMT/SFST.
+  ShellOffsetRule master_shells{true, 0.0, 1.0};
   bool sliding_only = false;         ///< Type 10 "sliding only": no separation once in contact
   bool automatic = false;            ///< Type 12: skip own segments and faces not facing the node
   Real margin_fraction = 0.5;        ///< broad-phase margin = fraction x smallest segment diagonal
@@ -158,11 +159,7 @@ class PenaltyPass {
   void search(const Vec3Field& x);
   void set_depth_limits(const NodalFields& nodes, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
   bool accepted(std::size_t i, Index s, const Vec3Field& x) const;
-  Real master_offset(Index s) const {
-    if (!opt_.shell_thickness || master_.kind[static_cast<std::size_t>(s)] != SegmentKind::shell) return 0.0;
-    const Real t = opt_.master_thickness > 0.0 ? opt_.master_thickness : master_.thickness[static_cast<std::size_t>(s)];
-    return 0.5 * t * opt_.master_thickness_scale;
-  }
+  Real master_offset(Index s) const { return segment_offset(master_, s, opt_.master_shells); }
   void locate(const Vec3Field& x);
   struct CoupledPoint {
     Vec3 dx, dv;     ///< slave minus coupled master point: position (length), velocity

@@ -1,0 +1,113 @@
+#pragma once
+/// InterfaceSpec: a *CONTACT card resolved once, for every interface family (penalty, Lagrange,
+/// tiebreak, kinematic ties). resolve_interface() checks that the (type, enforcement, options)
+/// combination runs here, resolves both sides to surfaces and nodes, and turns the card's fields
+/// into the values the families consume: one shell offset rule per side (shell_offset.hpp), the
+/// nodal radius, one friction law, the stiffness factors, the tiebreak failure data, birth and
+/// death, and the outputs. The factories (src/contact/make_*.cpp) read the spec, never the card.
+/// docs/architecture.md, "The contact pipeline".
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slideline/contact/contact_manager.hpp"
+#include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/shell_offset.hpp"
+#include "slideline/mesh/mesh_sets.hpp"
+#include "slideline/mesh/surface.hpp"
+#include "slideline/model/model.hpp"
+
+namespace slideline {
+
+class ElementBlock;
+
+/// What resolution may use: the card, the deck's contact controls, and the built mesh (element
+/// blocks with their masses lumped is NOT guaranteed: resolution builds geometry only;
+/// mass-dependent data belongs in ContactAlgorithm::initialize).
+struct ContactBuildContext {
+  const model::Model& model;
+  const std::vector<std::unique_ptr<ElementBlock>>& blocks;
+  const NodalFields& nodes;
+  const MeshSets& sets;
+};
+
+/// One side of an interface as the card's SSID/SSTYP (or MSID/MSTYP) select it.
+struct ContactSide {
+  Surface surface;            ///< segments (empty for a node-set side)
+  std::vector<Index> nodes;   ///< the side's nodes: the surface's nodes, or the node set
+  std::vector<Id> parts;      ///< the parts the side was selected by (empty for sets)
+};
+
+/// Tiebreak failure (Types 8 and 9; unused by the other types).
+struct TiebreakFailure {
+  Real normal = 0.0;    ///< NFLF: force (Type 8) or stress (Type 9); <= 0: no normal failure
+  Real shear = 0.0;     ///< SFLF: likewise
+  Real normal_exponent = 2.0;  ///< NEN (Type 8; Type 9 uses 2)
+  Real shear_exponent = 2.0;   ///< MES (Type 8; Type 9 uses 2)
+};
+
+/// A card resolved: everything a family's factory needs.
+struct InterfaceSpec {
+  std::string title;  ///< output title (contact_title)
+  std::string where;  ///< "<file:line>: <keyword>": the start of every message about the card
+  model::ContactType type = model::ContactType::surface_to_surface;
+  model::Enforcement enforcement = model::Enforcement::penalty;
+
+  ContactSide slave;
+  /// The master side; for Type 12 with MSID = 0 (single surface) a copy of the slave side.
+  ContactSide master;
+  bool single_surface = false;  ///< Type 12 with MSID = 0: every node against every segment
+  bool node_set_slaves = false; ///< SSTYP = 4: the slaves are a node set (no slave surface)
+
+  /// Shell offsets: on for Type 12 or *CONTROL_CONTACT SHLTHK > 0; thickness SST / MST, scale
+  /// SFST / SFMT; a single surface takes SST / SFST for both.
+  ShellOffsetRule slave_shells, master_shells;
+  /// Offset of node-set slaves (Type 5; length): RADIUS, else half SST x SFST (0 for SST = 0).
+  Real nodal_radius = 0.0;
+
+  /// FS, FD (FS when FD is 0), DC; mu_s = mu_k = 0 means frictionless.
+  ExponentialCoulomb friction;
+  bool frictional() const { return friction.mu_s > 0.0 || friction.mu_k > 0.0; }
+
+  Real slave_stiffness = 0.1;   ///< SLSFAC x SFS: the pass whose slaves are the card's slaves
+  Real master_stiffness = 0.1;  ///< SLSFAC x SFM: Type 3's reverse pass
+
+  bool sliding_only = false;    ///< Type 10 _SLIDING_ONLY: no separation once in contact
+  bool mortar_coupling = false; ///< penalty coupling 1 (model::Contact::penalty_coupling)
+  TiebreakFailure failure;
+  ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)
+  /// Type 12: write interfaces/<title>/transmitted_force (the force between its parts).
+  bool transmitted_output = false;
+};
+
+/// Resolves `card` (the `position`-th contact of the deck, from 1). Throws NotImplementedError
+/// (naming the card's file:line) for a combination this version does not run, InputError for a
+/// bad reference or value.
+InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position, const ContactBuildContext& ctx);
+
+/// Resolves SSID/SSTYP (slave = true) or MSID/MSTYP of `card` into a side. Set types (LS-DYNA):
+/// 0 segment set, 1 shell element set (not supported), 2 part set, 3 part id, 4 node set
+/// (slave side only), 5 all parts. Throws InputError naming the card's file:line and field.
+ContactSide resolve_contact_side(const model::Contact& card, bool slave, const ContactBuildContext& ctx);
+
+/// The faces that orient the nodes of a node-set slave side (Type 5; search/slave_orientation.hpp):
+/// the exterior faces of every part that holds one of `nodes` (faces shared by two such parts
+/// are interior and left out), adjacency built; empty when no part holds them. Allocates.
+Surface node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& context);
+
+/// The interface title: the card's heading, else "contact_<cid>", else "contact_<k>" (k = the
+/// card's position among the deck's contacts, from 1).
+std::string contact_title(const model::Contact& card, std::size_t position);
+
+/// The card's friction law (FS, FD, DC); InputError when one is negative.
+ExponentialCoulomb contact_friction(const model::Contact& card);
+
+/// Per slave node of `side` (one per side.nodes entry): its shell offset under `rule`, at least
+/// `radius` (length). A node-set side has no surface: every node gets `radius`.
+std::vector<Real> slave_node_offsets(const ContactSide& side, const ShellOffsetRule& rule, Real radius);
+
+/// "<file:line>: <keyword> (DYNA3D type N[, enforcement]) is not implemented yet": the
+/// NotImplementedError thrown for what this version does not run.
+[[noreturn]] void throw_contact_not_implemented(const model::Contact& card, const std::string& what = {});
+
+}  // namespace slideline

@@ -1,0 +1,257 @@
+// A *CONTACT card resolved once into an InterfaceSpec (contact/interface_spec.hpp): which
+// combinations run, the sides, offsets, friction, stiffness factors, failure data, birth and death.
+#include "slideline/contact/interface_spec.hpp"
+
+#include <algorithm>
+
+#include "slideline/core/error.hpp"
+#include "slideline/core/source_location.hpp"
+#include "slideline/mesh/surface_builder.hpp"
+
+namespace slideline {
+
+namespace {
+
+using T = model::ContactType;
+
+std::string card_name(const model::Contact& card) {
+  return card.keyword.empty() ? std::string("*CONTACT") : card.keyword;
+}
+
+/// "file:line" of the card.
+std::string at(const model::Contact& card) { return describe_location(card.src.file, card.src.line); }
+
+/// "file:line: KEYWORD": the start of every message about the card.
+std::string where(const model::Contact& card) { return at(card) + ": " + card_name(card); }
+
+std::vector<Id> all_parts(const ContactBuildContext& ctx) {
+  std::vector<Id> parts;
+  for (const auto& [pid, nodes] : ctx.sets.part_nodes) parts.push_back(pid);
+  return parts;
+}
+
+const model::Box* find_box(const model::Model& m, Id id) {
+  for (const auto& b : m.boxes)
+    if (b.boxid == id) return &b;
+  return nullptr;
+}
+
+bool inside(const model::Box& b, const Vec3& p) {
+  for (int k = 0; k < 3; ++k)
+    if (p[k] < b.min[static_cast<std::size_t>(k)] || p[k] > b.max[static_cast<std::size_t>(k)]) return false;
+  return true;
+}
+
+/// The segments of `surf` whose centroid lies in `box` (at the initial coordinates), with
+/// adjacency rebuilt.
+Surface segments_in_box(const Surface& surf, const model::Box& box, const NodalFields& nodes) {
+  Surface out;
+  for (Index s = 0; s < surf.segment_count(); ++s) {
+    const Index* c = &surf.conn[4 * static_cast<std::size_t>(s)];
+    const int n = surf.is_triangle(s) ? 3 : 4;
+    Vec3 centroid = Vec3::Zero();
+    for (int a = 0; a < n; ++a) centroid += nodes.x0.get(c[a]);
+    if (!inside(box, centroid / n)) continue;
+    out.conn.insert(out.conn.end(), c, c + 4);
+    out.block.push_back(surf.block[s]);
+    out.element.push_back(surf.element[s]);
+    out.part.push_back(surf.part[s]);
+    out.kind.push_back(surf.kind[s]);
+    out.thickness.push_back(surf.thickness[s]);
+  }
+  build_surface_adjacency(out);
+  return out;
+}
+
+/// The one table of what runs: throws NotImplementedError (or InputError for a combination that
+/// means nothing) before anything is built.
+void check_runs(const model::Contact& card) {
+  const bool lagrange = card.enforcement == model::Enforcement::lagrange;
+  const bool penalty = card.enforcement == model::Enforcement::penalty;
+  switch (card.type) {
+    case T::tied_surface:
+    case T::tied_nodes:
+    case T::tied_shell_edge:
+      if (lagrange) throw_contact_not_implemented(card, "tied interfaces are kinematic; Lagrange enforcement is not run");
+      return;
+    case T::sliding_only:
+      if (card.fs != 0.0 || card.fd != 0.0)
+        throw InputError(where(card) + ": a sliding-only (type 1) interface is frictionless; FS and FD must be 0");
+      return;
+    case T::tiebreak_nodes:
+    case T::tiebreak_surface:
+      if (lagrange) throw_contact_not_implemented(card, "tiebreak interfaces are penalty only");
+      if (card.sfs <= 0.0) throw InputError(at(card) + ": SFS of " +
+                                            card_name(card) + " must be positive");
+      return;
+    case T::surface_to_surface:
+    case T::one_way:
+    case T::nodes_to_surface:
+    case T::automatic:
+      break;
+  }
+  if (lagrange) {
+    if (card.sliding_only_option)
+      throw_contact_not_implemented(card, "the sliding-only option with Lagrange enforcement is not implemented");
+    if (card.vc != 0.0 || card.vdc != 0.0)
+      throw_contact_not_implemented(card, "viscous friction (VC) and viscous damping (VDC) with Lagrange enforcement");
+    return;
+  }
+  if (!penalty) throw_contact_not_implemented(card);
+  if (card.sstyp == 4 && (card.type == T::surface_to_surface || card.type == T::one_way))
+    throw_contact_not_implemented(card, "a node-set slave side (SSTYP 4) needs Type 5");
+  if (card.sstyp == 4 && card.type == T::automatic)
+    throw InputError(where(card) + ": SSTYP = 4 (node set) is not a surface");
+  if (card.type == T::automatic && card.msid != 0)
+    throw_contact_not_implemented(card, "MSID (a master side apart from the slave side) with penalty enforcement");
+}
+
+/// The sides, and the checks that need them.
+void resolve_sides(const model::Contact& card, const ContactBuildContext& ctx, InterfaceSpec& spec) {
+  spec.slave = resolve_contact_side(card, true, ctx);
+  spec.node_set_slaves = spec.slave.surface.nodes.empty();
+  spec.single_surface = card.type == T::automatic && card.msid == 0;
+  spec.master = spec.single_surface ? spec.slave : resolve_contact_side(card, false, ctx);
+  if (spec.master.surface.segment_count() == 0)
+    throw InputError(at(card) + ": MSID of " + card_name(card) + " selects no master segments");
+  if (card.type == T::tiebreak_surface && spec.slave.surface.segment_count() == 0)
+    throw InputError(at(card) + ": SSID of " + card_name(card) +
+                     " (DYNA3D type 9) must select slave segments (SSTYP 0, 2, 3 or 5), not a node set");
+  if (card.type == T::tied_shell_edge)
+    for (Index s = 0; s < spec.master.surface.segment_count(); ++s)
+      if (spec.master.surface.kind[s] != SegmentKind::shell)
+        throw InputError(where(card) + " (DYNA3D type 7) needs a shell master surface; MSID selects solid faces");
+}
+
+}  // namespace
+
+ExponentialCoulomb contact_friction(const model::Contact& card) {
+  if (card.fs < 0.0 || card.fd < 0.0 || card.dc < 0.0)
+    throw InputError(where(card) + ": FS, FD and DC must not be negative");
+  ExponentialCoulomb f;
+  f.mu_s = card.fs;
+  f.mu_k = card.fd > 0.0 ? card.fd : card.fs;  // FD = 0: constant coefficient FS
+  f.beta = card.dc;
+  return f;
+}
+
+InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position, const ContactBuildContext& ctx) {
+  check_runs(card);
+  InterfaceSpec spec;
+  spec.title = contact_title(card, position);
+  spec.where = where(card);
+  spec.type = card.type;
+  spec.enforcement = card.enforcement;
+  spec.friction = contact_friction(card);
+  resolve_sides(card, ctx, spec);
+  const bool shells = card.type == T::automatic || ctx.model.control_contact.shlthk > 0;
+  spec.slave_shells = ShellOffsetRule{shells, card.sst, card.sfst};
+  // A single surface (Type 12 without MSID) is its own master: SST and SFST apply to both roles
+  // (the reader refuses MST there).
+  spec.master_shells = spec.single_surface ? spec.slave_shells : ShellOffsetRule{shells, card.mst, card.sfmt};
+  spec.nodal_radius = card.radius > 0.0 ? card.radius : 0.5 * card.sst * card.sfst;
+  spec.slave_stiffness = ctx.model.control_contact.slsfac * card.sfs;
+  spec.master_stiffness = ctx.model.control_contact.slsfac * card.sfm;
+  spec.sliding_only = card.sliding_only_option;
+  spec.mortar_coupling = card.penalty_coupling == 1;
+  const bool by_segment = card.type == T::tiebreak_surface;
+  spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
+  spec.window = ContactWindow{card.bt, card.dt};
+  spec.transmitted_output = card.type == T::automatic;
+  return spec;
+}
+
+std::vector<Real> slave_node_offsets(const ContactSide& side, const ShellOffsetRule& rule, Real radius) {
+  std::vector<Real> out(side.nodes.size(), radius);
+  const Surface& s = side.surface;
+  for (Index row = 0; row < s.node_count(); ++row) {
+    Real& o = out[static_cast<std::size_t>(row)];
+    o = std::max(o, node_offset(s, row, rule));
+  }
+  return out;
+}
+
+Surface node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& context) {
+  std::vector<Id> parts;
+  for (const auto& [pid, part_nodes] : ctx.sets.part_nodes)
+    if (std::any_of(nodes.begin(), nodes.end(),
+                    [&](Index n) { return std::binary_search(part_nodes.begin(), part_nodes.end(), n); }))
+      parts.push_back(pid);
+  Surface faces;
+  if (!parts.empty()) faces = build_surface_from_parts(ctx.blocks, ctx.nodes, parts, context);
+  build_surface_adjacency(faces);
+  return faces;
+}
+
+std::string contact_title(const model::Contact& card, std::size_t position) {
+  if (!card.title.empty()) return card.title;
+  if (card.cid != 0) return "contact_" + std::to_string(card.cid);
+  return "contact_" + std::to_string(position);
+}
+
+void throw_contact_not_implemented(const model::Contact& card, const std::string& what) {
+  const char* enforcement = card.enforcement == model::Enforcement::lagrange    ? ", Lagrange multiplier"
+                            : card.enforcement == model::Enforcement::kinematic ? ", kinematic"
+                                                                                 : ", penalty";
+  throw NotImplementedError(where(card) + " (DYNA3D type " + std::to_string(static_cast<int>(card.type)) +
+                            enforcement + ")" +
+                            (what.empty() ? std::string(" is not implemented yet") : ": " + what));
+}
+
+ContactSide resolve_contact_side(const model::Contact& card, bool slave, const ContactBuildContext& ctx) {
+  const Id sid = slave ? card.ssid : card.msid;
+  const int typ = slave ? card.sstyp : card.mstyp;
+  const std::string field = slave ? "SSID" : "MSID";
+  const std::string context = at(card) + ": " + field + " of " + card_name(card);
+  // SBOXID / MBOXID (domain limiting): only the side's nodes, and segments whose centroid, lie in
+  // the box at the start; applied here once, at build time, so every interface type honours it.
+  const Id boxid = slave ? card.sboxid : card.mboxid;
+  const model::Box* box = nullptr;
+  if (boxid != 0) {
+    box = find_box(ctx.model, boxid);
+    if (!box)
+      throw InputError(at(card) + ": " + std::string(slave ? "SBOXID" : "MBOXID") + " of " + card_name(card) +
+                       " refers to undefined box " + std::to_string(boxid) + " (*DEFINE_BOX)");
+  }
+  const std::string box_note = box ? " inside box " + std::to_string(boxid) : std::string();
+  ContactSide side;
+  switch (typ) {
+    case 0: {
+      const auto& segs = ctx.sets.segment_set(sid, context);
+      side.surface = build_surface_from_segments(ctx.blocks, ctx.nodes, segs,
+                                                 context + " (segment set " + std::to_string(sid) + ")");
+      break;
+    }
+    case 2:
+      side.parts = ctx.sets.part_set(sid, context);
+      break;
+    case 3:
+      side.parts = {sid};
+      break;
+    case 4:
+      if (!slave)
+        throw InputError(context + ": MSTYP = 4 (node set) cannot be a master surface");
+      side.nodes = ctx.sets.node_set(sid, context);
+      if (box) {
+        std::erase_if(side.nodes, [&](Index n) { return !inside(*box, ctx.nodes.x0.get(n)); });
+        if (side.nodes.empty()) throw InputError(context + " selects no nodes" + box_note);
+      }
+      return side;
+    case 5:
+      side.parts = all_parts(ctx);
+      break;
+    default:
+      throw InputError(context + ": set type " + std::string(slave ? "SSTYP" : "MSTYP") + " = " +
+                       std::to_string(typ) +
+                       " is not supported (0 segment set, 2 part set, 3 part, 4 node set, 5 all)");
+  }
+  if (!side.parts.empty())
+    side.surface = build_surface_from_parts(ctx.blocks, ctx.nodes, side.parts, context);
+  build_surface_adjacency(side.surface);
+  if (box) side.surface = segments_in_box(side.surface, *box, ctx.nodes);
+  side.nodes = side.surface.nodes;
+  if (side.nodes.empty()) throw InputError(context + " selects no segments" + box_note);
+  return side;
+}
+
+}  // namespace slideline

@@ -1,0 +1,107 @@
+// InterfaceSpec (contact/interface_spec.hpp): one resolution of a *CONTACT card for every family:
+// the one shell offset rule, the one friction law, the one table of what runs.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "slideline/contact/interface_spec.hpp"
+#include "slideline/contact/shell_offset.hpp"
+#include "slideline/core/error.hpp"
+#include "slideline/scenarios/sslide.hpp"
+#include "slideline/solver/build.hpp"
+#include "unit/contact/plate_surface.hpp"
+
+namespace slideline {
+namespace {
+
+/// Two quads side by side (nodes 0..5), the first a shell of thickness 0.1, the second a solid face.
+Surface shell_and_solid() {
+  Surface s;
+  s.conn = {0, 1, 4, 3, 1, 2, 5, 4};
+  test::finish_surface(s);
+  s.kind[0] = SegmentKind::shell;
+  s.thickness[0] = 0.1;
+  return s;
+}
+
+TEST(ShellOffset, HalfThicknessOnShellsOnlyWhenOn) {
+  const Surface s = shell_and_solid();
+  EXPECT_EQ(segment_offset(s, 0, {false, 0.0, 1.0}), 0.0);
+  EXPECT_EQ(segment_offset(s, 0, {true, 0.0, 1.0}), 0.05);
+  EXPECT_EQ(segment_offset(s, 0, {true, 0.3, 0.5}), 0.5 * 0.3 * 0.5);  // SST/MST override, SFST/SFMT scale
+  EXPECT_EQ(segment_offset(s, 1, {true, 0.3, 0.5}), 0.0);              // a solid face has none
+}
+
+TEST(ShellOffset, NodeTakesItsLargestSegmentOffset) {
+  const Surface s = shell_and_solid();
+  const ShellOffsetRule on{true, 0.0, 1.0};
+  // Rows follow s.nodes (0..5): nodes 1 and 4 touch both segments, 2 and 5 the solid face only.
+  EXPECT_EQ(node_offset(s, 1, on), 0.05);
+  EXPECT_EQ(node_offset(s, 4, on), 0.05);
+  EXPECT_EQ(node_offset(s, 2, on), 0.0);
+  ContactSide side;
+  side.surface = s;
+  side.nodes = s.nodes;
+  const auto o = slave_node_offsets(side, on, 0.02);  // the radius is a floor
+  ASSERT_EQ(o.size(), 6u);
+  EXPECT_EQ(o[0], 0.05);
+  EXPECT_EQ(o[2], 0.02);
+  ContactSide node_set;
+  node_set.nodes = {7, 9};
+  EXPECT_EQ(slave_node_offsets(node_set, on, 0.02), (std::vector<Real>{0.02, 0.02}));
+}
+
+TEST(InterfaceSpec, FrictionLawIsTheSameForEveryFamily) {
+  model::Contact c;
+  c.fs = 0.3;
+  c.dc = 2.0;
+  ExponentialCoulomb f = contact_friction(c);  // FD = 0: constant FS (penalty, Lagrange, tiebreak alike)
+  EXPECT_EQ(f.mu_s, 0.3);
+  EXPECT_EQ(f.mu_k, 0.3);
+  EXPECT_EQ(f.beta, 2.0);
+  c.fd = 0.25;
+  EXPECT_EQ(contact_friction(c).mu_k, 0.25);
+  c.fs = -0.1;
+  c.keyword = "*CONTACT_SURFACE_TO_SURFACE";
+  c.src = {"deck.k", 12};
+  try {
+    contact_friction(c);
+    FAIL() << "negative FS accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "deck.k:12: *CONTACT_SURFACE_TO_SURFACE: FS, FD and DC must not be negative");
+  }
+}
+
+/// The error build_simulation throws for `m` (empty when it builds).
+template <class E>
+std::string build_error(const model::Model& m) {
+  try {
+    build_simulation(m);
+  } catch (const E& e) {
+    return e.what();
+  }
+  return {};
+}
+
+TEST(InterfaceSpec, NegativeFrictionIsRefusedByPenaltyToo) {
+  model::Model m = scenarios::make_sslide_problem("sslide3p").model;
+  m.contacts.front().fd = -0.25;
+  EXPECT_NE(build_error<InputError>(m).find("FS, FD and DC must not be negative"), std::string::npos);
+}
+
+TEST(InterfaceSpec, PenaltyAutomaticRefusesAMasterSide) {
+  model::Model m = scenarios::make_sslide_problem("sslide12p").model;
+  m.contacts.front().msid = m.contacts.front().ssid;
+  m.contacts.front().mstyp = m.contacts.front().sstyp;
+  EXPECT_NE(build_error<NotImplementedError>(m).find("MSID"), std::string::npos);
+}
+
+TEST(InterfaceSpec, TiedLagrangeIsRefusedBeforeTheSidesAreBuilt) {
+  model::Model m = scenarios::make_sslide_problem("sslide2kc").model;
+  m.contacts.front().enforcement = model::Enforcement::lagrange;
+  m.contacts.front().ssid = 999;  // a bad side is not what the message is about
+  EXPECT_NE(build_error<NotImplementedError>(m).find("tied interfaces are kinematic"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace slideline
