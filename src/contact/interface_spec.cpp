@@ -6,6 +6,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/source_location.hpp"
+#include "slideline/element/element_block.hpp"
 #include "slideline/mesh/surface_builder.hpp"
 
 namespace slideline {
