@@ -225,21 +225,6 @@ void read_mat_rigid(const Context& ctx, Block& b, Model& m, bool titled) {
   warn_extra_cards(ctx, b);
 }
 
-void read_mat_hypoelastic(const Context& ctx, Block& b, Model& m, bool titled) {
-  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
-  const Line& l = require(ctx, b, "MID");
-  Card c = card_of(ctx, l, b);
-  model::MatHypoelastic mat;
-  c.get(0, "MID", mat.mid);
-  c.get(1, "RO", mat.ro);
-  c.get(2, "E", mat.e);
-  c.get(3, "PR", mat.pr);
-  mat.title = title;
-  mat.src = ctx.source(l.number);
-  m.materials.emplace_back(mat);
-  warn_extra_cards(ctx, b);
-}
-
 void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
   each_titled(ctx, b, titled, [&](const Line& l, const std::string&) {
     Card c = card_of(ctx, l, b);
@@ -517,7 +502,6 @@ const std::vector<Entry>& table() {
       {"*MAT_027", "_TITLE", read_mat_mooney_rivlin},
       {"*MAT_RIGID", "_TITLE", read_mat_rigid},
       {"*MAT_020", "_TITLE", read_mat_rigid},
-      {"*MAT_TOY_HYPOELASTIC", "_TITLE", read_mat_hypoelastic},
       {"*HOURGLASS", "_TITLE", read_hourglass},
       {"*SET_NODE_LIST", "_TITLE", read_set_node},
       {"*SET_NODE", "_TITLE", read_set_node},

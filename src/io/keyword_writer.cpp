@@ -124,10 +124,6 @@ void write_materials(const model::Model& m, std::string& o) {
       o += CardOut().i(rg->mid).r(rg->ro).r(rg->e).r(rg->pr).str();
       o += "$#     CMO      CON1      CON2\n";
       o += CardOut().r(rg->cmo).i(rg->con1).i(rg->con2).str();
-    } else if (const auto* h = std::get_if<model::MatHypoelastic>(&mat)) {
-      o += h->title.empty() ? "*MAT_TOY_HYPOELASTIC\n" : "*MAT_TOY_HYPOELASTIC_TITLE\n" + heading(h->title);
-      o += "$#     MID        RO         E        PR\n";
-      o += CardOut().i(h->mid).r(h->ro).r(h->e).r(h->pr).str();
     }
   }
 }

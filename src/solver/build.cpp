@@ -394,10 +394,6 @@ struct Builder {
                           [](const model::MatRigid& x) {
                             check_positive(x.ro, "RO", x.src);
                             check_positive(x.e, "E", x.src);  // sets the part's time step, as in LS-DYNA
-                          },
-                          [](const model::MatHypoelastic& x) {
-                            check_positive(x.ro, "RO", x.src);
-                            check_positive(x.e, "E", x.src);
                           }},
                material);
   }

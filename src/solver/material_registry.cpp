@@ -20,9 +20,6 @@ MaterialLaws material_laws(const model::Material& material) {
           [](const model::MatRigid&) {
             return MaterialLaws{std::nullopt, std::nullopt, true, "*MAT_RIGID"};
           },
-          [](const model::MatHypoelastic& m) {
-            return MaterialLaws{Hypoelastic(m.ro, m.e, m.pr), std::nullopt, false, "*MAT_TOY_HYPOELASTIC"};
-          },
       },
       material);
 }

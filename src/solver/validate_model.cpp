@@ -85,11 +85,6 @@ void check_materials(const model::Model& m, Problems& p) {
               positive(p, x.src, "*MAT_RIGID", "E", x.e);
               poisson(p, x.src, "*MAT_RIGID", x.pr);
             },
-            [&](const model::MatHypoelastic& x) {
-              positive(p, x.src, "*MAT_TOY_HYPOELASTIC", "RO", x.ro);
-              positive(p, x.src, "*MAT_TOY_HYPOELASTIC", "E", x.e);
-              poisson(p, x.src, "*MAT_TOY_HYPOELASTIC", x.pr);
-            },
         },
         mat);
   }

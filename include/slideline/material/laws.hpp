@@ -6,7 +6,6 @@
 
 #include "slideline/material/elastic.hpp"
 #include "slideline/material/elastic_shell.hpp"
-#include "slideline/material/hypoelastic.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
 #include "slideline/material/shell_material.hpp"
 #include "slideline/material/solid_material.hpp"
@@ -14,7 +13,7 @@
 namespace slideline {
 
 /// The law of a hexahedron block.
-using SolidLaw = std::variant<ElasticSolid, MooneyRivlin, Hypoelastic>;
+using SolidLaw = std::variant<ElasticSolid, MooneyRivlin>;
 
 /// The law of a shell block.
 using ShellLaw = std::variant<ElasticShell>;

@@ -112,17 +112,7 @@ struct MatRigid {
   Source src;
 };
 
-/// *MAT_TOY_HYPOELASTIC (a toy: linear hypoelastic solid)
-struct MatHypoelastic {
-  Id mid = 0;
-  Real ro = 0.0;
-  Real e = 0.0;
-  Real pr = 0.0;
-  std::string title;
-  Source src;
-};
-
-using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid, MatHypoelastic>;
+using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid>;
 
 /// *HOURGLASS
 struct Hourglass {
