@@ -17,49 +17,10 @@ namespace slideline {
 namespace {
 
 using patch_test::PatchOptions;
+using patch_test::PatchResult;
+using patch_test::run_patch;
 using model::ContactType;
 using model::Enforcement;
-
-/// Range of sigma_yy / (-p) over the elements next to the interface, per side.
-struct PatchResult {
-  Real upper_min = 1e30, upper_max = -1e30, lower_min = 1e30, lower_max = -1e30;
-  Real drift = 0.0;  ///< largest |ratio change| over the last third of the run (static check)
-  Real worst() const {
-    return std::max({std::abs(upper_min - 1.0), std::abs(upper_max - 1.0), std::abs(lower_min - 1.0),
-                     std::abs(lower_max - 1.0)});
-  }
-};
-
-PatchResult run_patch(const PatchOptions& o) {
-  const patch_test::PatchModel p = patch_test::make_patch_model(o);
-  auto sim = build_simulation(p.model);
-  sim->initialize();
-  const ElasticSolid law(o.density, o.youngs, o.poisson);
-  const auto ratios = [&](PatchResult& r) {
-    r = PatchResult{};
-    for (Real s : patch_test::normal_stresses(*sim, p.model, p.upper_interface_elements, o.rotation, law)) {
-      r.upper_min = std::min(r.upper_min, -s / o.pressure);
-      r.upper_max = std::max(r.upper_max, -s / o.pressure);
-    }
-    for (Real s : patch_test::normal_stresses(*sim, p.model, p.lower_interface_elements, o.rotation, law)) {
-      r.lower_min = std::min(r.lower_min, -s / p.lower_pressure);
-      r.lower_max = std::max(r.lower_max, -s / p.lower_pressure);
-    }
-  };
-  PatchResult before;
-  bool sampled = false;
-  while (sim->step()) {
-    if (!sampled && sim->time() >= o.end_time * 2.0 / 3.0) {
-      ratios(before);
-      sampled = true;
-    }
-  }
-  PatchResult r;
-  ratios(r);
-  r.drift = std::max({std::abs(r.upper_min - before.upper_min), std::abs(r.upper_max - before.upper_max),
-                      std::abs(r.lower_min - before.lower_min), std::abs(r.lower_max - before.lower_max)});
-  return r;
-}
 
 /// A rotation by 37 degrees about the axis (1, 2, 3) / |(1, 2, 3)|.
 Mat3 oblique_rotation() {
