@@ -7,9 +7,11 @@
 #include <fstream>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "slideline/core/error.hpp"
+#include "slideline/core/overloaded.hpp"
 
 namespace slideline {
 namespace {
@@ -107,25 +109,32 @@ void write_initial_velocities(const model::Model& m, std::string& o) {
   }
 }
 
+/// One case per material card and no generic case: a card added to model::Material without a case
+/// here does not compile (instead of being left out of the written deck).
 void write_materials(const model::Model& m, std::string& o) {
-  for (const auto& mat : m.materials) {
-    if (const auto* e = std::get_if<model::MatElastic>(&mat)) {
-      o += e->title.empty() ? "*MAT_ELASTIC\n" : "*MAT_ELASTIC_TITLE\n" + heading(e->title);
-      o += "$#     MID        RO         E        PR\n";
-      o += CardOut().i(e->mid).r(e->ro).r(e->e).r(e->pr).str();
-    } else if (const auto* mr = std::get_if<model::MatMooneyRivlin>(&mat)) {
-      o += mr->title.empty() ? "*MAT_MOONEY-RIVLIN_RUBBER\n" : "*MAT_MOONEY-RIVLIN_RUBBER_TITLE\n" + heading(mr->title);
-      o += "$#     MID        RO        PR         A         B\n";
-      o += CardOut().i(mr->mid).r(mr->ro).r(mr->pr).r(mr->a).r(mr->b).str();
-      o += "$#     SGL        SW        ST      LCID\n\n";
-    } else if (const auto* rg = std::get_if<model::MatRigid>(&mat)) {
-      o += rg->title.empty() ? "*MAT_RIGID\n" : "*MAT_RIGID_TITLE\n" + heading(rg->title);
-      o += "$#     MID        RO         E        PR\n";
-      o += CardOut().i(rg->mid).r(rg->ro).r(rg->e).r(rg->pr).str();
-      o += "$#     CMO      CON1      CON2\n";
-      o += CardOut().r(rg->cmo).i(rg->con1).i(rg->con2).str();
-    }
-  }
+  for (const auto& mat : m.materials)
+    std::visit(Overloaded{
+                   [&](const model::MatElastic& e) {
+                     o += e.title.empty() ? "*MAT_ELASTIC\n" : "*MAT_ELASTIC_TITLE\n" + heading(e.title);
+                     o += "$#     MID        RO         E        PR\n";
+                     o += CardOut().i(e.mid).r(e.ro).r(e.e).r(e.pr).str();
+                   },
+                   [&](const model::MatMooneyRivlin& mr) {
+                     o += mr.title.empty() ? "*MAT_MOONEY-RIVLIN_RUBBER\n"
+                                           : "*MAT_MOONEY-RIVLIN_RUBBER_TITLE\n" + heading(mr.title);
+                     o += "$#     MID        RO        PR         A         B\n";
+                     o += CardOut().i(mr.mid).r(mr.ro).r(mr.pr).r(mr.a).r(mr.b).str();
+                     o += "$#     SGL        SW        ST      LCID\n\n";
+                   },
+                   [&](const model::MatRigid& rg) {
+                     o += rg.title.empty() ? "*MAT_RIGID\n" : "*MAT_RIGID_TITLE\n" + heading(rg.title);
+                     o += "$#     MID        RO         E        PR\n";
+                     o += CardOut().i(rg.mid).r(rg.ro).r(rg.e).r(rg.pr).str();
+                     o += "$#     CMO      CON1      CON2\n";
+                     o += CardOut().r(rg.cmo).i(rg.con1).i(rg.con2).str();
+                   },
+               },
+               mat);
 }
 
 const char* contact_base(const model::Contact& c) {

@@ -12,14 +12,20 @@ namespace {
 
 std::string describe_node(const MonitoredModel& m, Index i) {
   std::string s = "node " + std::to_string(m.nodes.ids[i]);
+  // Through the declared topology: a rigid part may hold hexahedra and shells (no one node count).
   for (const auto& b : m.blocks) {
     const auto conn = b->connectivity();
-    const auto npe = static_cast<std::size_t>(b->nodes_per_element());
-    for (std::size_t k = 0; k < conn.size(); ++k)
-      if (conn[k] == i) {
-        return s + " (" + b->kind() + " element " + std::to_string(b->element_id(static_cast<Index>(k / npe))) +
-               " of part " + std::to_string(b->part_id()) + ")";
-      }
+    std::string found;
+    b->topology().for_each_element([&](const TopologyRun& r, Index e, std::size_t offset) {
+      if (!found.empty()) return;
+      for (int k = 0; k < r.topology->nodes; ++k)
+        if (conn[offset + static_cast<std::size_t>(k)] == i) {
+          found = " (" + b->kind() + " element " + std::to_string(b->element_id(e)) + " of part " +
+                  std::to_string(b->part_id()) + ")";
+          return;
+        }
+    });
+    if (!found.empty()) return s + found;
   }
   return s;
 }

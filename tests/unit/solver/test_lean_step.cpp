@@ -148,7 +148,7 @@ void free_hex(Simulation& sim, long cycles) {
     sim.nodes.x.set(i, x);
     sim.nodes.v.set(i, Vec3(1.0, 0.0, 0.0));
   }
-  sim.blocks.push_back(make_hex_block(1, ElasticSolidSpec{1.0, 1000.0, 0.3}, HexHourglass{}, BulkViscosity{1.5, 0.06},
+  sim.blocks.push_back(make_hex_block(1, ElasticSolid(1.0, 1000.0, 0.3), HexHourglass{}, BulkViscosity{1.5, 0.06},
                                       {0, 1, 3, 2, 4, 5, 7, 6}, {1}));
   sim.controls.end_time = 1.0;
   sim.controls.max_cycles = cycles;
