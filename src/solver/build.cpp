@@ -15,6 +15,7 @@
 #include "slideline/solver/material_registry.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/validate_model.hpp"
+#include "build_support.hpp"
 #include "initial_velocity.hpp"
 
 namespace slideline {
@@ -22,55 +23,6 @@ namespace slideline {
 std::string describe(const model::Source& src) { return describe_location(src.file, src.line); }
 
 namespace {
-
-/// The one scale factor of LS-DYNA's per-direction damping factors STX..SRZ when they all agree
-/// (all blank/0 means 1, as LS-DYNA reads them), else nothing: directions damped differently are
-/// not implemented.
-std::optional<Real> common_direction_factor(const std::array<Real, 6>& stf) {
-  if (std::all_of(stf.begin(), stf.end(), [](Real s) { return s == 0.0; })) return 1.0;
-  if (std::all_of(stf.begin(), stf.end(), [&](Real s) { return s == stf[0]; })) return stf[0];
-  return std::nullopt;
-}
-
-/// Id -> record lookups with errors that name the referring card.
-template <class T>
-class IdTable {
- public:
-  IdTable(const std::vector<T>& items, Id (*key)(const T&), const char* what) : what_(what) {
-    for (const auto& it : items) {
-      const Id k = key(it);
-      if (!map_.emplace(k, &it).second)
-        throw InputError(describe(it.src) + ": duplicate " + what_ + " id " + std::to_string(k));
-    }
-  }
-  const T& at(Id id, const model::Source& from, const char* field) const {
-    const auto f = map_.find(id);
-    if (f == map_.end())
-      throw InputError(describe(from) + ": " + field + " refers to " + what_ + " " +
-                       std::to_string(id) + ", which the deck does not define");
-    return *f->second;
-  }
-  bool contains(Id id) const { return map_.count(id) != 0; }
-
- private:
-  std::string what_;
-  std::unordered_map<Id, const T*> map_;
-};
-
-LoadCurve make_curve(const model::Curve& c) {
-  if (c.points.empty())
-    throw InputError(describe(c.src) + ": *DEFINE_CURVE " + std::to_string(c.lcid) + " has no points");
-  std::vector<std::pair<Real, Real>> pts;
-  pts.reserve(c.points.size());
-  const Real sfa = c.sfa == 0.0 ? 1.0 : c.sfa;
-  const Real sfo = c.sfo == 0.0 ? 1.0 : c.sfo;
-  for (const auto& [t, y] : c.points) pts.emplace_back(sfa * t + c.offa, sfo * y + c.offo);
-  try {
-    return LoadCurve(std::move(pts), "lcid " + std::to_string(c.lcid));
-  } catch (const InputError& e) {
-    throw InputError(describe(c.src) + ": " + e.what());
-  }
-}
 
 struct Builder {
   Builder(const model::Model& model, const BuildOptions& options) : m(model), opt(options) {}
@@ -138,7 +90,7 @@ struct Builder {
         m.shell_sections, [](const model::SectionShell& s) { return s.secid; }, "*SECTION_SHELL");
     const IdTable<model::Hourglass> hgs(m.hourglasses, [](const model::Hourglass& h) { return h.hgid; },
                                         "*HOURGLASS");
-    const std::map<Id, StiffnessDamping> damped = stiffness_damping(parts);
+    const std::map<Id, StiffnessDamping> damped = stiffness_damping(m, parts);
     std::unordered_map<Id, const model::Material*> mats;
     for (const auto& mat : m.materials)
       if (!mats.emplace(model::material_id(mat), &mat).second)
@@ -236,38 +188,6 @@ struct Builder {
     }
   }
 
-  /// *DAMPING_PART_STIFFNESS[_SET] by part id. COEF < 0 is the classical (LS-DYNA 950) Rayleigh
-  /// coefficient beta = -COEF; COEF > 0 is LS-DYNA's later, unpublished formulation.
-  std::map<Id, StiffnessDamping> stiffness_damping(const IdTable<model::Part>& parts) const {
-    std::map<Id, StiffnessDamping> out;
-    for (const auto& d : m.damping_stiffness) {
-      if (d.coef > 0.0)
-        throw NotImplementedError(
-            describe(d.src) + ": *DAMPING_PART_STIFFNESS COEF = " + std::to_string(d.coef) +
-            " > 0 selects LS-DYNA's approximate fraction of critical damping at high frequencies, "
-            "whose formulation is not published; give COEF = -beta (beta in time units, the "
-            "classical Rayleigh coefficient: fraction of critical damping beta * omega / 2)");
-      if (!std::isfinite(d.coef))
-        throw InputError(describe(d.src) + ": field COEF of *DAMPING_PART_STIFFNESS must be finite");
-      // Before build_sets (which needs the parts' nodes): the part set straight from the deck.
-      std::vector<Id> pids{d.pid};
-      if (d.set) {
-        const auto ps = std::find_if(m.part_sets.begin(), m.part_sets.end(),
-                                     [&](const model::PartSet& p) { return p.sid == d.pid; });
-        if (ps == m.part_sets.end())
-          throw InputError(describe(d.src) + ": PSID refers to part set " + std::to_string(d.pid) +
-                           ", which the deck does not define");
-        pids = ps->parts;
-      }
-      for (Id pid : pids) {
-        parts.at(pid, d.src, d.set ? "a part of PSID" : "PID");
-        if (!out.emplace(pid, StiffnessDamping{-d.coef}).second)
-          throw InputError(describe(d.src) + ": part " + std::to_string(pid) +
-                           " has stiffness damping from two *DAMPING_PART_STIFFNESS cards");
-      }
-    }
-    return out;
-  }
 
   template <class Sections>
   const model::SectionShell& shell_section(const model::Part& part, const Sections& shsec) const {
@@ -315,24 +235,6 @@ struct Builder {
                                            std::move(g.quad_ids), damping));
   }
 
-  /// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x,
-  /// 7 all.
-  static std::array<int, 3> constraint_code(int code, const model::Source& src, const char* field) {
-    switch (code) {
-      case 0: return {0, 0, 0};
-      case 1: return {1, 0, 0};
-      case 2: return {0, 1, 0};
-      case 3: return {0, 0, 1};
-      case 4: return {1, 1, 0};
-      case 5: return {0, 1, 1};
-      case 6: return {1, 0, 1};
-      case 7: return {1, 1, 1};
-      default:
-        throw InputError(describe(src) + ": field " + field + " of *MAT_RIGID must be 0 to 7 (got " +
-                         std::to_string(code) + ")");
-    }
-  }
-
   template <class Sections>
   void build_rigid_part(const model::Part& part, const model::MatRigid& mat, PartElements& g,
                         const std::vector<Index>& nodes, const Sections& shsec) {
@@ -342,8 +244,8 @@ struct Builder {
                        std::to_string(mat.pr) + ")");
     std::array<int, 6> fixed{0, 0, 0, 0, 0, 0};
     if (mat.cmo == 1.0) {
-      const auto t = constraint_code(mat.con1, mat.src, "CON1");
-      const auto r = constraint_code(mat.con2, mat.src, "CON2");
+      const auto t = rigid_constraint_code(mat.con1, mat.src, "CON1");
+      const auto r = rigid_constraint_code(mat.con2, mat.src, "CON2");
       for (int k = 0; k < 3; ++k) {
         fixed[k] = t[k];
         fixed[3 + k] = r[k];
@@ -374,26 +276,6 @@ struct Builder {
                          " of rigid part " + std::to_string(it->second) +
                          "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) or move it with "
                          "*BOUNDARY_PRESCRIBED_MOTION_RIGID instead");
-  }
-
-  static void check_positive(Real v, const char* field, const model::Source& src) {
-    if (!(v > 0.0))
-      throw InputError(describe(src) + ": field " + field + " must be positive (got " +
-                       std::to_string(v) + ")");
-  }
-
-  /// The constants a law divides by (validate_model reports them all first, with the rest).
-  static void check_material_constants(const model::Material& material) {
-    std::visit(Overloaded{[](const model::MatElastic& x) {
-                            check_positive(x.ro, "RO", x.src);
-                            check_positive(x.e, "E", x.src);
-                          },
-                          [](const model::MatMooneyRivlin& x) { check_positive(x.ro, "RO", x.src); },
-                          [](const model::MatRigid& x) {
-                            check_positive(x.ro, "RO", x.src);
-                            check_positive(x.e, "E", x.src);  // sets the part's time step, as in LS-DYNA
-                          }},
-               material);
   }
 
   /// Resolves every node, part and segment set into sim->sets (after build_elements, which finds

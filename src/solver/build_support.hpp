@@ -1,0 +1,65 @@
+#pragma once
+// Private to the builder (build.cpp): id lookups with located errors, the deck-to-solver
+// conversions and the field checks it needs. Moved out of build.cpp unchanged.
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "slideline/core/error.hpp"
+#include "slideline/element/block_options.hpp"
+#include "slideline/model/model.hpp"
+#include "slideline/solver/build.hpp"
+#include "slideline/solver/load_curve.hpp"
+
+namespace slideline {
+
+/// The one scale factor of LS-DYNA's per-direction damping factors STX..SRZ when they all agree
+/// (all blank/0 means 1, as LS-DYNA reads them), else nothing: directions damped differently are
+/// not implemented.
+std::optional<Real> common_direction_factor(const std::array<Real, 6>& stf);
+
+/// Id -> record lookups with errors that name the referring card.
+template <class T>
+class IdTable {
+ public:
+  IdTable(const std::vector<T>& items, Id (*key)(const T&), const char* what) : what_(what) {
+    for (const auto& it : items) {
+      const Id k = key(it);
+      if (!map_.emplace(k, &it).second)
+        throw InputError(describe(it.src) + ": duplicate " + what_ + " id " + std::to_string(k));
+    }
+  }
+  const T& at(Id id, const model::Source& from, const char* field) const {
+    const auto f = map_.find(id);
+    if (f == map_.end())
+      throw InputError(describe(from) + ": " + field + " refers to " + what_ + " " +
+                       std::to_string(id) + ", which the deck does not define");
+    return *f->second;
+  }
+  bool contains(Id id) const { return map_.count(id) != 0; }
+
+ private:
+  std::string what_;
+  std::unordered_map<Id, const T*> map_;
+};
+
+/// A *DEFINE_CURVE with its scale factors and offsets applied.
+LoadCurve make_curve(const model::Curve& c);
+
+/// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all.
+std::array<int, 3> rigid_constraint_code(int code, const model::Source& src, const char* field);
+
+/// Throws an InputError naming the field and the card unless v > 0.
+void check_positive(Real v, const char* field, const model::Source& src);
+
+/// The constants a law divides by (validate_model reports them all first, with the rest).
+void check_material_constants(const model::Material& material);
+
+/// *DAMPING_PART_STIFFNESS[_SET] by part id. COEF < 0 is the classical (LS-DYNA 950) Rayleigh
+/// coefficient beta = -COEF; COEF > 0 is LS-DYNA's later, unpublished formulation.
+std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const IdTable<model::Part>& parts);
+
+}  // namespace slideline
