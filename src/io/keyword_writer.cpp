@@ -192,12 +192,8 @@ void write_id_list(const Ids& ids, std::string& o) {
   }
 }
 
-}  // namespace
-
-std::string write_keyword_string(const model::Model& m) {
-  std::string o = "*KEYWORD\n";
-  if (!m.title.empty()) o += "*TITLE\n" + heading(m.title);
-
+/// The control cards (termination, time step, hourglass, bulk viscosity, contact).
+void write_controls(const model::Model& m, std::string& o) {
   if (m.termination.endeng != 0.0) {
     o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC     DTMIN    ENDENG\n";
     o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).r(m.termination.dtmin).r(m.termination.endeng).str();
@@ -219,7 +215,10 @@ std::string write_keyword_string(const model::Model& m) {
   o += "*CONTROL_CONTACT\n$#  SLSFAC    RWPNAL    ISLCHK    SHLTHK    PENOPT    THKCHG     ORIEN    ENMASS\n";
   o += CardOut().r(cc.slsfac).r(cc.rwpnal).i(cc.islchk).i(cc.shlthk).i(cc.penopt).i(cc.thkchg).i(cc.orien)
            .i(cc.enmass).str();
+}
 
+/// The output cards.
+void write_database(const model::Model& m, std::string& o) {
   const auto& db = m.database;
   const std::pair<const char*, Real> dbs[] = {{"*DATABASE_RCFORC", db.rcforc}, {"*DATABASE_SPCFORC", db.spcforc},
                                               {"*DATABASE_NODOUT", db.nodout}, {"*DATABASE_GLSTAT", db.glstat},
@@ -230,7 +229,10 @@ std::string write_keyword_string(const model::Model& m) {
     o += "*DATABASE_HISTORY_NODE\n";
     write_id_list(db.history_nodes, o);
   }
+}
 
+/// Parts, sections, materials and hourglass cards.
+void write_parts(const model::Model& m, std::string& o) {
   for (const auto& p : m.parts) {
     o += "*PART\n" + heading(p.title);
     o += "$#     PID     SECID       MID     EOSID      HGID\n";
@@ -250,7 +252,10 @@ std::string write_keyword_string(const model::Model& m) {
     o += "*HOURGLASS\n$#    HGID       IHQ        QM       IBQ        Q1        Q2\n";
     o += CardOut().i(h.hgid).i(h.ihq).r(h.qm).blank().r(h.q1).r(h.q2).str();
   }
+}
 
+/// Node, segment and part sets.
+void write_sets(const model::Model& m, std::string& o) {
   for (const auto& s : m.node_sets) {
     o += s.title.empty() ? "*SET_NODE_LIST\n" : "*SET_NODE_LIST_TITLE\n" + heading(s.title);
     o += "$#     SID\n" + CardOut().i(s.sid).str();
@@ -266,7 +271,10 @@ std::string write_keyword_string(const model::Model& m) {
     o += "$#     SID\n" + CardOut().i(s.sid).str();
     write_id_list(s.parts, o);
   }
+}
 
+/// Supports, prescribed motions, loads and initial velocities.
+void write_boundaries_and_loads(const model::Model& m, std::string& o) {
   for (const auto& s : m.spcs) {
     const bool with_id = s.id != 0 || !s.title.empty();
     const std::string kw = s.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET";
@@ -302,6 +310,10 @@ std::string write_keyword_string(const model::Model& m) {
   }
   write_initial_velocities(m, o);
   if (m.body_load_parts) o += "*LOAD_BODY_PARTS\n$#    PSID\n" + CardOut().i(m.body_load_parts->psid).str();
+}
+
+/// Mass and stiffness damping.
+void write_damping(const model::Model& m, std::string& o) {
   if (m.damping_global) {
     const auto& d = *m.damping_global;
     o += "*DAMPING_GLOBAL\n$#    LCID    VALDMP       STX       STY       STZ       SRX       SRY       SRZ\n";
@@ -326,6 +338,10 @@ std::string write_keyword_string(const model::Model& m) {
                : "*DAMPING_PART_STIFFNESS\n$#     PID      COEF\n";
     o += CardOut().i(d.pid).r(d.coef).str();
   }
+}
+
+/// Load curves and boxes.
+void write_curves_and_boxes(const model::Model& m, std::string& o) {
   for (const auto& cv : m.curves) {
     o += cv.title.empty() ? "*DEFINE_CURVE\n" : "*DEFINE_CURVE_TITLE\n" + heading(cv.title);
     o += "$#    LCID      SIDR       SFA       SFO      OFFA      OFFO    DATTYP\n";
@@ -338,8 +354,10 @@ std::string write_keyword_string(const model::Model& m) {
     o += "$#   BOXID       XMN       XMX       YMN       YMX       ZMN       ZMX\n";
     o += CardOut().i(box.boxid).r(box.min[0]).r(box.max[0]).r(box.min[1]).r(box.max[1]).r(box.min[2]).r(box.max[2]).str();
   }
-  write_contacts(m, o);
+}
 
+/// Nodes and elements.
+void write_mesh(const model::Model& m, std::string& o) {
   if (!m.nodes.empty()) {
     o += "*NODE\n$#   NID               X               Y               Z      TC      RC\n";
     for (const auto& n : m.nodes)
@@ -358,6 +376,22 @@ std::string write_keyword_string(const model::Model& m) {
     o += "*ELEMENT_SHELL\n$#   EID     PID      N1      N2      N3      N4\n";
     for (const auto& e : m.shells) o += CardOut(kElementCard).i(e.id).i(e.pid).i(e.n[0]).i(e.n[1]).i(e.n[2]).i(e.n[3]).str();
   }
+}
+
+}  // namespace
+
+std::string write_keyword_string(const model::Model& m) {
+  std::string o = "*KEYWORD\n";
+  if (!m.title.empty()) o += "*TITLE\n" + heading(m.title);
+  write_controls(m, o);
+  write_database(m, o);
+  write_parts(m, o);
+  write_sets(m, o);
+  write_boundaries_and_loads(m, o);
+  write_damping(m, o);
+  write_curves_and_boxes(m, o);
+  write_contacts(m, o);
+  write_mesh(m, o);
   o += "*END\n";
   return o;
 }

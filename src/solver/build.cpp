@@ -96,29 +96,9 @@ struct Builder {
       if (!mats.emplace(model::material_id(mat), &mat).second)
         throw InputError("duplicate material id " + std::to_string(model::material_id(mat)));
 
-    // Elements grouped by part, parts in order of first appearance.
     std::vector<Id> order;
     std::map<Id, PartElements> by_part;
-    auto group = [&](Id pid) -> PartElements& {
-      auto [it, fresh] = by_part.try_emplace(pid);
-      if (fresh) order.push_back(pid);
-      return it->second;
-    };
-    for (const auto& e : m.solids) {
-      const model::Source src{"*ELEMENT_SOLID " + std::to_string(e.id), 0};
-      auto& g = group(e.pid);
-      for (Id nid : e.n) g.hex_conn.push_back(node(nid, src, "a node field"));
-      g.hex_ids.push_back(e.id);
-    }
-    for (const auto& e : m.shells) {
-      const model::Source src{"*ELEMENT_SHELL " + std::to_string(e.id), 0};
-      if (e.n[2] == e.n[3])
-        throw NotImplementedError("*ELEMENT_SHELL " + std::to_string(e.id) +
-                                  ": triangular shells (N3 = N4) are not implemented");
-      auto& g = group(e.pid);
-      for (Id nid : e.n) g.quad_conn.push_back(node(nid, src, "a node field"));
-      g.quad_ids.push_back(e.id);
-    }
+    group_elements_by_part(order, by_part);
 
     for (Id pid : order) {
       PartElements& g = by_part[pid];
@@ -163,29 +143,52 @@ struct Builder {
         build_shell_part(part, *mit->second, laws, g, shsec, ihq, qm, bv, damping);
         continue;
       }
-      const auto& sec = ssec.at(part.secid, part.src, "SECID of *PART");
-      if (sec.elform != 1 && sec.elform != 0)
-        throw NotImplementedError(describe(sec.src) + ": *SECTION_SOLID ELFORM " +
-                                  std::to_string(sec.elform) +
-                                  " is not implemented (only 1, the one-point hexahedron)");
-      HexHourglass hg;
-      if (ihq == 0 || ihq == 1 || ihq == 2 || ihq == 3) {
-        hg.kind = HexHourglass::Kind::viscous;
-      } else if (ihq == 10) {
-        hg.kind = HexHourglass::Kind::physical_stiffness;
-      } else {
-        throw NotImplementedError(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) +
-                                  " of part " + std::to_string(pid) +
-                                  " is not implemented (use 1-3 viscous or 10 physical stiffness)");
-      }
-      hg.coefficient = qm;
-      if (!laws.solid)
-        throw NotImplementedError(describe(part.src) + ": part " + std::to_string(pid) +
-                                  " combines solids with " + laws.keyword + ", which is not implemented");
-      check_material_constants(*mit->second);
-      sim->blocks.push_back(make_hex_block(pid, *laws.solid, hg, bv, std::move(g.hex_conn),
-                                           std::move(g.hex_ids), damping));
+      build_solid_part(part, *mit->second, laws, g, ssec.at(part.secid, part.src, "SECID of *PART"), ihq, qm, bv,
+                       damping);
     }
+  }
+
+  /// Elements grouped by part (connectivity as internal node indices), parts in order of first
+  /// appearance.
+  void group_elements_by_part(std::vector<Id>& order, std::map<Id, PartElements>& by_part) const {
+    auto group = [&](Id pid) -> PartElements& {
+      auto [it, fresh] = by_part.try_emplace(pid);
+      if (fresh) order.push_back(pid);
+      return it->second;
+    };
+    for (const auto& e : m.solids) {
+      const model::Source src{"*ELEMENT_SOLID " + std::to_string(e.id), 0};
+      auto& g = group(e.pid);
+      for (Id nid : e.n) g.hex_conn.push_back(node(nid, src, "a node field"));
+      g.hex_ids.push_back(e.id);
+    }
+    for (const auto& e : m.shells) {
+      const model::Source src{"*ELEMENT_SHELL " + std::to_string(e.id), 0};
+      if (e.n[2] == e.n[3])
+        throw NotImplementedError("*ELEMENT_SHELL " + std::to_string(e.id) +
+                                  ": triangular shells (N3 = N4) are not implemented");
+      auto& g = group(e.pid);
+      for (Id nid : e.n) g.quad_conn.push_back(node(nid, src, "a node field"));
+      g.quad_ids.push_back(e.id);
+    }
+  }
+
+  /// A deformable part of hexahedra: its section, hourglass type and law, into one HexBlock.
+  void build_solid_part(const model::Part& part, const model::Material& material, const MaterialLaws& laws,
+                        PartElements& g, const model::SectionSolid& sec, int ihq, Real qm, BulkViscosity bv,
+                        StiffnessDamping damping) {
+    const Id pid = part.pid;
+    if (sec.elform != 1 && sec.elform != 0)
+      throw NotImplementedError(describe(sec.src) + ": *SECTION_SOLID ELFORM " +
+                                std::to_string(sec.elform) +
+                                " is not implemented (only 1, the one-point hexahedron)");
+    const HexHourglass hg = hex_hourglass(ihq, qm, part);
+    if (!laws.solid)
+      throw NotImplementedError(describe(part.src) + ": part " + std::to_string(pid) +
+                                " combines solids with " + laws.keyword + ", which is not implemented");
+    check_material_constants(material);
+    sim->blocks.push_back(make_hex_block(pid, *laws.solid, hg, bv, std::move(g.hex_conn),
+                                         std::move(g.hex_ids), damping));
   }
 
 

@@ -98,4 +98,19 @@ std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const Id
   return out;
 }
 
+HexHourglass hex_hourglass(int ihq, Real qm, const model::Part& part) {
+  HexHourglass hg;
+  if (ihq == 0 || ihq == 1 || ihq == 2 || ihq == 3) {
+    hg.kind = HexHourglass::Kind::viscous;
+  } else if (ihq == 10) {
+    hg.kind = HexHourglass::Kind::physical_stiffness;
+  } else {
+    throw NotImplementedError(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) +
+                              " of part " + std::to_string(part.pid) +
+                              " is not implemented (use 1-3 viscous or 10 physical stiffness)");
+  }
+  hg.coefficient = qm;
+  return hg;
+}
+
 }  // namespace slideline

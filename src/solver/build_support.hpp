@@ -62,4 +62,8 @@ void check_material_constants(const model::Material& material);
 /// coefficient beta = -COEF; COEF > 0 is LS-DYNA's later, unpublished formulation.
 std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const IdTable<model::Part>& parts);
 
+/// The hexahedron hourglass control of a part's IHQ (1-3 viscous, 10 physical stiffness; 0 means
+/// the default) and coefficient QM; other types are refused naming the part.
+HexHourglass hex_hourglass(int ihq, Real qm, const model::Part& part);
+
 }  // namespace slideline
