@@ -88,6 +88,57 @@ bool parse_contact_name(std::string_view name, ContactName& out) {
   return true;
 }
 
+/// Card 1: the sides.
+void read_card1(const Card& k, model::Contact& c) {
+  k.get(0, "SSID", c.ssid);
+  k.get(1, "MSID", c.msid);
+  k.get(2, "SSTYP", c.sstyp);
+  k.get(3, "MSTYP", c.mstyp);
+  k.get(4, "SBOXID", c.sboxid);
+  k.get(5, "MBOXID", c.mboxid);
+  k.get(6, "SPR", c.spr);
+  k.get(7, "MPR", c.mpr);
+}
+
+/// Card 2: friction, damping, birth and death.
+void read_card2(const Card& k, model::Contact& c) {
+  k.get(0, "FS", c.fs);
+  k.get(1, "FD", c.fd);
+  k.get(2, "DC", c.dc);
+  k.get(3, "VC", c.vc);
+  k.get(4, "VDC", c.vdc);
+  k.get(5, "PENCHK", c.penchk);
+  k.get(6, "BT", c.bt);
+  k.get(7, "DT", c.dt);
+  if (c.dt == 0.0) c.dt = 1e20;  // LS-DYNA: DT = 0 is the default 1e20 (never dies)
+}
+
+/// Card 3: blank and 0 mean the manual's default (1 for the scale factors).
+void read_card3(const Card& k, model::Contact& c) {
+  k.get_or_default(0, "SFS", c.sfs);
+  k.get_or_default(1, "SFM", c.sfm);
+  k.get(2, "SST", c.sst);
+  k.get(3, "MST", c.mst);
+  k.get_or_default(4, "SFST", c.sfst);
+  k.get_or_default(5, "SFMT", c.sfmt);
+  k.get_or_default(6, "FSF", c.fsf);
+  k.get_or_default(7, "VSF", c.vsf);
+}
+
+/// Card 4 of the tiebreak types: the failure fields (forces for Type 8, stresses for Type 9).
+void read_tiebreak_card4(const Card& k, model::Contact& c) {
+  if (c.type == ContactType::tiebreak_nodes) {
+    k.get(0, "NFLF", c.nflf);
+    k.get(1, "SFLF", c.sflf);
+    k.get_or_default(2, "NEN", c.nen);
+    k.get_or_default(3, "MES", c.mes);
+  } else {
+    k.get(0, "OPTION", c.option);
+    k.get(1, "NFLS", c.nfls);
+    k.get(2, "SFLS", c.sfls);
+  }
+}
+
 }  // namespace
 
 bool is_supported_contact(std::string_view keyword) {
@@ -130,59 +181,16 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
   const Line* card2 = nullptr;
   const Line* card3 = nullptr;
   const Line* card4 = nullptr;
-  {
-    Card k(ctx, *l, b.keyword, kStandard);
-    k.get(0, "SSID", c.ssid);
-    k.get(1, "MSID", c.msid);
-    k.get(2, "SSTYP", c.sstyp);
-    k.get(3, "MSTYP", c.mstyp);
-    k.get(4, "SBOXID", c.sboxid);
-    k.get(5, "MBOXID", c.mboxid);
-    k.get(6, "SPR", c.spr);
-    k.get(7, "MPR", c.mpr);
-  }
-  if ((l = card2 = b.take())) {
-    Card k(ctx, *l, b.keyword, kStandard);
-    k.get(0, "FS", c.fs);
-    k.get(1, "FD", c.fd);
-    k.get(2, "DC", c.dc);
-    k.get(3, "VC", c.vc);
-    k.get(4, "VDC", c.vdc);
-    k.get(5, "PENCHK", c.penchk);
-    k.get(6, "BT", c.bt);
-    k.get(7, "DT", c.dt);
-    if (c.dt == 0.0) c.dt = 1e20;  // LS-DYNA: DT = 0 is the default 1e20 (never dies)
-  }
-  // Card 3: blank and 0 mean the manual's default (1 for the scale factors).
-  if ((l = card3 = b.take())) {
-    Card k(ctx, *l, b.keyword, kStandard);
-    k.get_or_default(0, "SFS", c.sfs);
-    k.get_or_default(1, "SFM", c.sfm);
-    k.get(2, "SST", c.sst);
-    k.get(3, "MST", c.mst);
-    k.get_or_default(4, "SFST", c.sfst);
-    k.get_or_default(5, "SFMT", c.sfmt);
-    k.get_or_default(6, "FSF", c.fsf);
-    k.get_or_default(7, "VSF", c.vsf);
-  }
-  if (c.type == ContactType::tiebreak_nodes) {
-    if ((l = card4 = b.take())) {
-      Card k(ctx, *l, b.keyword, kStandard);
-      k.get(0, "NFLF", c.nflf);
-      k.get(1, "SFLF", c.sflf);
-      k.get_or_default(2, "NEN", c.nen);
-      k.get_or_default(3, "MES", c.mes);
-    }
-  } else if (c.type == ContactType::tiebreak_surface) {
-    if ((l = card4 = b.take())) {
-      Card k(ctx, *l, b.keyword, kStandard);
-      k.get(0, "OPTION", c.option);
-      k.get(1, "NFLS", c.nfls);
-      k.get(2, "SFLS", c.sfls);
-    }
+  read_card1(Card(ctx, *l, b.keyword, kStandard), c);
+  if ((l = card2 = b.take())) read_card2(Card(ctx, *l, b.keyword, kStandard), c);
+  if ((l = card3 = b.take())) read_card3(Card(ctx, *l, b.keyword, kStandard), c);
+  if (c.type == ContactType::tiebreak_nodes || c.type == ContactType::tiebreak_surface) {
+    if ((l = card4 = b.take())) read_tiebreak_card4(Card(ctx, *l, b.keyword, kStandard), c);
     // The model keeps one pair of failure fields for both tiebreak types (stresses for type 9).
-    c.nflf = c.nfls;
-    c.sflf = c.sfls;
+    if (c.type == ContactType::tiebreak_surface) {
+      c.nflf = c.nfls;
+      c.sflf = c.sfls;
+    }
   }
   // Type 5 with discrete slave nodes: SST is the nodal contact radius.
   if (c.type == ContactType::nodes_to_surface && c.sstyp == 4) c.radius = c.sst;
