@@ -126,6 +126,20 @@ class HourglassWarnings {
 /// every cycle.
 constexpr long kClockEvery = 16;
 
+/// The end of a completed run: the energy warning if one was raised, the cost and the balance.
+void print_run_end(const slideline::Simulation& sim, double wall) {
+  if (const auto& w = sim.energy_warning())
+    fmt::print(stderr, "warning: the energy balance error passed {:.1f}% at t = {:g} (cycle {}); it ended at {:.2f}% "
+               "(the run stops at {:.1f}%: --energy-limit or *CONTROL_TERMINATION ENDENG)\n",
+               100.0 * w->relative_error, w->time, w->cycle, 100.0 * sim.energy_error_fraction(),
+               100.0 * sim.controls.energy_error_limit);
+  const double element_cycles = double(sim.element_count()) * double(std::max(1L, sim.cycle()));
+  fmt::print("done: {} cycles to t = {:g} in {:.2f} s ({:.1f} ns per element-cycle, contact {:.0f}% of the time)\n",
+             sim.cycle(), sim.time(), wall, element_cycles > 0 ? 1e9 * wall / element_cycles : 0.0,
+             wall > 0 ? 100.0 * sim.contact_seconds() / wall : 0.0);
+  fmt::print("energy balance error {:+.3e} (relative)\n", sim.energy().relative_balance_error());
+}
+
 int run_deck(const RunOptions& o) {
   std::size_t warning_count = 0;
   const auto model = read_deck(o.deck, o.ignore_unsupported, warning_count);
@@ -198,18 +212,7 @@ int run_deck(const RunOptions& o) {
   }
   hourglass_warnings.print_new(*sim, progress);
   progress.finish();
-  if (const auto& w = sim->energy_warning())
-    fmt::print(stderr, "warning: the energy balance error passed {:.1f}% at t = {:g} (cycle {}); it ended at {:.2f}% "
-               "(the run stops at {:.1f}%: --energy-limit or *CONTROL_TERMINATION ENDENG)\n",
-               100.0 * w->relative_error, w->time, w->cycle, 100.0 * sim->energy_error_fraction(),
-               100.0 * sim->controls.energy_error_limit);
-
-  const double wall = progress.elapsed();
-  const double element_cycles = double(sim->element_count()) * double(std::max(1L, sim->cycle()));
-  fmt::print("done: {} cycles to t = {:g} in {:.2f} s ({:.1f} ns per element-cycle, contact {:.0f}% of the time)\n",
-             sim->cycle(), sim->time(), wall, element_cycles > 0 ? 1e9 * wall / element_cycles : 0.0,
-             wall > 0 ? 100.0 * sim->contact_seconds() / wall : 0.0);
-  fmt::print("energy balance error {:+.3e} (relative)\n", sim->energy().relative_balance_error());
+  print_run_end(*sim, progress.elapsed());
   fmt::print("output: {} and {}{}\n", h5_path, h5.xdmf_path(),
              o.csv ? fmt::format(" and {}", (std::filesystem::path(o.out_dir) / (stem + ".csv")).string()) : "");
   return kOk;
