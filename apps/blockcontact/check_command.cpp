@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/model/contact_keywords.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/validate_model.hpp"
 
@@ -14,30 +15,10 @@ namespace blockcontact {
 
 namespace {
 
-const char* contact_type_name(slideline::model::ContactType t) {
-  using slideline::model::ContactType;
-  switch (t) {
-    case ContactType::sliding_only: return "type 1 sliding only";
-    case ContactType::tied_surface: return "type 2 tied surface";
-    case ContactType::surface_to_surface: return "type 3 surface to surface";
-    case ContactType::nodes_to_surface: return "type 5 nodes to surface";
-    case ContactType::tied_nodes: return "type 6 tied nodes";
-    case ContactType::tied_shell_edge: return "type 7 tied shell edge";
-    case ContactType::tiebreak_nodes: return "type 8 tiebreak nodes";
-    case ContactType::tiebreak_surface: return "type 9 tiebreak surface";
-    case ContactType::one_way: return "type 10 one way";
-    case ContactType::automatic: return "type 12 automatic";
-  }
-  return "?";
-}
-
-const char* enforcement_name(slideline::model::Enforcement e) {
-  switch (e) {
-    case slideline::model::Enforcement::kinematic: return "kinematic";
-    case slideline::model::Enforcement::penalty: return "penalty";
-    case slideline::model::Enforcement::lagrange: return "Lagrange";
-  }
-  return "?";
+/// "type 3 surface to surface", from the contact keyword table.
+std::string contact_type_name(const slideline::model::Contact& c) {
+  const auto* k = slideline::model::contact_keyword(c);
+  return k ? fmt::format("type {} {}", k->dyna3d_type, k->name) : std::string("?");
 }
 
 int run_check(const std::string& deck, bool ignore_unsupported) {
@@ -58,7 +39,7 @@ int run_check(const std::string& deck, bool ignore_unsupported) {
   fmt::print("  contacts  {}\n", m.contacts.size());
   for (const auto& c : m.contacts)
     fmt::print("    {:<28} {:<20} {} ({})\n", c.title.empty() ? fmt::format("#{}", c.cid) : c.title,
-               contact_type_name(c.type), enforcement_name(c.enforcement), c.keyword);
+               contact_type_name(c), slideline::model::enforcement_name(c.enforcement), c.keyword);
   fmt::print("  end time  {:g}\n", m.termination.endtim);
   const auto problems = slideline::check_references(m);
   for (const auto& p : problems) fmt::print(stderr, "error: {}\n", slideline::to_string(p));

@@ -1,6 +1,6 @@
 #pragma once
 // The blockcontact subcommands. Each registers itself on the CLI11 app and returns the process
-// exit code through `exit_code` when it runs; a new subcommand (list, generate, verify) is one
+// exit code through `exit_code` when it runs; a new subcommand (list, generate, verify, keywords) is one
 // more register_* function and one call in main.cpp.
 #include <CLI/CLI.hpp>
 
@@ -28,6 +28,7 @@ void register_run(CLI::App& app, int& exit_code);
 void register_check(CLI::App& app, int& exit_code);
 void register_generate(CLI::App& app, int& exit_code);
 void register_verify(CLI::App& app, int& exit_code);
+void register_keywords(CLI::App& app, int& exit_code);
 
 /// Reads a deck, printing the reader's warnings to stderr (also when it then throws).
 /// `ignore_unsupported` drops unsupported physics cards instead of failing (deck_input.cpp).

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   blockcontact::register_check(app, exit_code);
   blockcontact::register_generate(app, exit_code);
   blockcontact::register_verify(app, exit_code);
+  blockcontact::register_keywords(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

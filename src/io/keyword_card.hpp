@@ -11,6 +11,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/model/contact_keywords.hpp"
 #include "slideline/model/model.hpp"
 
 namespace slideline::keyword {
@@ -128,25 +129,36 @@ void read_id_heading(const Context& ctx, const Line& line, std::string_view keyw
 
 namespace slideline::keyword {
 
-/// Reads one block into the model. Returns false when the keyword is not supported (the caller
-/// classifies it, see keyword_unsupported.cpp). Throws InputError on a malformed card.
+/// How a keyword as written matched its row of the keyword table (keyword_table.cpp): whether it
+/// carries the row's final option (_TITLE, _ID, _SET or _LOCAL) and which of the row's other
+/// options (bit k: the k-th; the contact rows' _LAGRANGE and _SLIDING_ONLY) it carries.
+struct KeywordMatch {
+  bool option = false;
+  unsigned modifiers = 0;
+  const model::ContactKeyword* contact = nullptr;  ///< the contact rows' card
+};
+
+/// Reads one block into the model through the keyword table. Returns false when the keyword is
+/// not supported (the caller classifies it, see keyword_unsupported.cpp). Throws InputError on a
+/// malformed card.
 bool read_block(const Context& ctx, Block& block, model::Model& model);
 
 /// True when read_block handles this keyword (so its cards are worth keeping in memory).
 bool is_supported(std::string_view keyword);
 
-/// The *CONTACT_... family (keyword_contacts.cpp). Returns false for an unsupported contact type.
-bool read_contact(const Context& ctx, Block& block, model::Model& model);
-/// True when read_contact reads this keyword.
-bool is_supported_contact(std::string_view keyword);
+/// A *CONTACT_... card of the contact keyword table's row `row` (keyword_contacts.cpp); `heading`
+/// for the _ID / _TITLE option, `lagrange` and `sliding` for the _LAGRANGE and _SLIDING_ONLY options.
+void read_contact(const Context& ctx, Block& block, model::Model& model, const model::ContactKeyword& row,
+                  bool heading, bool lagrange, bool sliding);
 
-/// *INITIAL_VELOCITY, _NODE and _GENERATION (keyword_initial.cpp). False for other keywords.
-bool read_initial(const Context& ctx, Block& block, model::Model& model);
-/// True when read_initial reads this keyword.
-bool is_supported_initial(std::string_view keyword);
+// keyword_initial.cpp: *INITIAL_VELOCITY, _NODE and _GENERATION.
+void read_initial_velocity(const Context& ctx, Block& block, model::Model& model);
+void read_initial_velocity_node(const Context& ctx, Block& block, model::Model& model);
+void read_initial_velocity_generation(const Context& ctx, Block& block, model::Model& model);
 
-/// *PARAMETER and *PARAMETER_EXPRESSION (keyword_parameters.cpp). False for other keywords.
-bool read_parameters(const Context& ctx, Block& block);
+// keyword_parameters.cpp: *PARAMETER and *PARAMETER_EXPRESSION (with or without _LOCAL).
+void read_parameter_values(const Context& ctx, Block& block);
+void read_parameter_expressions(const Context& ctx, Block& block);
 /// Evaluates an arithmetic expression over numbers and parameters (keyword_parameters.cpp);
 /// throws InputError naming `where` on a syntax error, an unknown name or a non-finite result.
 Real evaluate_expression(std::string_view expr, const DeckState& deck, const std::string& where);
@@ -161,11 +173,45 @@ void single_card(const Context& ctx, Block& b, F&& f) {
   warn_extra_cards(ctx, b);
 }
 
-/// *CONTROL_HOURGLASS, _BULK_VISCOSITY, _TERMINATION, _TIMESTEP, _CONTACT (keyword_controls.cpp).
-/// False for other keywords.
-bool read_control(const Context& ctx, Block& block, model::Model& model);
-/// True when read_control reads this keyword.
-bool is_supported_control(std::string_view keyword);
+// keyword_cards.cpp: the other card handlers. `titled` / `with_id` / `set`: the keyword carries its
+// table row's option (_TITLE, _ID, _SET).
+void read_title(const Context& ctx, Block& block, model::Model& model);
+void read_nodes(const Context& ctx, Block& block, model::Model& model);
+void read_solids(const Context& ctx, Block& block, model::Model& model);
+void read_shells(const Context& ctx, Block& block, model::Model& model);
+void read_parts(const Context& ctx, Block& block, model::Model& model);
+void read_section_solid(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_section_shell(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_elastic(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_mooney_rivlin(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_rigid(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_hourglass(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_set_node(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_set_part(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_set_segment(const Context& ctx, Block& block, model::Model& model, bool titled);
+/// *BOUNDARY_SPC_SET (`node` false) or _NODE.
+void read_spc(const Context& ctx, Block& block, model::Model& model, bool with_id, bool node);
+void read_prescribed(const Context& ctx, Block& block, model::Model& model, bool with_id,
+                     model::PrescribedMotion::Target target);
+/// *LOAD_NODE_POINT (`set` false) or _SET.
+void read_load_node(const Context& ctx, Block& block, model::Model& model, bool set);
+void read_load_body(const Context& ctx, Block& block, model::Model& model, Axis axis);
+void read_load_body_parts(const Context& ctx, Block& block, model::Model& model);
+void read_curve(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_box(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_damping_global(const Context& ctx, Block& block, model::Model& model);
+void read_damping_part(const Context& ctx, Block& block, model::Model& model, bool set);
+void read_damping_stiffness(const Context& ctx, Block& block, model::Model& model, bool set);
+void read_database_history_node(const Context& ctx, Block& block, model::Model& model);
+/// *DATABASE_...: one card, DT the output interval, into `dt`.
+void read_database_dt(const Context& ctx, Block& block, Real& dt);
+
+// keyword_controls.cpp: *CONTROL_HOURGLASS, _BULK_VISCOSITY, _TERMINATION, _TIMESTEP, _CONTACT.
+void read_control_hourglass(const Context& ctx, Block& block, model::Model& model);
+void read_control_bulk_viscosity(const Context& ctx, Block& block, model::Model& model);
+void read_control_termination(const Context& ctx, Block& block, model::Model& model);
+void read_control_timestep(const Context& ctx, Block& block, model::Model& model);
+void read_control_contact(const Context& ctx, Block& block, model::Model& model);
 
 // keyword_contact_fields.cpp: the fields of *CONTACT_... and *CONTROL_CONTACT that the solver does
 // not act on. Each is at its default, refused (NotImplementedError naming file, line and field) or,

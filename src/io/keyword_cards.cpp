@@ -1,6 +1,6 @@
-// Card handlers of the keyword reader (but *CONTACT_..., *CONTROL_..., *INITIAL_..., *PARAMETER).
+// Card handlers of the keyword reader (but *CONTACT_..., *CONTROL_..., *INITIAL_..., *PARAMETER); the
+// keyword table that dispatches to them is keyword_table.cpp.
 // Field orders follow the LS-DYNA keyword manual (docs/keywords.md lists them with sources).
-#include <functional>
 #include <string>
 
 #include "keyword_card.hpp"
@@ -41,6 +41,8 @@ const Line* next_record_keep_blank(Block& b) {
   b.next = b.cards.size();
   return nullptr;
 }
+
+}  // namespace
 
 void read_title(const Context&, Block& b, Model& m) {
   if (const Line* l = b.take()) m.title = heading(*l);
@@ -113,6 +115,8 @@ void read_parts(const Context& ctx, Block& b, Model& m) {
   }
 }
 
+namespace {
+
 /// Calls `record(card line)` for each record of a keyword whose _TITLE option puts a heading
 /// card before each record.
 template <class F>
@@ -127,6 +131,8 @@ void each_titled(const Context& ctx, Block& b, bool titled, F&& record) {
     record(*l, title);
   }
 }
+
+}  // namespace
 
 void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
   each_titled(ctx, b, titled, [&](const Line& l, const std::string&) {
@@ -240,6 +246,8 @@ void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
   });
 }
 
+namespace {
+
 /// Reads the card after a set's first card: ids, 8 per card, until the next keyword.
 template <class Out>
 void read_id_list(const Context& ctx, Block& b, const char* name, Out& out) {
@@ -257,6 +265,8 @@ void read_id_list(const Context& ctx, Block& b, const char* name, Out& out) {
     }
   }
 }
+
+}  // namespace
 
 void read_set_node(const Context& ctx, Block& b, Model& m, bool titled) {
   model::NodeSet s;
@@ -466,135 +476,21 @@ void read_damping_stiffness(const Context& ctx, Block& b, Model& m, bool set) {
   }
 }
 
-using Handler = std::function<void(const Context&, Block&, Model&, bool)>;
-
-struct Entry {
-  const char* name;
-  const char* option;  // "_TITLE", "_ID" or nullptr
-  Handler read;
-};
-
-template <class F>
-Handler plain(F f) {
-  return [f](const Context& c, Block& b, Model& m, bool) { f(c, b, m); };
+void read_load_body_parts(const Context& ctx, Block& b, Model& m) {
+  single_card(ctx, b, [&](const Card& k, const Line& l) {
+    model::LoadBodyParts p;
+    k.get(0, "PSID", p.psid);
+    p.src = ctx.source(l.number);
+    m.body_load_parts = p;
+  });
 }
 
-/// *DATABASE_...: one card, DT the output interval.
-Handler database_dt(Real model::DatabaseControl::*dt) {
-  return [dt](const Context& c, Block& b, Model& m, bool) {
-    single_card(c, b, [&](const Card& k, const Line&) { k.get(0, "DT", m.database.*dt); });
-  };
+void read_database_history_node(const Context& ctx, Block& b, Model& m) {
+  read_id_list(ctx, b, "ID", m.database.history_nodes);
 }
 
-const std::vector<Entry>& table() {
-  static const std::vector<Entry> entries = {
-      {"*KEYWORD", nullptr, plain([](const Context&, Block&, Model&) {})},
-      {"*TITLE", nullptr, plain(read_title)},
-      {"*NODE", nullptr, plain(read_nodes)},
-      {"*ELEMENT_SOLID", nullptr, plain(read_solids)},
-      {"*ELEMENT_SHELL", nullptr, plain(read_shells)},
-      {"*PART", nullptr, plain(read_parts)},
-      {"*SECTION_SOLID", "_TITLE", read_section_solid},
-      {"*SECTION_SHELL", "_TITLE", read_section_shell},
-      {"*MAT_ELASTIC", "_TITLE", read_mat_elastic},
-      {"*MAT_001", "_TITLE", read_mat_elastic},
-      {"*MAT_MOONEY-RIVLIN_RUBBER", "_TITLE", read_mat_mooney_rivlin},
-      {"*MAT_027", "_TITLE", read_mat_mooney_rivlin},
-      {"*MAT_RIGID", "_TITLE", read_mat_rigid},
-      {"*MAT_020", "_TITLE", read_mat_rigid},
-      {"*HOURGLASS", "_TITLE", read_hourglass},
-      {"*SET_NODE_LIST", "_TITLE", read_set_node},
-      {"*SET_NODE", "_TITLE", read_set_node},
-      {"*SET_SEGMENT", "_TITLE", read_set_segment},
-      {"*SET_PART_LIST", "_TITLE", read_set_part},
-      {"*SET_PART", "_TITLE", read_set_part},
-      {"*BOUNDARY_SPC_SET", "_ID",
-       [](const Context& c, Block& b, Model& m, bool id) { read_spc(c, b, m, id, false); }},
-      {"*BOUNDARY_SPC_NODE", "_ID",
-       [](const Context& c, Block& b, Model& m, bool id) { read_spc(c, b, m, id, true); }},
-      {"*LOAD_NODE_POINT", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_load_node(c, b, m, false); })},
-      {"*LOAD_NODE_SET", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_load_node(c, b, m, true); })},
-      {"*BOUNDARY_PRESCRIBED_MOTION_SET", "_ID",
-       [](const Context& c, Block& b, Model& m, bool id) {
-         read_prescribed(c, b, m, id, model::PrescribedMotion::Target::set);
-       }},
-      {"*BOUNDARY_PRESCRIBED_MOTION_NODE", "_ID",
-       [](const Context& c, Block& b, Model& m, bool id) {
-         read_prescribed(c, b, m, id, model::PrescribedMotion::Target::node);
-       }},
-      {"*BOUNDARY_PRESCRIBED_MOTION_RIGID", "_ID",
-       [](const Context& c, Block& b, Model& m, bool id) {
-         read_prescribed(c, b, m, id, model::PrescribedMotion::Target::rigid);
-       }},
-      {"*LOAD_BODY_X", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::x); })},
-      {"*LOAD_BODY_Y", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::y); })},
-      {"*LOAD_BODY_Z", nullptr,
-       plain([](const Context& c, Block& b, Model& m) { read_load_body(c, b, m, Axis::z); })},
-      {"*LOAD_BODY_PARTS", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         single_card(c, b, [&](const Card& k, const Line& l) {
-           model::LoadBodyParts p;
-           k.get(0, "PSID", p.psid);
-           p.src = c.source(l.number);
-           m.body_load_parts = p;
-         });
-       })},
-      {"*DEFINE_CURVE", "_TITLE", read_curve},
-      {"*DEFINE_BOX", "_TITLE", read_box},
-      {"*DAMPING_GLOBAL", nullptr, plain(read_damping_global)},
-      {"*DAMPING_PART_MASS", "_SET", read_damping_part},
-      {"*DAMPING_PART_STIFFNESS", "_SET", read_damping_stiffness},
-      {"*DATABASE_HISTORY_NODE", nullptr, plain([](const Context& c, Block& b, Model& m) {
-         read_id_list(c, b, "ID", m.database.history_nodes);
-       })},
-      {"*DATABASE_RCFORC", nullptr, database_dt(&model::DatabaseControl::rcforc)},
-      {"*DATABASE_SPCFORC", nullptr, database_dt(&model::DatabaseControl::spcforc)},
-      {"*DATABASE_NODOUT", nullptr, database_dt(&model::DatabaseControl::nodout)},
-      {"*DATABASE_GLSTAT", nullptr, database_dt(&model::DatabaseControl::glstat)},
-      {"*DATABASE_BINARY_D3PLOT", nullptr, database_dt(&model::DatabaseControl::d3plot)},
-  };
-  return entries;
-}
-
-const Entry* find_entry(std::string_view kw, bool& titled) {
-  for (const auto& e : table()) {
-    const std::string_view name = e.name;
-    if (kw == name) {
-      titled = false;
-      return &e;
-    }
-    if (e.option && kw.size() > name.size() && kw.substr(0, name.size()) == name &&
-        kw.substr(name.size()) == e.option) {
-      titled = true;
-      return &e;
-    }
-  }
-  return nullptr;
-}
-
-}  // namespace
-
-bool is_supported(std::string_view kw) {
-  if (kw.rfind("*CONTACT_", 0) == 0) return is_supported_contact(kw);
-  if (is_supported_initial(kw) || is_supported_control(kw) || kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL" ||
-      kw == "*PARAMETER_EXPRESSION" || kw == "*PARAMETER_EXPRESSION_LOCAL")
-    return true;
-  bool titled = false;
-  return find_entry(kw, titled) != nullptr;
-}
-
-bool read_block(const Context& ctx, Block& block, model::Model& model) {
-  const std::string& kw = block.keyword;
-  if (kw.rfind("*CONTACT_", 0) == 0) return read_contact(ctx, block, model);
-  if (read_initial(ctx, block, model) || read_control(ctx, block, model)) return true;
-  bool titled = false;
-  const Entry* e = find_entry(kw, titled);
-  if (!e) return false;
-  e->read(ctx, block, model, titled);
-  return true;
+void read_database_dt(const Context& ctx, Block& b, Real& dt) {
+  single_card(ctx, b, [&](const Card& k, const Line&) { k.get(0, "DT", dt); });
 }
 
 }  // namespace slideline::keyword

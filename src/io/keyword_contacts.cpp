@@ -1,5 +1,6 @@
-// *CONTACT_... cards: one keyword per DYNA3D interface type (model::ContactType), cards 1-3 and
-// the tiebreak card 4. See docs/keywords.md, "Contact".
+// *CONTACT_... cards: cards 1-3 and the tiebreak card 4 of a keyword of the contact keyword table
+// (model/contact_keywords.hpp), whose name the keyword table (keyword_table.cpp) has matched. See
+// docs/keywords.md, "Contact".
 #include <string>
 #include <string_view>
 
@@ -11,82 +12,6 @@ namespace {
 
 using model::ContactType;
 using model::Enforcement;
-
-struct ContactBase {
-  std::string_view name;  // after "*CONTACT_"
-  ContactType type;
-  bool general;
-};
-
-constexpr ContactBase kBases[] = {
-    {"SLIDING_ONLY", ContactType::sliding_only, false},
-    {"TIED_SURFACE_TO_SURFACE", ContactType::tied_surface, false},
-    {"SURFACE_TO_SURFACE", ContactType::surface_to_surface, false},
-    {"NODES_TO_SURFACE", ContactType::nodes_to_surface, false},
-    {"TIED_NODES_TO_SURFACE", ContactType::tied_nodes, false},
-    {"TIED_SHELL_EDGE_TO_SURFACE", ContactType::tied_shell_edge, false},
-    {"TIEBREAK_NODES_TO_SURFACE", ContactType::tiebreak_nodes, false},
-    {"TIEBREAK_SURFACE_TO_SURFACE", ContactType::tiebreak_surface, false},
-    {"ONE_WAY_SURFACE_TO_SURFACE", ContactType::one_way, false},
-    {"AUTOMATIC_SINGLE_SURFACE", ContactType::automatic, false},
-    {"AUTOMATIC_GENERAL", ContactType::automatic, true},
-};
-
-const ContactBase* find_base(std::string_view name) {
-  for (const auto& b : kBases)
-    if (b.name == name) return &b;
-  return nullptr;
-}
-
-bool strip_suffix(std::string_view& s, std::string_view suffix) {
-  if (s.size() > suffix.size() && s.substr(s.size() - suffix.size()) == suffix) {
-    s.remove_suffix(suffix.size());
-    return true;
-  }
-  return false;
-}
-
-/// DYNA3D enforced these types with kinematic constraints; the others default to penalty.
-Enforcement default_enforcement(ContactType t) {
-  switch (t) {
-    case ContactType::sliding_only:
-    case ContactType::tied_surface:
-    case ContactType::tied_nodes:
-    case ContactType::tied_shell_edge:
-      return Enforcement::kinematic;
-    default:
-      return Enforcement::penalty;
-  }
-}
-
-/// The parts of a contact keyword: base type, options, heading suffix. False when unsupported.
-struct ContactName {
-  const ContactBase* base = nullptr;
-  bool with_heading = false;
-  bool lagrange = false;
-  bool sliding = false;
-};
-
-bool parse_contact_name(std::string_view name, ContactName& out) {
-  if (name.substr(0, 9) != "*CONTACT_") return false;
-  name.remove_prefix(std::string_view("*CONTACT_").size());
-  out.with_heading = strip_suffix(name, "_ID") || strip_suffix(name, "_TITLE");
-  out.base = find_base(name);
-  // Options: _LAGRANGE (Lagrange-multiplier enforcement) and _SLIDING_ONLY (type 10's no-separation
-  // option), in either order, before _ID/_TITLE. Checked only when the name is not a base itself,
-  // so that *CONTACT_SLIDING_ONLY stays type 1.
-  while (!out.base) {
-    if (!out.lagrange && strip_suffix(name, "_LAGRANGE")) {
-      out.lagrange = true;
-    } else if (!out.sliding && strip_suffix(name, "_SLIDING_ONLY")) {
-      out.sliding = true;
-    } else {
-      return false;
-    }
-    out.base = find_base(name);
-  }
-  return true;
-}
 
 /// Card 1: the sides.
 void read_card1(const Card& k, model::Contact& c) {
@@ -141,26 +66,15 @@ void read_tiebreak_card4(const Card& k, model::Contact& c) {
 
 }  // namespace
 
-bool is_supported_contact(std::string_view keyword) {
-  ContactName n;
-  return parse_contact_name(keyword, n);
-}
-
-bool read_contact(const Context& ctx, Block& b, model::Model& m) {
-  ContactName n;
-  if (!parse_contact_name(b.keyword, n)) return false;
-  const ContactBase* base = n.base;
-  const bool with_heading = n.with_heading;
-  const bool lagrange = n.lagrange;
-  const bool sliding = n.sliding;
-
+void read_contact(const Context& ctx, Block& b, model::Model& m, const model::ContactKeyword& row,
+                  bool with_heading, bool lagrange, bool sliding) {
   model::Contact c;
   c.keyword = b.keyword;
-  c.type = base->type;
-  c.automatic_general = base->general;
-  c.enforcement = lagrange ? Enforcement::lagrange : default_enforcement(c.type);
+  c.type = row.type;
+  c.automatic_general = row.automatic_general;
+  c.enforcement = lagrange ? Enforcement::lagrange : row.enforcement;
   if (sliding) {
-    if (c.type == ContactType::one_way)
+    if (row.sliding_option)
       c.sliding_only_option = true;
     else
       // The option changes the physics (no separation): refuse it where it means nothing.
@@ -197,7 +111,6 @@ bool read_contact(const Context& ctx, Block& b, model::Model& m) {
   check_contact_fields(ctx, c, card1, card2, card3, card4);
   read_contact_optional_cards(ctx, b);
   m.contacts.push_back(std::move(c));
-  return true;
 }
 
 }  // namespace slideline::keyword

@@ -10,6 +10,8 @@ namespace {
 
 using model::Model;
 
+}  // namespace
+
 void read_control_hourglass(const Context& ctx, Block& b, Model& m) {
   single_card(ctx, b, [&](const Card& k, const Line&) {
     k.get_or_default(0, "IHQ", m.control_hourglass.ihq);
@@ -77,34 +79,6 @@ void read_control_contact(const Context& ctx, Block& b, Model& m) {
   }
   // Cards 2-6: each field at its default, refused or warned about (keyword_contact_fields.cpp).
   read_control_contact_cards(ctx, b, t, line);
-}
-
-struct ControlEntry {
-  std::string_view name;
-  void (*read)(const Context&, Block&, Model&);
-};
-
-constexpr ControlEntry kControls[] = {
-    {"*CONTROL_HOURGLASS", read_control_hourglass},     {"*CONTROL_BULK_VISCOSITY", read_control_bulk_viscosity},
-    {"*CONTROL_TERMINATION", read_control_termination}, {"*CONTROL_TIMESTEP", read_control_timestep},
-    {"*CONTROL_CONTACT", read_control_contact},
-};
-
-}  // namespace
-
-bool is_supported_control(std::string_view keyword) {
-  for (const auto& e : kControls)
-    if (e.name == keyword) return true;
-  return false;
-}
-
-bool read_control(const Context& ctx, Block& block, model::Model& model) {
-  for (const auto& e : kControls)
-    if (e.name == block.keyword) {
-      e.read(ctx, block, model);
-      return true;
-    }
-  return false;
 }
 
 }  // namespace slideline::keyword

@@ -33,7 +33,9 @@ const Line& require_card(const Context& ctx, Block& b, const Line& first, const 
   return *l;
 }
 
-void read_node(const Context& ctx, Block& b, model::Model& m) {
+}  // namespace
+
+void read_initial_velocity_node(const Context& ctx, Block& b, model::Model& m) {
   while (const Line* l = next_nonblank(b)) {
     Card c(ctx, *l, b.keyword, kStandard);
     model::InitialVelocityNode iv;
@@ -45,7 +47,7 @@ void read_node(const Context& ctx, Block& b, model::Model& m) {
   }
 }
 
-void read_set(const Context& ctx, Block& b, model::Model& m) {
+void read_initial_velocity(const Context& ctx, Block& b, model::Model& m) {
   while (const Line* l = next_nonblank(b)) {
     Card c(ctx, *l, b.keyword, kStandard);
     model::InitialVelocity iv;
@@ -66,7 +68,7 @@ void read_set(const Context& ctx, Block& b, model::Model& m) {
   }
 }
 
-void read_generation(const Context& ctx, Block& b, model::Model& m) {
+void read_initial_velocity_generation(const Context& ctx, Block& b, model::Model& m) {
   while (const Line* l = next_nonblank(b)) {
     Card c(ctx, *l, b.keyword, kStandard);
     model::InitialVelocityGeneration g;
@@ -90,26 +92,6 @@ void read_generation(const Context& ctx, Block& b, model::Model& m) {
     g.at.file = ctx.file_index;
     m.initial_velocity_generations.push_back(g);
   }
-}
-
-}  // namespace
-
-bool is_supported_initial(std::string_view kw) {
-  return kw == "*INITIAL_VELOCITY" || kw == "*INITIAL_VELOCITY_NODE" || kw == "*INITIAL_VELOCITY_GENERATION";
-}
-
-bool read_initial(const Context& ctx, Block& block, model::Model& model) {
-  const std::string& kw = block.keyword;
-  if (kw == "*INITIAL_VELOCITY") {
-    read_set(ctx, block, model);
-  } else if (kw == "*INITIAL_VELOCITY_NODE") {
-    read_node(ctx, block, model);
-  } else if (kw == "*INITIAL_VELOCITY_GENERATION") {
-    read_generation(ctx, block, model);
-  } else {
-    return false;
-  }
-  return true;
 }
 
 }  // namespace slideline::keyword

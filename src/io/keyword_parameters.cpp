@@ -237,7 +237,9 @@ Parameter make_value(const Context& ctx, int line, std::string_view keyword, cha
   return p;
 }
 
-void read_plain(const Context& ctx, Block& b) {
+}  // namespace
+
+void read_parameter_values(const Context& ctx, Block& b) {
   while (const Line* l = b.take()) {
     if (trim(l->text).empty()) continue;
     Card c(ctx, *l, b.keyword, kStandard);
@@ -268,7 +270,7 @@ void read_plain(const Context& ctx, Block& b) {
   }
 }
 
-void read_expressions(const Context& ctx, Block& b) {
+void read_parameter_expressions(const Context& ctx, Block& b) {
   while (const Line* l = b.take()) {
     const std::string_view text = l->text;
     if (trim(text).empty()) continue;
@@ -294,23 +296,8 @@ void read_expressions(const Context& ctx, Block& b) {
   }
 }
 
-}  // namespace
-
 Real evaluate_expression(std::string_view expr, const DeckState& deck, const std::string& where) {
   return Expression(expr, deck, where).evaluate();
-}
-
-bool read_parameters(const Context& ctx, Block& block) {
-  const std::string& kw = block.keyword;
-  if (kw == "*PARAMETER" || kw == "*PARAMETER_LOCAL") {
-    read_plain(ctx, block);
-    return true;
-  }
-  if (kw == "*PARAMETER_EXPRESSION" || kw == "*PARAMETER_EXPRESSION_LOCAL") {
-    read_expressions(ctx, block);
-    return true;
-  }
-  return false;
 }
 
 }  // namespace slideline::keyword

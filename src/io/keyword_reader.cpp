@@ -1,7 +1,7 @@
 // Keyword deck reader: field parsing with located errors and parameter substitution (Card), and
 // the entry points, which stream a deck line by line into keyword blocks, follow *INCLUDEs and
-// hand each block to its card handler (keyword_cards.cpp, keyword_contacts.cpp,
-// keyword_parameters.cpp) or to the unsupported-card log (keyword_unsupported.cpp).
+// hand each block to its card handler through the keyword table (keyword_table.cpp) or to the
+// unsupported-card log (keyword_unsupported.cpp).
 #include "slideline/io/keyword_reader.hpp"
 
 #include <algorithm>
@@ -429,7 +429,6 @@ class DeckReader {
       include(ctx, block, depth);
       return;
     }
-    if (read_parameters(ctx, block)) return;
     if (read_block(ctx, block, model_)) return;
     log_.add(ctx, block, pending.cards);
   }

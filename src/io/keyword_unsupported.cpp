@@ -3,49 +3,45 @@
 #include "keyword_unsupported.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 
 #include "slideline/core/error.hpp"
+#include "slideline/io/keyword_table.hpp"
 #include "slideline/model/unsupported.hpp"
 
 namespace slideline::keyword {
 namespace {
 
-struct Rule {
-  std::string_view prefix;
-  CardKind kind;
-  std::string_view what;
-};
-
 // First matching prefix wins, so the specific rules come before the general ones. A keyword that
 // matches nothing is treated as physics: silently dropping a card we do not know is how a run
 // gives a wrong answer with exit code 0.
-constexpr Rule kRules[] = {
-    {"*CONTROL_IMPLICIT", CardKind::physics, "implicit analysis control"},
-    {"*CONTROL_", CardKind::output, "control or tuning card"},
-    {"*DATABASE_", CardKind::output, "output request"},
-    {"*PARAMETER_DUPLICATION", CardKind::output, "parameter redefinition control"},
-    {"*COMMENT", CardKind::output, "comment"},
-    {"*MAT_", CardKind::physics, "material"},
-    {"*MAT", CardKind::physics, "material"},
-    {"*SECTION_", CardKind::physics, "section"},
-    {"*ELEMENT_", CardKind::physics, "element kind"},
-    {"*LOAD_", CardKind::physics, "load"},
-    {"*BOUNDARY_", CardKind::physics, "boundary condition"},
-    {"*INITIAL_", CardKind::physics, "initial condition"},
-    {"*CONSTRAINED_", CardKind::physics, "constraint"},
-    {"*RIGIDWALL", CardKind::physics, "rigid wall"},
-    {"*CONTACT_", CardKind::physics, "contact type"},
-    {"*CONTACT", CardKind::physics, "contact type"},
-    {"*PART", CardKind::physics, "part option"},
-    {"*EOS", CardKind::physics, "equation of state"},
-    {"*HOURGLASS", CardKind::physics, "hourglass option"},
-    {"*DAMPING_", CardKind::physics, "damping"},
-    {"*DEFINE_", CardKind::physics, "definition (curve, table, box, coordinate system, ...)"},
-    {"*SET_", CardKind::physics, "set"},
-    {"*NODE", CardKind::physics, "node option"},
-    {"*INCLUDE", CardKind::physics, "include option"},
-    {"*PARAMETER", CardKind::physics, "parameter option"},
+constexpr UnsupportedKeywordClass kRules[] = {
+    {"*CONTROL_IMPLICIT", true, "implicit analysis control"},
+    {"*CONTROL_", false, "control or tuning card"},
+    {"*DATABASE_", false, "output request"},
+    {"*PARAMETER_DUPLICATION", false, "parameter redefinition control"},
+    {"*COMMENT", false, "comment"},
+    {"*MAT_", true, "material"},
+    {"*MAT", true, "material"},
+    {"*SECTION_", true, "section"},
+    {"*ELEMENT_", true, "element kind"},
+    {"*LOAD_", true, "load"},
+    {"*BOUNDARY_", true, "boundary condition"},
+    {"*INITIAL_", true, "initial condition"},
+    {"*CONSTRAINED_", true, "constraint"},
+    {"*RIGIDWALL", true, "rigid wall"},
+    {"*CONTACT_", true, "contact type"},
+    {"*CONTACT", true, "contact type"},
+    {"*PART", true, "part option"},
+    {"*EOS", true, "equation of state"},
+    {"*HOURGLASS", true, "hourglass option"},
+    {"*DAMPING_", true, "damping"},
+    {"*DEFINE_", true, "definition (curve, table, box, coordinate system, ...)"},
+    {"*SET_", true, "set"},
+    {"*NODE", true, "node option"},
+    {"*INCLUDE", true, "include option"},
+    {"*PARAMETER", true, "parameter option"},
 };
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
@@ -101,7 +97,7 @@ std::string users(const model::Model& m, const model::UnsupportedCard& u) {
 
 Classification classify(std::string_view keyword) {
   for (const auto& r : kRules)
-    if (starts_with(keyword, r.prefix)) return {r.kind, r.what};
+    if (starts_with(keyword, r.prefix)) return {r.physics ? CardKind::physics : CardKind::output, r.what};
   return {CardKind::physics, "keyword not in slideline's tables"};
 }
 
@@ -173,6 +169,11 @@ void UnsupportedLog::finish(model::Model& model, std::vector<Diagnostic>* warnin
 }  // namespace slideline::keyword
 
 namespace slideline {
+
+const std::vector<UnsupportedKeywordClass>& unsupported_keyword_classes() {
+  static const std::vector<UnsupportedKeywordClass> classes(std::begin(keyword::kRules), std::end(keyword::kRules));
+  return classes;
+}
 
 std::vector<Diagnostic> describe_dropped(const model::Model& m) {
   std::vector<Diagnostic> out;

@@ -12,6 +12,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/overloaded.hpp"
+#include "slideline/model/contact_keywords.hpp"
 
 namespace slideline {
 namespace {
@@ -137,29 +138,19 @@ void write_materials(const model::Model& m, std::string& o) {
                mat);
 }
 
-const char* contact_base(const model::Contact& c) {
-  using model::ContactType;
-  switch (c.type) {
-    case ContactType::sliding_only: return "*CONTACT_SLIDING_ONLY";
-    case ContactType::tied_surface: return "*CONTACT_TIED_SURFACE_TO_SURFACE";
-    case ContactType::surface_to_surface: return "*CONTACT_SURFACE_TO_SURFACE";
-    case ContactType::nodes_to_surface: return "*CONTACT_NODES_TO_SURFACE";
-    case ContactType::tied_nodes: return "*CONTACT_TIED_NODES_TO_SURFACE";
-    case ContactType::tied_shell_edge: return "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE";
-    case ContactType::tiebreak_nodes: return "*CONTACT_TIEBREAK_NODES_TO_SURFACE";
-    case ContactType::tiebreak_surface: return "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE";
-    case ContactType::one_way: return "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE";
-    case ContactType::automatic:
-      return c.automatic_general ? "*CONTACT_AUTOMATIC_GENERAL" : "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
-  }
-  return "*CONTACT_SURFACE_TO_SURFACE";
+/// The card's row of the contact keyword table.
+const model::ContactKeyword& contact_row(const model::Contact& c) {
+  const model::ContactKeyword* k = model::contact_keyword(c);
+  if (!k) throw Error("contact of type " + std::to_string(static_cast<int>(c.type)) + " has no keyword");
+  return *k;
 }
 
 void write_contacts(const model::Model& m, std::string& o) {
   using model::ContactType;
   for (const auto& c : m.contacts) {
-    std::string kw = contact_base(c);
-    if (c.type == ContactType::one_way && c.sliding_only_option) kw += "_SLIDING_ONLY";
+    const model::ContactKeyword& row = contact_row(c);
+    std::string kw(row.keyword);
+    if (row.sliding_option && c.sliding_only_option) kw += "_SLIDING_ONLY";
     if (c.enforcement == model::Enforcement::lagrange) kw += "_LAGRANGE";
     const bool with_id = c.cid != 0 || !c.title.empty();
     o += kw + (with_id ? "_ID\n" : "\n");

@@ -1,0 +1,76 @@
+#pragma once
+/// The one table of the *CONTACT_... keywords: for each supported base name, the DYNA3D interface
+/// type it maps to, its default enforcement and the name `blockcontact check` prints. The keyword
+/// reader parses names through it, the writer writes names from it, and the CLI prints from it:
+/// adding a contact card is one row here (plus its physics; docs/architecture.md, "A contact
+/// card").
+#include <string_view>
+
+#include "slideline/model/model.hpp"
+
+namespace slideline::model {
+
+struct ContactKeyword {
+  std::string_view keyword;   ///< the base name, e.g. "*CONTACT_SURFACE_TO_SURFACE" (options follow it)
+  ContactType type;
+  bool automatic_general;     ///< the _GENERAL spelling of type 12 (Contact::automatic_general)
+  int dyna3d_type;            ///< DYNA3D's interface type number (1 to 12)
+  Enforcement enforcement;    ///< without the _LAGRANGE option (DYNA3D's enforcement of the type)
+  bool sliding_option;        ///< takes the _SLIDING_ONLY option (Type 10's no-separation option)
+  std::string_view name;      ///< what the CLI prints after "type N", e.g. "surface to surface"
+};
+
+inline constexpr ContactKeyword kContactKeywords[] = {
+    {"*CONTACT_SLIDING_ONLY", ContactType::sliding_only, false, 1, Enforcement::kinematic, false,
+     "sliding only"},
+    {"*CONTACT_TIED_SURFACE_TO_SURFACE", ContactType::tied_surface, false, 2, Enforcement::kinematic, false,
+     "tied surface"},
+    {"*CONTACT_SURFACE_TO_SURFACE", ContactType::surface_to_surface, false, 3, Enforcement::penalty, false,
+     "surface to surface"},
+    {"*CONTACT_NODES_TO_SURFACE", ContactType::nodes_to_surface, false, 5, Enforcement::penalty, false,
+     "nodes to surface"},
+    {"*CONTACT_TIED_NODES_TO_SURFACE", ContactType::tied_nodes, false, 6, Enforcement::kinematic, false,
+     "tied nodes"},
+    {"*CONTACT_TIED_SHELL_EDGE_TO_SURFACE", ContactType::tied_shell_edge, false, 7, Enforcement::kinematic, false,
+     "tied shell edge"},
+    {"*CONTACT_TIEBREAK_NODES_TO_SURFACE", ContactType::tiebreak_nodes, false, 8, Enforcement::penalty, false,
+     "tiebreak nodes"},
+    {"*CONTACT_TIEBREAK_SURFACE_TO_SURFACE", ContactType::tiebreak_surface, false, 9, Enforcement::penalty, false,
+     "tiebreak surface"},
+    {"*CONTACT_ONE_WAY_SURFACE_TO_SURFACE", ContactType::one_way, false, 10, Enforcement::penalty, true,
+     "one way"},
+    {"*CONTACT_AUTOMATIC_SINGLE_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "automatic"},
+    {"*CONTACT_AUTOMATIC_GENERAL", ContactType::automatic, true, 12, Enforcement::penalty, false, "automatic"},
+};
+
+// ContactType's values are DYNA3D's type numbers: the table must agree.
+static_assert([] {
+  for (const auto& k : kContactKeywords)
+    if (static_cast<int>(k.type) != k.dyna3d_type) return false;
+  return true;
+}());
+
+/// The row of a contact card (its type, and for type 12 the _GENERAL spelling), or nullptr for a
+/// type no row has.
+constexpr const ContactKeyword* contact_keyword(const Contact& c) {
+  const ContactKeyword* first = nullptr;
+  for (const auto& k : kContactKeywords) {
+    if (k.type != c.type) continue;
+    if (k.automatic_general == c.automatic_general) return &k;
+    if (!first) first = &k;
+  }
+  return first;
+}
+
+/// "kinematic", "penalty" or "Lagrange".
+constexpr std::string_view enforcement_name(Enforcement e) {
+  switch (e) {
+    case Enforcement::kinematic: return "kinematic";
+    case Enforcement::penalty: return "penalty";
+    case Enforcement::lagrange: return "Lagrange";
+  }
+  return "?";
+}
+
+}  // namespace slideline::model

@@ -1,0 +1,83 @@
+// The contact keyword table (model/contact_keywords.hpp) behind the reader and the writer: every
+// row, with each option it takes, reads as the row says and is written back under the same name.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "slideline/io/keyword_reader.hpp"
+#include "slideline/io/keyword_writer.hpp"
+#include "slideline/model/contact_keywords.hpp"
+
+namespace slideline {
+namespace {
+
+using model::ContactKeyword;
+using model::Enforcement;
+
+struct Spelling {
+  std::string keyword;
+  bool lagrange, sliding, heading;
+};
+
+std::vector<Spelling> spellings(const ContactKeyword& k) {
+  const std::string base(k.keyword);
+  std::vector<Spelling> s = {{base, false, false, false},
+                             {base + "_LAGRANGE", true, false, false},
+                             {base + "_ID", false, false, true},
+                             {base + "_LAGRANGE_TITLE", true, false, true}};
+  if (k.sliding_option) {
+    s.push_back({base + "_SLIDING_ONLY", false, true, false});
+    s.push_back({base + "_LAGRANGE_SLIDING_ONLY_ID", true, true, true});
+  }
+  return s;
+}
+
+TEST(ContactKeywords, EachRowReadsAsItSaysAndIsWrittenUnderItsName) {
+  int checked = 0;
+  for (const auto& k : model::kContactKeywords)
+    for (const auto& s : spellings(k)) {
+      SCOPED_TRACE(s.keyword);
+      const std::string deck = "*KEYWORD\n" + s.keyword + "\n" + (s.heading ? "         7a contact\n" : "") +
+                               "1,2\n*END\n";
+      const auto m = read_keyword_string(deck, "c.k");
+      ASSERT_EQ(m.contacts.size(), 1u);
+      const auto& c = m.contacts[0];
+      EXPECT_EQ(c.type, k.type);
+      EXPECT_EQ(c.automatic_general, k.automatic_general);
+      EXPECT_EQ(c.enforcement, s.lagrange ? Enforcement::lagrange : k.enforcement);
+      EXPECT_EQ(c.sliding_only_option, s.sliding);
+      EXPECT_EQ(model::contact_keyword(c), &k);
+      const std::string written = write_keyword_string(m);
+      EXPECT_NE(written.find("\n" + std::string(k.keyword)), std::string::npos);
+      const auto again = read_keyword_string(written, "again.k");
+      ASSERT_EQ(again.contacts.size(), 1u);
+      EXPECT_EQ(again.contacts[0].type, k.type);
+      EXPECT_EQ(again.contacts[0].enforcement, c.enforcement);
+      EXPECT_EQ(again.contacts[0].automatic_general, k.automatic_general);
+      EXPECT_EQ(again.contacts[0].sliding_only_option, s.sliding);
+      EXPECT_EQ(again.contacts[0].cid, c.cid);
+      EXPECT_EQ(again.contacts[0].title, c.title);
+      ++checked;
+    }
+  EXPECT_GE(checked, 4 * 11);
+}
+
+// The CLI's names (blockcontact check) and the DYNA3D numbers, from the table.
+TEST(ContactKeywords, NamesAndTypeNumbers) {
+  model::Contact c;
+  c.type = model::ContactType::automatic;
+  c.automatic_general = true;
+  ASSERT_NE(model::contact_keyword(c), nullptr);
+  EXPECT_EQ(model::contact_keyword(c)->keyword, "*CONTACT_AUTOMATIC_GENERAL");
+  EXPECT_EQ(model::contact_keyword(c)->dyna3d_type, 12);
+  c.automatic_general = false;
+  EXPECT_EQ(model::contact_keyword(c)->keyword, "*CONTACT_AUTOMATIC_SINGLE_SURFACE");
+  c.type = model::ContactType::tied_shell_edge;
+  EXPECT_EQ(model::contact_keyword(c)->name, "tied shell edge");
+  EXPECT_EQ(model::contact_keyword(c)->enforcement, Enforcement::kinematic);
+  EXPECT_EQ(model::enforcement_name(Enforcement::lagrange), "Lagrange");
+}
+
+}  // namespace
+}  // namespace slideline
