@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/io/keyword_table.hpp"
 #include "slideline/io/keyword_writer.hpp"
 #include "slideline/model/contact_keywords.hpp"
 
@@ -77,6 +78,22 @@ TEST(ContactKeywords, NamesAndTypeNumbers) {
   EXPECT_EQ(model::contact_keyword(c)->name, "tied shell edge");
   EXPECT_EQ(model::contact_keyword(c)->enforcement, Enforcement::kinematic);
   EXPECT_EQ(model::enforcement_name(Enforcement::lagrange), "Lagrange");
+}
+
+// The reader's table takes a contact's options in its grammar only: _LAGRANGE and _SLIDING_ONLY
+// once each, in either order, then at most one of _ID / _TITLE; other keywords their one option.
+TEST(ContactKeywords, TheReadersTableKeepsTheOptionGrammar) {
+  for (const char* kw : {"*CONTACT_SURFACE_TO_SURFACE", "*CONTACT_SURFACE_TO_SURFACE_LAGRANGE_ID",
+                         "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_SLIDING_ONLY_LAGRANGE_TITLE",
+                         "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_LAGRANGE_SLIDING_ONLY", "*CONTACT_SLIDING_ONLY",
+                         "*CONTACT_SLIDING_ONLY_LAGRANGE", "*SET_NODE_LIST_TITLE", "*PARAMETER_EXPRESSION_LOCAL",
+                         "*DAMPING_PART_MASS_SET", "*BOUNDARY_SPC_SET_ID"})
+    EXPECT_TRUE(reads_keyword(kw)) << kw;
+  for (const char* kw : {"*CONTACT_SURFACE_TO_SURFACE_ID_LAGRANGE", "*CONTACT_SURFACE_TO_SURFACE_LAGRANGE_LAGRANGE",
+                         "*CONTACT_SURFACE_TO_SURFACE_ID_TITLE", "*CONTACT_SURFACE", "*CONTACT_",
+                         "*SET_NODE_LIST_ID", "*SET_NODE_LIST_TITLE_TITLE", "*NODE_TITLE", "*PARAMETER_DUPLICATION",
+                         "*MAT_ELASTIC_LAGRANGE", "*CONTROL_CONTACT_TITLE"})
+    EXPECT_FALSE(reads_keyword(kw)) << kw;
 }
 
 }  // namespace
