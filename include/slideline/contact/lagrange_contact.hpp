@@ -37,6 +37,7 @@
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/enforcement/lagrange.hpp"
+#include "slideline/contact/enforcement/rigid_master_groups.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/search/fcl_broad_phase.hpp"
@@ -131,7 +132,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     constraints_.reserve(ns);
     owner_.clear();
     owner_.reserve(ns);
-    setup_rigid_groups(c);
+    rigid_.setup(master(), c, s_.rigid_fixed_translations);
     predicted_.resize(c.nodes.size());
     constraint_of_.assign(c.nodes.size(), -1);
     keep_.reserve(ns);
@@ -159,8 +160,8 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     }
     LagrangeSolveOptions opt = s_.solve;
     opt.tolerance = tolerance_;
-    update_rigid_groups(view, times);
-    const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
+    rigid_.update(view, times);
+    const RigidGroups* groups = rigid_.groups();
     LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_, &master_force_);
     for (int pass = 1; pass < s_.projection_passes; ++pass) {
       reproject(view, times, groups);
@@ -347,64 +348,6 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     }
   }
 
-  /// One group per rigid part on the master side: its nodes are the part's nodes (from the
-  /// context's sets when given, else the part's master-surface nodes).
-  void setup_rigid_groups(const ContactContext& c) {
-    group_of_.clear();
-    group_nodes_.clear();
-    group_mass_.clear();
-    if (c.rigid.empty()) return;
-    std::vector<Id> parts;
-    for (Index s = 0; s < master().segment_count(); ++s) {
-      const Index* n = &master().conn[4 * static_cast<std::size_t>(s)];
-      if (!c.rigid[static_cast<std::size_t>(n[0])]) continue;
-      const Id pid = master().part[static_cast<std::size_t>(s)];
-      if (std::find(parts.begin(), parts.end(), pid) == parts.end()) parts.push_back(pid);
-    }
-    if (parts.empty()) return;
-    group_of_.assign(c.nodes.size(), -1);
-    for (std::size_t g = 0; g < parts.size(); ++g) {
-      std::vector<Index> nodes;
-      const auto f = c.sets ? c.sets->part_nodes.find(parts[g]) : decltype(c.sets->part_nodes.end()){};
-      if (c.sets && f != c.sets->part_nodes.end()) {
-        nodes = f->second;
-      } else {
-        for (Index s = 0; s < master().segment_count(); ++s)
-          if (master().part[static_cast<std::size_t>(s)] == parts[g])
-            for (int k = 0; k < 4; ++k) nodes.push_back(master().conn[4 * static_cast<std::size_t>(s) + k]);
-        std::sort(nodes.begin(), nodes.end());
-        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      }
-      for (Index n : nodes)
-        if (c.rigid[static_cast<std::size_t>(n)] && group_of_[static_cast<std::size_t>(n)] < 0)
-          group_of_[static_cast<std::size_t>(n)] = static_cast<Index>(g);
-      group_nodes_.push_back(std::move(nodes));
-    }
-    group_held_.assign(parts.size(), {0, 0, 0});
-    for (std::size_t g = 0; g < parts.size(); ++g)
-      for (const auto& [pid, held] : s_.rigid_fixed_translations)
-        if (pid == parts[g]) group_held_[g] = held;
-    group_mass_.assign(parts.size(), 0.0);
-    group_compliance_.assign(parts.size(), Vec3::Zero());
-    group_force_.assign(parts.size(), Vec3::Zero());
-    groups_ = {group_of_, group_compliance_, group_force_};
-  }
-
-  void update_rigid_groups(const ConstraintView& view, const StepTimes& times) {
-    for (std::size_t g = 0; g < group_mass_.size(); ++g) {
-      Real m = 0.0, h = 0.0;
-      std::array<bool, 3> fixed{group_held_[g][0] != 0, group_held_[g][1] != 0, group_held_[g][2] != 0};
-      for (Index n : group_nodes_[g]) {
-        if (group_of_[static_cast<std::size_t>(n)] != static_cast<Index>(g)) continue;
-        m += view.nodes.mass[static_cast<std::size_t>(n)];
-        h = 0.5 * view.damping[static_cast<std::size_t>(n)] * times.dt_avg;
-        for (int c = 0; c < 3; ++c) fixed[c] = fixed[c] || view.fixed[c][static_cast<std::size_t>(n)];
-      }
-      const Real cg = m > 0.0 ? times.dt_next * times.dt_avg / ((1.0 + h) * m) : 0.0;
-      group_compliance_[g] = {fixed[0] ? 0.0 : cg, fixed[1] ? 0.0 : cg, fixed[2] ? 0.0 : cg};
-    }
-  }
-
   /// The segment slave i is on (its contact point's).
   Index segment_of(Index i) const { return pairs_.points()[static_cast<std::size_t>(i)].segment; }
 
@@ -468,12 +411,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   Real friction_work_ = 0.0;
   Real max_penetration_ = 0.0;
   LagrangeSolveStats stats_;
-  std::vector<Index> group_of_;
-  std::vector<std::vector<Index>> group_nodes_;
-  std::vector<Real> group_mass_;
-  std::vector<std::array<int, 3>> group_held_;
-  std::vector<Vec3> group_compliance_, group_force_;
-  RigidGroups groups_;
+  RigidMasterGroups rigid_;  ///< the rigid master parts, moved as translating masses by the solve
   Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
   std::vector<Index> constraint_of_;  ///< per node: its constraint this cycle, -1 (mutual-pair check)
   std::vector<std::uint8_t> keep_;
