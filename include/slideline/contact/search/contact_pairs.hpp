@@ -59,6 +59,16 @@ enum class SideMemory : std::uint8_t {
   keep_across_segments,
 };
 
+/// How a slave keeps its segment between searches.
+enum class SegmentTracking : std::uint8_t {
+  /// track_segment: across the edges its closest point lies on, up to 4 hops, to admitted segments
+  /// by the pick rule (is_better_contact; penalty, Lagrange).
+  walk_across_edges,
+  /// Stay while the closest point is inside the segment; else the nearest (is_better_projection)
+  /// of it and all its neighbours, one hop (tiebreak's contact after failure).
+  stay_while_inside,
+};
+
 /// How the stage searches (the families differ only in these).
 struct ContactPairsOptions {
   /// The search allowance: fraction x the smallest master segment diagonal (length).
@@ -78,6 +88,7 @@ struct ContactPairsOptions {
   /// so that skip_own_shell_part holds).
   bool repick_between_searches = false;
   SideMemory side_memory = SideMemory::forget_on_new_segment;
+  SegmentTracking tracking = SegmentTracking::walk_across_edges;
 };
 
 class ContactPairs {
@@ -85,7 +96,8 @@ class ContactPairs {
   ContactPairs() = default;
   /// slaves: internal node indices, ascending; slave_offset: one per slave (length); master: the
   /// master surface (adjacency built); master_shells: the offset rule of its shell segments;
-  /// broad_phase: a fresh broad phase.
+  /// broad_phase: a fresh broad phase, or nullptr for a stage that never searches: its slaves are
+  /// given their segments by seed() (e.g. found once by the tie search) and only tracked.
   ContactPairs(std::vector<Index> slaves, std::vector<Real> slave_offset, Surface master, ShellOffsetRule master_shells,
                std::unique_ptr<BroadPhase> broad_phase, ContactPairsOptions options)
       : slaves_(std::move(slaves)), slave_offset_(std::move(slave_offset)), master_(std::move(master)),
@@ -105,6 +117,18 @@ class ContactPairs {
 
   /// The segment and closest point of every slave at x (a search when due; see the file comment).
   void locate(const Vec3Field& x);
+  /// A stage without a broad phase, after initialize(): the slaves become `slaves` with their
+  /// offsets (length), starting segments and sides (+1 / -1). Allocates.
+  void seed(std::vector<Index> slaves, std::vector<Real> slave_offset, std::span<const Index> segment,
+            std::span<const std::int8_t> side) {
+    slaves_ = std::move(slaves);
+    slave_offset_ = std::move(slave_offset);
+    points_.assign(slaves_.size(), ContactPoint{});
+    for (std::size_t i = 0; i < slaves_.size(); ++i) points_[i].node = slaves_[i], points_[i].segment = segment[i];
+    side_.assign(side.begin(), side.end());
+  }
+  /// Tracks slave i alone at x (a slave with a segment) and returns its point; no allocation.
+  const ContactPoint& track(std::size_t i, const Vec3Field& x);
   /// The next locate() searches whatever the cadence says.
   void force_search() { force_search_ = true; }
   /// Moves slave i onto segment s (e.g. Lagrange's projection at the predicted positions): the
@@ -144,7 +168,8 @@ class ContactPairs {
  private:
   void search(const Vec3Field& x);
   void pick_nearest_candidates(const Vec3Field& x);
-  void track(const Vec3Field& x);
+  void track_all(const Vec3Field& x);
+  SegmentProjection stay_while_inside(const Vec3& p, Index s, const Vec3Field& x) const;
   bool admits(std::size_t i, Index s, const Vec3Field& x) const;
 
   std::vector<Index> slaves_;
@@ -196,12 +221,14 @@ inline void ContactPairs::initialize(const Vec3Field& x) {
   BroadPhaseOptions bo;
   bo.margin = box_margin;
   bo.skip_incident = opt_.skip_incident;
-  broad_->build(master_, x, bo);
-  std::vector<Index> watched(slaves_);
-  watched.insert(watched.end(), master_.nodes.begin(), master_.nodes.end());
-  std::sort(watched.begin(), watched.end());
-  watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
-  cadence_ = SearchCadence(watched, opt_.cadence_uses_box_margin ? box_margin : allowance_);
+  if (broad_) {
+    broad_->build(master_, x, bo);
+    std::vector<Index> watched(slaves_);
+    watched.insert(watched.end(), master_.nodes.begin(), master_.nodes.end());
+    std::sort(watched.begin(), watched.end());
+    watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
+    cadence_ = SearchCadence(watched, opt_.cadence_uses_box_margin ? box_margin : allowance_);
+  }
 
   const std::size_t n = slaves_.size();
   points_.assign(n, ContactPoint{});
@@ -243,7 +270,7 @@ inline void ContactPairs::locate(const Vec3Field& x) {
   } else if (opt_.repick_between_searches) {
     pick_nearest_candidates(x);
   } else {
-    track(x);
+    track_all(x);
   }
 }
 
@@ -290,21 +317,42 @@ inline void ContactPairs::pick_nearest_candidates(const Vec3Field& x) {
   });
 }
 
-/// Between searches: each slave with a segment walks across edges to its best admitted segment.
-inline void ContactPairs::track(const Vec3Field& x) {
+/// Between searches: each slave with a segment tracks it (ContactPairsOptions::tracking).
+inline void ContactPairs::track_all(const Vec3Field& x) {
   parallel_for(static_cast<Index>(slaves_.size()), [&](Index ii) {
     const std::size_t i = static_cast<std::size_t>(ii);
-    ContactPoint& cp = points_[i];
-    if (cp.segment < 0) return;
-    const SegmentProjection sp = track_segment(x.get(slaves_[i]), cp.segment, master_, x, TrackingOptions{},
-                                               FacingRule{&orientation_, i, &master_, &x});
-    if (sp.segment != cp.segment && opt_.side_memory == SideMemory::forget_on_new_segment &&
-        master_.kind[static_cast<std::size_t>(sp.segment)] != master_.kind[static_cast<std::size_t>(cp.segment)])
-      side_[i] = 0;
-    cp.segment = sp.segment;
-    cp.projection = sp.projection;
-    cp.offset = offset(i, sp.segment);
+    if (points_[i].segment >= 0) track(i, x);
   });
+}
+
+inline const ContactPoint& ContactPairs::track(std::size_t i, const Vec3Field& x) {
+  ContactPoint& cp = points_[i];
+  const Vec3 p = x.get(slaves_[i]);
+  const SegmentProjection sp =
+      opt_.tracking == SegmentTracking::stay_while_inside
+          ? stay_while_inside(p, cp.segment, x)
+          : track_segment(p, cp.segment, master_, x, TrackingOptions{}, FacingRule{&orientation_, i, &master_, &x});
+  if (sp.segment != cp.segment && opt_.side_memory == SideMemory::forget_on_new_segment &&
+      master_.kind[static_cast<std::size_t>(sp.segment)] != master_.kind[static_cast<std::size_t>(cp.segment)])
+    side_[i] = 0;
+  cp.segment = sp.segment;
+  cp.projection = sp.projection;
+  cp.offset = offset(i, sp.segment);
+  return cp;
+}
+
+/// SegmentTracking::stay_while_inside: segment s while p projects inside it, else the best of s
+/// and its neighbours (surface.segment_neighbors order, is_better_projection's tie rule).
+inline SegmentProjection ContactPairs::stay_while_inside(const Vec3& p, Index s, const Vec3Field& x) const {
+  SegmentProjection best{s, project_point_to_segment(p, master_, s, x), 0};
+  if (best.projection.interior() || master_.segment_neighbors.rows() <= s) return best;
+  const Csr& nb = master_.segment_neighbors;
+  for (Index r = nb.begin(s); r < nb.end(s); ++r) {
+    const Index t = nb.value[static_cast<std::size_t>(r)];
+    const Projection pr = project_point_to_segment(p, master_, t, x);
+    if (is_better_projection(pr, t, best.projection, best.segment)) best.segment = t, best.projection = pr;
+  }
+  return best;
 }
 
 }  // namespace slideline
