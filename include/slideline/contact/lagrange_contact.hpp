@@ -53,7 +53,7 @@ struct LagrangeContactSettings {
   Real slave_thickness = 0.0;     ///< SST: overrides the slave shells' thickness (0: elements')
   Real master_thickness = 0.0;    ///< MST
   Real slave_thickness_scale = 1.0, master_thickness_scale = 1.0;  ///< SFST, SFMT
-  Real nodal_radius = 0.0;        ///< offset of node-set slaves (Type 5), length
+  Real nodal_radius = 0.0;        ///< least offset of every slave (node-set slaves, Type 5), length
   bool skip_incident = false;     ///< single surface (Type 12): a node never meets its own segments
   bool transmitted_output = false;  ///< write interfaces/<title>/transmitted_force
   LagrangeSolveOptions solve;       ///< tolerance relative to the smallest master segment size
@@ -103,7 +103,10 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
         first_part_nodes_(std::move(first_part_nodes)) {
     std::sort(slaves.begin(), slaves.end());
     slaves.erase(std::unique(slaves.begin(), slaves.end()), slaves.end());
-    std::vector<Real> offsets = slave_offsets(slaves);
+    // Node-set slaves stand off by the nodal radius, surface slaves by their shell offsets.
+    std::vector<Real> offsets = node_offsets(slaves, slave_surface_,
+                                             {s_.shell_offsets, s_.slave_thickness, s_.slave_thickness_scale},
+                                             s_.nodal_radius);
     pairs_ = ContactPairs(std::move(slaves), std::move(offsets), std::move(master),
                           {s_.shell_offsets, s_.master_thickness, s_.master_thickness_scale},
                           std::make_unique<FclBroadPhase>(), pairs_options(s_));
@@ -211,19 +214,6 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     o.skip_incident = s.skip_incident;
     o.side_memory = SideMemory::keep_across_segments;
     return o;
-  }
-
-  /// Per slave (ascending): the nodal radius, or on a slave surface its shell offset.
-  std::vector<Real> slave_offsets(const std::vector<Index>& slaves) const {
-    std::vector<Real> out(slaves.size(), s_.nodal_radius);
-    if (slave_surface_.nodes.empty()) return out;
-    for (std::size_t i = 0; i < slaves.size(); ++i) {
-      const auto it = std::lower_bound(slave_surface_.nodes.begin(), slave_surface_.nodes.end(), slaves[i]);
-      if (it == slave_surface_.nodes.end() || *it != slaves[i]) continue;
-      const Index row = static_cast<Index>(it - slave_surface_.nodes.begin());
-      out[i] = node_offset(slave_surface_, row, {s_.shell_offsets, s_.slave_thickness, s_.slave_thickness_scale});
-    }
-    return out;
   }
 
   const Surface& master() const { return pairs_.master(); }

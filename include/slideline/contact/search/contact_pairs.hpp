@@ -263,7 +263,7 @@ inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) con
 }
 
 inline void ContactPairs::locate(const Vec3Field& x) {
-  const bool due = force_search_ || cadence_.is_due(x);
+  const bool due = broad_ && (force_search_ || cadence_.is_due(x));  // a seeded stage only tracks
   force_search_ = false;
   if (due) {
     search(x);
