@@ -91,17 +91,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   released_.assign(n, 0);
   delta_.assign(n, Vec3::Zero());
   friction_force_.assign(n, Vec3::Zero());
-  // The contact after failure: each tied node from its tie segment, on its side, its offset the
-  // tie-time stand-off (so contact starts when the node passes through its tie point).
-  std::vector<Index> tied(n), segment(n);
-  std::vector<Real> stand_off(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    tied[k] = links_[k].slave;
-    segment[k] = links_[k].segment;
-    stand_off[k] = static_cast<Real>(side[k]) * links_[k].gap;
-  }
-  pairs_.initialize(nodes.x);
-  pairs_.seed(std::move(tied), std::move(stand_off), segment, side);
+  seed_contact(nodes.x, side);
   friction_work_ = 0.0;
   slave_ = master_total_ = first_failure_stress_ = Vec3::Zero();
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
@@ -117,6 +107,21 @@ void TiebreakContact::initialize(const ContactContext& c) {
     const Real w2 = kk * ((ms > 0.0 ? 1.0 / ms : 0.0) + (mm < std::numeric_limits<Real>::max() ? 1.0 / mm : 0.0));
     if (w2 > 0.0) dt_ = std::min(dt_, 2.0 / std::sqrt(w2));
   }
+}
+
+void TiebreakContact::seed_contact(const Vec3Field& x, const std::vector<std::int8_t>& side) {
+  // The contact after failure: each tied node from its tie segment, on its side, its offset the
+  // tie-time stand-off (so contact starts when the node passes through its tie point).
+  const std::size_t n = links_.size();
+  std::vector<Index> tied(n), segment(n);
+  std::vector<Real> stand_off(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    tied[k] = links_[k].slave;
+    segment[k] = links_[k].segment;
+    stand_off[k] = static_cast<Real>(side[k]) * links_[k].gap;
+  }
+  pairs_.initialize(x);
+  pairs_.seed(std::move(tied), std::move(stand_off), segment, side);
 }
 
 void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {

@@ -140,6 +140,8 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
     out.force.add(i, f);
     master_total_ += f;
   }
+  /// Seeds the contact-pairs stage with the tie points (segments, sides per link: +1 / -1).
+  void seed_contact(const Vec3Field& x, const std::vector<std::int8_t>& side);
   /// Type 9: the tie force on slave segment j (slave side) and the sum of its links' oriented normals.
   void segment_tie_force(Index j, const Vec3Field& x, Vec3& fj, Vec3& nj) const;
   void record_first_failure_stress(const Vec3Field& x);
