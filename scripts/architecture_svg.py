@@ -22,13 +22,19 @@ STEP = [
     ("forces", "assemble_forces() -> StepVotes", "Exchange::sum_forces, min_dt"),
 ]
 
-# (label, detail) for each stage of the contact pipeline, in order.
+# (label, detail) for each stage of the contact pipeline, in order: first what is built once
+# from the card, then what runs every cycle.
 CONTACT = [
     ("deck card", "model::Contact, the reader"),
     ("InterfaceSpec", "sides, offset rule, friction law, stiffness, BT/DT, outputs"),
     ("factory", "make_contact_interface, one per family"),
     ("ContactAlgorithm", "ContactForces, ContactConstraint, KinematicTie"),
+]
+CONTACT_CYCLE = [
     ("ContactManager", "birth/death, phases in deck order"),
+    ("ContactPairs", "broad phase, cadence, tracking, side memory, offsets"),
+    ("ContactPoints", "slave, segment, projection, normal, offset"),
+    ("enforcement", "penalty, Lagrange, tiebreak"),
     ("force assembly", "f_contact, or multipliers"),
 ]
 
@@ -64,16 +70,20 @@ def main():
     ctop = top + 2 * (h + 50) + 40
     out.append(f'<text x="20" y="{ctop - 15}" font-size="16" font-weight="bold">The contact pipeline (one per interface)</text>')
     cw = 150
-    for i, (title, sub) in enumerate(CONTACT):
-        x = 20 + i * (cw + gap)
-        out.append(box(x, ctop, cw, h + 10, title, "", "#e6f4ea"))
-        words = sub.split(", ")
-        for k, line in enumerate([", ".join(words[j:j + 2]) for j in range(0, len(words), 2)]):
-            out.append(f'<text x="{x + cw / 2}" y="{ctop + 38 + 12 * k}" text-anchor="middle" font-size="9">{escape(line)}</text>')
-        if i + 1 < len(CONTACT):
-            out.append(arrow(x + cw, ctop + (h + 10) / 2, x + cw + gap - 2, ctop + (h + 10) / 2))
-    width = max(20 + per_row * (w + gap), 20 + len(CONTACT) * (cw + gap))
-    height = ctop + h + 40
+    rows = [("built once from the card", CONTACT), ("every cycle, per interface", CONTACT_CYCLE)]
+    for r, (caption, stages) in enumerate(rows):
+        y = ctop + r * (h + 50)
+        out.append(f'<text x="20" y="{y - 4}" font-size="10" fill="#555">{escape(caption)}</text>')
+        for i, (title, sub) in enumerate(stages):
+            x = 20 + i * (cw + gap)
+            out.append(box(x, y, cw, h + 10, title, "", "#e6f4ea"))
+            words = sub.split(", ")
+            for k, line in enumerate([", ".join(words[j:j + 2]) for j in range(0, len(words), 2)]):
+                out.append(f'<text x="{x + cw / 2}" y="{y + 38 + 12 * k}" text-anchor="middle" font-size="9">{escape(line)}</text>')
+            if i + 1 < len(stages):
+                out.append(arrow(x + cw, y + (h + 10) / 2, x + cw + gap - 2, y + (h + 10) / 2))
+    width = max(20 + per_row * (w + gap), 20 + max(len(CONTACT), len(CONTACT_CYCLE)) * (cw + gap))
+    height = ctop + 2 * (h + 50) + 10
     print(f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif">')
     print('<defs><marker id="a" markerWidth="8" markerHeight="8" refX="7" refY="4" orient="auto">'
           '<path d="M0,0 L8,4 L0,8 z" fill="#333"/></marker></defs>')

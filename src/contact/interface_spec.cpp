@@ -163,13 +163,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
 }
 
 std::vector<Real> slave_node_offsets(const ContactSide& side, const ShellOffsetRule& rule, Real radius) {
-  std::vector<Real> out(side.nodes.size(), radius);
-  const Surface& s = side.surface;
-  for (Index row = 0; row < s.node_count(); ++row) {
-    Real& o = out[static_cast<std::size_t>(row)];
-    o = std::max(o, node_offset(s, row, rule));
-  }
-  return out;
+  return node_offsets(side.nodes, side.surface, rule, radius);
 }
 
 Surface node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& context) {

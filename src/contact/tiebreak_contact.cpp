@@ -34,16 +34,17 @@ Real compression_factor(const std::vector<TiePoint>& links, const std::vector<Re
 
 void TiebreakContact::initialize(const ContactContext& c) {
   const NodalFields& nodes = c.nodes;
-  tie_candidates(name_, candidates_, master_, nodes, {}, links_, untied_nodes_, c.diagnostics);
+  const Surface& master = pairs_.master();
+  tie_candidates(name_, candidates_, master, nodes, {}, links_, untied_nodes_, c.diagnostics);
   const std::size_t n = links_.size();
   std::vector<Index> link_of(nodes.size(), -1);
   for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);
 
   kappa_.assign(n, 0.0);
   area_.assign(n, 0.0);
-  side_.assign(n, 1.0);
+  std::vector<std::int8_t> side(n, 1);
   std::vector<Vec3> slave_side(n, Vec3::Zero());  // sum of the slave segments' outward normals
-  for (std::size_t k = 0; k < n; ++k) kappa_[k] = stiffness_per_area(master_, links_[k].segment, c, p_.penalty_factor);
+  for (std::size_t k = 0; k < n; ++k) kappa_[k] = stiffness_per_area(master, links_[k].segment, c, p_.penalty_factor);
 
   const bool by_segment = p_.unit == TiebreakParameters::FailureUnit::segment;
   const Index nseg = by_segment ? slave_surface_.segment_count() : 0;
@@ -76,22 +77,21 @@ void TiebreakContact::initialize(const ContactContext& c) {
       }
     }
   } else {
-    for (std::size_t k = 0; k < n; ++k) area_[k] = segment_area(master_, links_[k].segment, nodes.x);
+    for (std::size_t k = 0; k < n; ++k) area_[k] = segment_area(master, links_[k].segment, nodes.x);
   }
   // The master normal oriented towards the slave: from the tie-time gap when the slave stands off
   // the surface, else against the slave segments' outward normal, else the master's own normal.
   for (std::size_t k = 0; k < n; ++k) {
     const TiePoint& t = links_[k];
-    if (std::abs(t.gap) > 1e-6 * t.size) side_[k] = t.gap > 0.0 ? 1.0 : -1.0;
-    else if (slave_side[k].squaredNorm() > 0.0) side_[k] = slave_side[k].dot(t.normal) > 0.0 ? -1.0 : 1.0;
+    if (std::abs(t.gap) > 1e-6 * t.size) side[k] = t.gap > 0.0 ? 1 : -1;
+    else if (slave_side[k].squaredNorm() > 0.0) side[k] = slave_side[k].dot(t.normal) > 0.0 ? -1 : 1;
   }
   area0_ = area_;
-  compression_ = compression_factor(links_, kappa_, area_, master_, nodes.x);
+  compression_ = compression_factor(links_, kappa_, area_, master, nodes.x);
   released_.assign(n, 0);
   delta_.assign(n, Vec3::Zero());
-  track_.assign(n, -1);
   friction_force_.assign(n, Vec3::Zero());
-  for (std::size_t k = 0; k < n; ++k) track_[k] = links_[k].segment;
+  seed_contact(nodes.x, side);
   friction_work_ = 0.0;
   slave_ = master_total_ = first_failure_stress_ = Vec3::Zero();
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
@@ -107,6 +107,21 @@ void TiebreakContact::initialize(const ContactContext& c) {
     const Real w2 = kk * ((ms > 0.0 ? 1.0 / ms : 0.0) + (mm < std::numeric_limits<Real>::max() ? 1.0 / mm : 0.0));
     if (w2 > 0.0) dt_ = std::min(dt_, 2.0 / std::sqrt(w2));
   }
+}
+
+void TiebreakContact::seed_contact(const Vec3Field& x, const std::vector<std::int8_t>& side) {
+  // The contact after failure: each tied node from its tie segment, on its side, its offset the
+  // tie-time stand-off (so contact starts when the node passes through its tie point).
+  const std::size_t n = links_.size();
+  std::vector<Index> tied(n), segment(n);
+  std::vector<Real> stand_off(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    tied[k] = links_[k].slave;
+    segment[k] = links_[k].segment;
+    stand_off[k] = static_cast<Real>(side[k]) * links_[k].gap;
+  }
+  pairs_.initialize(x);
+  pairs_.seed(std::move(tied), std::move(stand_off), segment, side);
 }
 
 void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
@@ -213,30 +228,21 @@ void TiebreakContact::hand_over(std::size_t k, Real share, const Vec3& n) {
 Vec3 TiebreakContact::contact_after_failure(std::size_t k, Real kn, Real kk, const NodalFields& nodes,
                                            const StepTimes& times, ContactForceView out) {
   const TiePoint& t = links_[k];
-  const Vec3 p = nodes.x.get(t.slave);
   // Track the segment: stay on the current one while the point projects inside it, else take the
-  // best of it and its edge neighbours (ascending order, is_better_projection's tie rule).
-  Index best_s = track_[k];
-  Projection best = project_point_to_segment(p, master_, best_s, nodes.x);
-  if (!best.interior() && master_.segment_neighbors.rows() > best_s) {
-    const Index s0 = best_s;
-    for (Index r = master_.segment_neighbors.begin(s0); r < master_.segment_neighbors.end(s0); ++r) {
-      const Index s = master_.segment_neighbors.value[r];
-      const Projection pr = project_point_to_segment(p, master_, s, nodes.x);
-      if (is_better_projection(pr, s, best, best_s)) best = pr, best_s = s;
-    }
-  }
-  track_[k] = best_s;
+  // best of it and its edge neighbours (ContactPairs, SegmentTracking::stay_while_inside).
+  const ContactPoint& cp = pairs_.track(k, nodes.x);
+  const Projection& best = cp.projection;
+  const Index best_s = cp.segment;
   const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
-  const Real side = side_[k];
-  const Real gap = side * best.gap - side * t.gap;  // penetration past the tie-time stand-off
+  const Real side = static_cast<Real>(pairs_.side(k));
+  const Real gap = side * best.gap - cp.offset;  // penetration past the tie-time stand-off
   if (gap >= 0.0 || tangential > 1e-3 * best.size || !(kk > 0.0)) {
     friction_force_[k] = Vec3::Zero();
     return Vec3::Zero();
   }
   const Vec3 n = side * best.normal;
   const Real fn = -kn * gap;  // > 0, pushes the slave out along n
-  const Index* m = &master_.conn[4 * static_cast<std::size_t>(best_s)];
+  const Index* m = &master().conn[4 * static_cast<std::size_t>(best_s)];
   Vec3 vm = Vec3::Zero();
   for (int a = 0; a < 4; ++a) vm += best.shape[a] * nodes.v.get(m[a]);
   const Vec3 vt = tangential_part(nodes.v.get(t.slave) - vm, n);

@@ -11,10 +11,12 @@
 /// make_sliding_only_contact set from the card.
 ///
 /// Per cycle, in enforce() (t^n, accelerations formed, ties, rigid bodies and supports done):
-///  1. pairs: a broad-phase search (FCL tree) when SearchCadence says one is due, else local
-///     tracking from each slave's segment; among the segments that face the slave (its own faces'
-///     normals oppose theirs, search/slave_orientation.hpp), the one it is over, else the nearest,
-///     by closest-point projection at x^n;
+///  1. pairs: one ContactPairs stage (search/contact_pairs.hpp; an FCL tree, a search when the
+///     cadence says one is due, else local tracking): among the segments that face the slave (its
+///     own faces' normals oppose theirs, search/slave_orientation.hpp), the one it is over, else the
+///     nearest, by closest-point projection at x^n. Options: allowance = a quarter of the smallest
+///     segment diagonal, boxes padded by the master offsets only, the cadence by the allowance,
+///     the shell side kept across segments;
 ///  2. a constraint for each slave whose projection is over the segment (lateral offset below
 ///     2 % of the segment size), not deeper than contact_depth_limit (half the segment size; for
 ///     a solid face also half its element's thickness) and within the search allowance;
@@ -35,10 +37,10 @@
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/enforcement/lagrange.hpp"
+#include "slideline/contact/enforcement/rigid_master_groups.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/search/fcl_broad_phase.hpp"
-#include "slideline/contact/search/narrow_phase.hpp"
-#include "slideline/contact/search/search_cadence.hpp"
 #include "slideline/contact/shell_offset.hpp"
 #include "slideline/mesh/mesh_sets.hpp"
 
@@ -51,7 +53,7 @@ struct LagrangeContactSettings {
   Real slave_thickness = 0.0;     ///< SST: overrides the slave shells' thickness (0: elements')
   Real master_thickness = 0.0;    ///< MST
   Real slave_thickness_scale = 1.0, master_thickness_scale = 1.0;  ///< SFST, SFMT
-  Real nodal_radius = 0.0;        ///< offset of node-set slaves (Type 5), length
+  Real nodal_radius = 0.0;        ///< least offset of every slave (node-set slaves, Type 5), length
   bool skip_incident = false;     ///< single surface (Type 12): a node never meets its own segments
   bool transmitted_output = false;  ///< write interfaces/<title>/transmitted_force
   LagrangeSolveOptions solve;       ///< tolerance relative to the smallest master segment size
@@ -97,10 +99,17 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   /// transmitted force (any order).
   LagrangeInterface(LagrangeContactSettings settings, Surface master, std::vector<Index> slaves,
                     Surface slave_surface, std::vector<Index> first_part_nodes = {})
-      : s_(std::move(settings)), master_(std::move(master)), slave_surface_(std::move(slave_surface)),
-        slaves_(std::move(slaves)), first_part_nodes_(std::move(first_part_nodes)) {
-    std::sort(slaves_.begin(), slaves_.end());
-    slaves_.erase(std::unique(slaves_.begin(), slaves_.end()), slaves_.end());
+      : s_(std::move(settings)), slave_surface_(std::move(slave_surface)),
+        first_part_nodes_(std::move(first_part_nodes)) {
+    std::sort(slaves.begin(), slaves.end());
+    slaves.erase(std::unique(slaves.begin(), slaves.end()), slaves.end());
+    // Node-set slaves stand off by the nodal radius, surface slaves by their shell offsets.
+    std::vector<Real> offsets = node_offsets(slaves, slave_surface_,
+                                             {s_.shell_offsets, s_.slave_thickness, s_.slave_thickness_scale},
+                                             s_.nodal_radius);
+    pairs_ = ContactPairs(std::move(slaves), std::move(offsets), std::move(master),
+                          {s_.shell_offsets, s_.master_thickness, s_.master_thickness_scale},
+                          std::make_unique<FclBroadPhase>(), pairs_options(s_));
   }
 
   const std::string& name() const override { return s_.title; }
@@ -113,46 +122,12 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
 
   void initialize(const ContactContext& c) override {
     diagnostics_ = c.diagnostics;
-    const std::size_t ns = slaves_.size();
-    const Index nseg = master_.segment_count();
-    master_offset_.assign(static_cast<std::size_t>(nseg), 0.0);
-    depth_.resize(static_cast<std::size_t>(nseg));
-    for (Index s = 0; s < nseg; ++s) depth_[static_cast<std::size_t>(s)] = contact_depth_limit(master_, s, c.blocks, c.nodes.x);
-    Real min_size = std::numeric_limits<Real>::max(), max_master_offset = 0.0;
-    for (Index s = 0; s < nseg; ++s) {
-      const auto cs = segment_corners(master_, s, c.nodes.x);
-      min_size = std::min(min_size, std::max((cs[2] - cs[0]).norm(), (cs[3] - cs[1]).norm()));
-      master_offset_[static_cast<std::size_t>(s)] =
-          segment_offset(master_, s, {s_.shell_offsets, s_.master_thickness, s_.master_thickness_scale});
-      max_master_offset = std::max(max_master_offset, master_offset_[static_cast<std::size_t>(s)]);
-    }
-    if (nseg == 0) min_size = 1.0;
-    allowance_ = 0.25 * min_size;
-    tolerance_ = s_.solve.tolerance * min_size;
-    slave_offset_.assign(ns, s_.nodal_radius);
-    orientation_ = SlaveOrientation(orientation_surface_.nodes.empty() ? slave_surface_ : orientation_surface_, slaves_);
-    if (!slave_surface_.nodes.empty()) {
-      for (std::size_t i = 0; i < ns; ++i) {
-        const auto it = std::lower_bound(slave_surface_.nodes.begin(), slave_surface_.nodes.end(), slaves_[i]);
-        if (it == slave_surface_.nodes.end() || *it != slaves_[i]) continue;
-        const Index row = static_cast<Index>(it - slave_surface_.nodes.begin());
-        slave_offset_[i] = node_offset(slave_surface_, row, {s_.shell_offsets, s_.slave_thickness, s_.slave_thickness_scale});
-      }
-    }
-    BroadPhaseOptions bo;
-    bo.margin = allowance_ + max_master_offset;
-    bo.skip_incident = s_.skip_incident;
-    broad_ = std::make_unique<FclBroadPhase>();
-    broad_->build(master_, c.nodes.x, bo);
-    std::vector<Index> watched = slaves_;
-    watched.insert(watched.end(), master_.nodes.begin(), master_.nodes.end());
-    std::sort(watched.begin(), watched.end());
-    watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
-    cadence_ = SearchCadence(watched, allowance_);
-    found_.assign(ns, {});
-    tracked_.assign(ns, {});
-    segment_.assign(ns, -1);
-    side_.assign(ns, 0);
+    const std::size_t ns = pairs_.slaves().size();
+    pairs_.set_orientation(
+        SlaveOrientation(orientation_surface_.nodes.empty() ? slave_surface_ : orientation_surface_, pairs_.slaves()));
+    pairs_.set_depth_limits(c.nodes.x, c.blocks);
+    pairs_.initialize(c.nodes.x);
+    tolerance_ = s_.solve.tolerance * pairs_.smallest_segment_size();
     lambda_.assign(ns, 0.0);
     tau_.assign(ns, Vec3::Zero());
     slip_speed_.assign(ns, 0.0);
@@ -160,8 +135,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     constraints_.reserve(ns);
     owner_.clear();
     owner_.reserve(ns);
-    candidates_.reserve(4 * ns);
-    setup_rigid_groups(c);
+    rigid_.setup(master(), c, s_.rigid_fixed_translations);
     predicted_.resize(c.nodes.size());
     constraint_of_.assign(c.nodes.size(), -1);
     keep_.reserve(ns);
@@ -180,7 +154,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     constraints_.clear();
     owner_.clear();
     if (!(times.dt_next > 0.0)) return;  // birth and death: ContactManager
-    find_segments(view.nodes.x);
+    pairs_.locate(view.nodes.x);
     form_constraints(view.nodes.x, times);
     if (s_.one_constraint_per_mutual_pair) drop_mutual_duplicates(view.nodes.x);
     if (constraints_.empty()) {
@@ -189,8 +163,8 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     }
     LagrangeSolveOptions opt = s_.solve;
     opt.tolerance = tolerance_;
-    update_rigid_groups(view, times);
-    const RigidGroups* groups = group_mass_.empty() ? nullptr : &groups_;
+    rigid_.update(view, times);
+    const RigidGroups* groups = rigid_.groups();
     LagrangeSolveResult r = solve_forward_increment(constraints_, view, times, opt, groups, &workspace_, &master_force_);
     for (int pass = 1; pass < s_.projection_passes; ++pass) {
       reproject(view, times, groups);
@@ -224,29 +198,32 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   /// The constraints of the last cycle (for tests and diagnostics).
   std::span<const LagrangeConstraint> constraints() const { return constraints_; }
   const LagrangeContactSettings& settings() const { return s_; }
-  std::size_t slave_count() const { return slaves_.size(); }
+  std::size_t slave_count() const { return pairs_.slaves().size(); }
+  /// The contact-pairs stage (search, tracking, offsets, side memory) the interface consumes.
+  const ContactPairs& pairs() const { return pairs_; }
 
  private:
-  void find_segments(const Vec3Field& x) {
-    if (cadence_.is_due(x)) {
-      broad_->update(x);
-      broad_->query(slaves_, x, slave_offset_, candidates_);
-      assign_nearest_segments(slaves_, candidates_, master_, x, found_, {}, &orientation_);
-      cadence_.mark_searched(x);
-    } else {
-      track_segments(slaves_, segment_, master_, x, tracked_, {}, &orientation_);
-      std::swap(found_, tracked_);
-    }
-    for (std::size_t i = 0; i < slaves_.size(); ++i) {
-      segment_[i] = found_[i].segment;  // the shell side (side_) is kept across segments
-    }
+  /// The stage's options: a quarter of the smallest segment as the allowance, boxes padded by the
+  /// master offsets (the query boxes carry the slave's), the cadence by the allowance, the shell
+  /// side kept across segments; a single surface skips incident segments.
+  static ContactPairsOptions pairs_options(const LagrangeContactSettings& s) {
+    ContactPairsOptions o;
+    o.allowance_fraction = 0.25;
+    o.boxes_cover_slave_offsets = false;
+    o.cadence_uses_box_margin = false;
+    o.skip_incident = s.skip_incident;
+    o.side_memory = SideMemory::keep_across_segments;
+    return o;
   }
 
+  const Surface& master() const { return pairs_.master(); }
+
   void form_constraints(const Vec3Field& x, const StepTimes& /*times*/) {
-    for (std::size_t i = 0; i < slaves_.size(); ++i) {
-      const SegmentProjection& sp = found_[i];
+    const std::span<const ContactPoint> points = pairs_.points();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const ContactPoint& p = points[i];
       bool formed = false;
-      if (sp.segment >= 0) formed = try_constraint(i, sp, x);
+      if (p.segment >= 0) formed = try_constraint(i, p, x);
       if (!formed) {
         lambda_[i] = 0.0;
         tau_[i].setZero();
@@ -255,31 +232,28 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     }
   }
 
-  bool try_constraint(std::size_t i, const SegmentProjection& sp, const Vec3Field& x) {
-    const Index seg = sp.segment;
-    const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
-    const Index slave = slaves_[i];
+  bool try_constraint(std::size_t i, const ContactPoint& p, const Vec3Field& x) {
+    const Index seg = p.segment;
+    const Index* conn = &master().conn[4 * static_cast<std::size_t>(seg)];
+    const Index slave = p.node;
     if (conn[0] == slave || conn[1] == slave || conn[2] == slave || conn[3] == slave) return false;
-    const Projection& pr = sp.projection;
-    const bool shell = master_.kind[static_cast<std::size_t>(seg)] == SegmentKind::shell;
-    const Real target = slave_offset_[i] + master_offset_[static_cast<std::size_t>(seg)];
-    if (!shell) {
-      side_[i] = 1;
-    } else if (side_[i] == 0 || std::abs(pr.gap) >= target) {
-      side_[i] = pr.gap >= 0.0 ? 1 : -1;
-    }
+    const Projection& pr = p.projection;
+    const Real target = p.offset;
+    // The side: re-picked whenever the slave is clear of the offset band (|gap| >= target).
+    const Real side = static_cast<Real>(pairs_.orient(i, seg, pr.gap, target));
     const Vec3 nseg = segment_normal(seg, x);
-    const Vec3 n = static_cast<Real>(side_[i]) * nseg;
-    const Real gap = static_cast<Real>(side_[i]) * (x.get(slave) - pr.point).dot(nseg) - target;
+    const Vec3 n = side * nseg;
+    const Real gap = side * (x.get(slave) - pr.point).dot(nseg) - target;
     const Vec3 d = x.get(slave) - pr.point;
     if ((d - pr.gap * pr.normal).norm() > 0.02 * pr.size) return false;  // beside the segment
-    if (gap < -depth_[static_cast<std::size_t>(seg)]) return false;        // far behind it
-    if (Kind::bilateral ? std::abs(gap) > allowance_ : gap > allowance_) return false;
+    if (gap < -pairs_.depth_limit(seg, pr)) return false;                 // far behind it
+    const Real allowance = pairs_.allowance();
+    if (Kind::bilateral ? std::abs(gap) > allowance : gap > allowance) return false;
     LagrangeConstraint k;
     k.slave = slave;
     for (int a = 0; a < 4; ++a) k.master[static_cast<std::size_t>(a)] = conn[a];
     k.shape = pr.shape;
-    if (master_.is_triangle(seg)) k.shape[3] = 0.0;
+    if (master().is_triangle(seg)) k.shape[3] = 0.0;
     k.normal = n;
     k.target = target;
     k.bilateral = Kind::bilateral;
@@ -302,21 +276,21 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     master_size_.clear();
     for (std::size_t k = 0; k < nc; ++k) {
       constraint_of_[static_cast<std::size_t>(constraints_[k].slave)] = static_cast<Index>(k);
-      master_size_.push_back(detail::segment_size(segment_corners(master_, segment_[static_cast<std::size_t>(owner_[k])], x)));
+      master_size_.push_back(detail::segment_size(segment_corners(master(), segment_of(owner_[k]), x)));
     }
     const auto holds = [&](Index seg, Index node) {
-      const Index* c = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      const Index* c = &master().conn[4 * static_cast<std::size_t>(seg)];
       return c[0] == node || c[1] == node || c[2] == node || c[3] == node;
     };
     keep_.assign(nc, 1);
     for (std::size_t k = 0; k < nc; ++k) {
       const Index s = constraints_[k].slave;
-      const Index seg = segment_[static_cast<std::size_t>(owner_[k])];
-      const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      const Index seg = segment_of(owner_[k]);
+      const Index* conn = &master().conn[4 * static_cast<std::size_t>(seg)];
       for (int a = 0; a < 4 && keep_[k]; ++a) {
         const Index j = constraint_of_[static_cast<std::size_t>(conn[a])];
         if (j < 0 || static_cast<std::size_t>(j) == k) continue;
-        if (!holds(segment_[static_cast<std::size_t>(owner_[static_cast<std::size_t>(j)])], s)) continue;
+        if (!holds(segment_of(owner_[static_cast<std::size_t>(j)]), s)) continue;
         const Real mine = master_size_[k], theirs = master_size_[static_cast<std::size_t>(j)];
         const bool other_wins = theirs > mine || (theirs == mine && constraints_[static_cast<std::size_t>(j)].slave < s);
         if (other_wins) keep_[k] = 0;
@@ -342,87 +316,33 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   /// Moves every constraint to the closest point of the predicted slave position on the predicted
   /// master surface (see LagrangeContactSettings::projection_passes), forces withdrawn first.
   void reproject(const ConstraintView& view, const StepTimes& times, const RigidGroups* groups) {
-    for (Index n : master_.nodes) predicted_.set(n, predicted_position(view, times, groups, n));
-    for (Index n : slaves_) predicted_.set(n, predicted_position(view, times, groups, n));
+    for (Index n : master().nodes) predicted_.set(n, predicted_position(view, times, groups, n));
+    for (Index n : pairs_.slaves()) predicted_.set(n, predicted_position(view, times, groups, n));
     withdraw_constraint_forces(constraints_, view, times, groups, &master_force_);
     for (std::size_t k = 0; k < constraints_.size(); ++k) {
       LagrangeConstraint& c = constraints_[k];
       const auto i = static_cast<std::size_t>(owner_[k]);
-      const SegmentProjection sp = track_segment(predicted_.get(c.slave), segment_[i], master_, predicted_,
-                                                 TrackingOptions{}, FacingRule{&orientation_, i, &master_, &predicted_});
+      const SegmentProjection sp =
+          track_segment(predicted_.get(c.slave), segment_of(owner_[k]), master(), predicted_, TrackingOptions{},
+                        FacingRule{&pairs_.orientation(), i, &master(), &predicted_});
       const Index seg = sp.segment;
-      const Index* conn = &master_.conn[4 * static_cast<std::size_t>(seg)];
+      const Index* conn = &master().conn[4 * static_cast<std::size_t>(seg)];
       if (conn[0] == c.slave || conn[1] == c.slave || conn[2] == c.slave || conn[3] == c.slave) continue;
-      segment_[i] = seg;
+      pairs_.move_to(i, seg);
       for (int a = 0; a < 4; ++a) c.master[static_cast<std::size_t>(a)] = conn[a];
       c.shape = sp.projection.shape;
-      if (master_.is_triangle(seg)) c.shape[3] = 0.0;
-      c.normal = static_cast<Real>(side_[i]) * segment_normal(seg, predicted_);
-      c.target = slave_offset_[i] + master_offset_[static_cast<std::size_t>(seg)];
+      if (master().is_triangle(seg)) c.shape[3] = 0.0;
+      c.normal = static_cast<Real>(pairs_.side(i)) * segment_normal(seg, predicted_);
+      c.target = pairs_.offset(i, seg);
       if (c.mu > 0.0) c.tau = rotate_into_plane(c.tau, c.normal);
     }
   }
 
-  /// One group per rigid part on the master side: its nodes are the part's nodes (from the
-  /// context's sets when given, else the part's master-surface nodes).
-  void setup_rigid_groups(const ContactContext& c) {
-    group_of_.clear();
-    group_nodes_.clear();
-    group_mass_.clear();
-    if (c.rigid.empty()) return;
-    std::vector<Id> parts;
-    for (Index s = 0; s < master_.segment_count(); ++s) {
-      const Index* n = &master_.conn[4 * static_cast<std::size_t>(s)];
-      if (!c.rigid[static_cast<std::size_t>(n[0])]) continue;
-      const Id pid = master_.part[static_cast<std::size_t>(s)];
-      if (std::find(parts.begin(), parts.end(), pid) == parts.end()) parts.push_back(pid);
-    }
-    if (parts.empty()) return;
-    group_of_.assign(c.nodes.size(), -1);
-    for (std::size_t g = 0; g < parts.size(); ++g) {
-      std::vector<Index> nodes;
-      const auto f = c.sets ? c.sets->part_nodes.find(parts[g]) : decltype(c.sets->part_nodes.end()){};
-      if (c.sets && f != c.sets->part_nodes.end()) {
-        nodes = f->second;
-      } else {
-        for (Index s = 0; s < master_.segment_count(); ++s)
-          if (master_.part[static_cast<std::size_t>(s)] == parts[g])
-            for (int k = 0; k < 4; ++k) nodes.push_back(master_.conn[4 * static_cast<std::size_t>(s) + k]);
-        std::sort(nodes.begin(), nodes.end());
-        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      }
-      for (Index n : nodes)
-        if (c.rigid[static_cast<std::size_t>(n)] && group_of_[static_cast<std::size_t>(n)] < 0)
-          group_of_[static_cast<std::size_t>(n)] = static_cast<Index>(g);
-      group_nodes_.push_back(std::move(nodes));
-    }
-    group_held_.assign(parts.size(), {0, 0, 0});
-    for (std::size_t g = 0; g < parts.size(); ++g)
-      for (const auto& [pid, held] : s_.rigid_fixed_translations)
-        if (pid == parts[g]) group_held_[g] = held;
-    group_mass_.assign(parts.size(), 0.0);
-    group_compliance_.assign(parts.size(), Vec3::Zero());
-    group_force_.assign(parts.size(), Vec3::Zero());
-    groups_ = {group_of_, group_compliance_, group_force_};
-  }
-
-  void update_rigid_groups(const ConstraintView& view, const StepTimes& times) {
-    for (std::size_t g = 0; g < group_mass_.size(); ++g) {
-      Real m = 0.0, h = 0.0;
-      std::array<bool, 3> fixed{group_held_[g][0] != 0, group_held_[g][1] != 0, group_held_[g][2] != 0};
-      for (Index n : group_nodes_[g]) {
-        if (group_of_[static_cast<std::size_t>(n)] != static_cast<Index>(g)) continue;
-        m += view.nodes.mass[static_cast<std::size_t>(n)];
-        h = 0.5 * view.damping[static_cast<std::size_t>(n)] * times.dt_avg;
-        for (int c = 0; c < 3; ++c) fixed[c] = fixed[c] || view.fixed[c][static_cast<std::size_t>(n)];
-      }
-      const Real cg = m > 0.0 ? times.dt_next * times.dt_avg / ((1.0 + h) * m) : 0.0;
-      group_compliance_[g] = {fixed[0] ? 0.0 : cg, fixed[1] ? 0.0 : cg, fixed[2] ? 0.0 : cg};
-    }
-  }
+  /// The segment slave i is on (its contact point's).
+  Index segment_of(Index i) const { return pairs_.points()[static_cast<std::size_t>(i)].segment; }
 
   Vec3 segment_normal(Index seg, const Vec3Field& x) const {
-    const auto c = segment_corners(master_, seg, x);
+    const auto c = segment_corners(master(), seg, x);
     return (c[2] - c[0]).cross(c[3] - c[1]).normalized();
   }
 
@@ -468,18 +388,11 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   }
 
   LagrangeContactSettings s_;
-  Surface master_, slave_surface_, orientation_surface_;
-  SlaveOrientation orientation_;
-  std::vector<Index> slaves_, first_part_nodes_;
-  std::vector<Real> master_offset_, slave_offset_, depth_;  ///< depth_: contact_depth_limit per segment
+  Surface slave_surface_, orientation_surface_;
+  std::vector<Index> first_part_nodes_;
+  ContactPairs pairs_;
   std::vector<std::uint8_t> in_first_;
-  Real allowance_ = 0.0, tolerance_ = 0.0;
-  std::unique_ptr<BroadPhase> broad_;
-  SearchCadence cadence_;
-  std::vector<Candidate> candidates_;
-  std::vector<SegmentProjection> found_, tracked_;
-  std::vector<Index> segment_;
-  std::vector<signed char> side_;
+  Real tolerance_ = 0.0;
   std::vector<Real> lambda_, slip_speed_;
   std::vector<Vec3> tau_;
   std::vector<LagrangeConstraint> constraints_;
@@ -488,12 +401,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   Real friction_work_ = 0.0;
   Real max_penetration_ = 0.0;
   LagrangeSolveStats stats_;
-  std::vector<Index> group_of_;
-  std::vector<std::vector<Index>> group_nodes_;
-  std::vector<Real> group_mass_;
-  std::vector<std::array<int, 3>> group_held_;
-  std::vector<Vec3> group_compliance_, group_force_;
-  RigidGroups groups_;
+  RigidMasterGroups rigid_;  ///< the rigid master parts, moved as translating masses by the solve
   Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
   std::vector<Index> constraint_of_;  ///< per node: its constraint this cycle, -1 (mutual-pair check)
   std::vector<std::uint8_t> keep_;

@@ -7,6 +7,8 @@
 /// functions; nothing else computes an offset from a thickness.
 #include <algorithm>
 #include <cstddef>
+#include <span>
+#include <vector>
 
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/surface.hpp"
@@ -36,6 +38,20 @@ inline Real node_offset(const Surface& surface, Index row, const ShellOffsetRule
   for (Index j = surface.node_segments.begin(row); j < surface.node_segments.end(row); ++j)
     off = std::max(off, segment_offset(surface, surface.node_segments.value[static_cast<std::size_t>(j)], rule));
   return off;
+}
+
+/// Offset of each of `nodes` (internal indices, length): the largest offset of its segments on
+/// `own` under `rule` (node_offset; a node not on `own`, e.g. of a node set, has none), at least
+/// `radius` (a nodal radius). Allocates the result.
+inline std::vector<Real> node_offsets(std::span<const Index> nodes, const Surface& own, const ShellOffsetRule& rule,
+                                      Real radius) {
+  std::vector<Real> out(nodes.size(), radius);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const auto it = std::lower_bound(own.nodes.begin(), own.nodes.end(), nodes[i]);  // own.nodes is sorted
+    if (it == own.nodes.end() || *it != nodes[i]) continue;
+    out[i] = std::max(out[i], node_offset(own, static_cast<Index>(it - own.nodes.begin()), rule));
+  }
+  return out;
 }
 
 }  // namespace slideline

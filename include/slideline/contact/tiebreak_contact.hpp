@@ -40,8 +40,9 @@
 /// when a segment fails, and the failed area keeps carrying friction (mu N of its share) instead of
 /// nothing. The tie's tangential force on the failed share starts the contact's friction stick
 /// force (capped at mu N by the next cycle's return map). A node is released (tie gone) when all
-/// of its slave segments failed. The contact tracks the node's segment through the master's edge
-/// neighbours, pushes out along the normal when the node penetrates the surface through its tie
+/// of its slave segments failed. The contact is one ContactPairs stage (search/contact_pairs.hpp)
+/// without a broad phase: seeded with the tie points' segments and sides, its offset the tie-time
+/// gap, it tracks the node's segment (SegmentTracking::stay_while_inside), pushes out along the normal when the node penetrates the surface through its tie
 /// point (gap below the tie-time gap) and carries a stick spring in the tangent plane.
 /// master_force() is the sum of the forces added to master nodes (tie and contact).
 #include <algorithm>
@@ -54,6 +55,7 @@
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/search/closest_point.hpp"
+#include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/search/tie_search.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 #include "slideline/mesh/segment_stiffness.hpp"
@@ -79,7 +81,7 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   TiebreakContact(std::string name, std::vector<Index> slaves, Surface slave_surface, Surface master,
                   TiebreakParameters p)
       : name_(std::move(name)), candidates_(std::move(slaves)), slave_surface_(std::move(slave_surface)),
-        master_(std::move(master)), p_(p) {}
+        pairs_({}, {}, std::move(master), ShellOffsetRule{}, nullptr, pairs_options()), p_(p) {}
 
   const std::string& name() const override { return name_; }
 
@@ -122,13 +124,24 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
     return r;
   }
   Vec3 oriented_normal(std::size_t k, const Vec3Field& x) const {
-    return side_[k] * segment_normal(master_, links_[k].segment, x);
+    return static_cast<Real>(pairs_.side(k)) * segment_normal(master(), links_[k].segment, x);
+  }
+  const Surface& master() const { return pairs_.master(); }
+  /// The contact after failure: no search (the tie search seeds it), one-hop tracking, the side
+  /// fixed at tie time.
+  static ContactPairsOptions pairs_options() {
+    ContactPairsOptions o;
+    o.side_memory = SideMemory::keep_across_segments;
+    o.tracking = SegmentTracking::stay_while_inside;
+    return o;
   }
   /// Adds f to master node i and to the master total (master_force: what the masters received).
   void add_to_master(ContactForceView out, Index i, const Vec3& f) {
     out.force.add(i, f);
     master_total_ += f;
   }
+  /// Seeds the contact-pairs stage with the tie points (segments, sides per link: +1 / -1).
+  void seed_contact(const Vec3Field& x, const std::vector<std::int8_t>& side);
   /// Type 9: the tie force on slave segment j (slave side) and the sum of its links' oriented normals.
   void segment_tie_force(Index j, const Vec3Field& x, Vec3& fj, Vec3& nj) const;
   void record_first_failure_stress(const Vec3Field& x);
@@ -141,15 +154,15 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
                              ContactForceView out);
 
   std::string name_;
-  std::vector<Index> candidates_;
-  Surface slave_surface_, master_;
+  std::vector<Index> candidates_;  ///< the nodes the tie search may tie
+  Surface slave_surface_;
+  ContactPairs pairs_;  ///< the tied nodes on the master: contact points after failure, sides
   TiebreakParameters p_;
   std::vector<TiePoint> links_;
   std::vector<Index> untied_nodes_;
   std::vector<Real> kappa_;          ///< per link: stiffness per unit area (force / length^3)
   std::vector<Real> area_;           ///< per link: area its spring stands for (unfailed tributary area)
   std::vector<Real> area0_;          ///< per link: the same at tie time
-  std::vector<Real> side_;           ///< per link: +1 / -1, orients the master normal towards the slave
   std::vector<std::uint8_t> released_;
   std::vector<Vec3> delta_;          ///< per link: tie stretch at the last cycle
   std::vector<Index> segment_links_; ///< 4 per slave segment: link indices (-1 if untied/repeated)
@@ -157,7 +170,6 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   std::vector<Real> segment_share_;  ///< per slave segment: area per corner (A/4, A/3 on triangles)
   std::vector<std::uint8_t> segment_failed_;
   std::vector<Vec3> segment_force_;
-  std::vector<Index> track_;         ///< per link: master segment tracked by the contact share
   std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
   Real compression_ = 1.0;           ///< normal stiffness in compression / kappa x area (>= 1)
   Real dt_ = std::numeric_limits<Real>::max();

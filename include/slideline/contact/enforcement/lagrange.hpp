@@ -190,6 +190,15 @@ inline void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
   t2 = n.cross(t1);
 }
 
+/// Records sweep `sweep` (from 0) of a Gauss-Seidel solve with its largest correction `worst`
+/// (length); true when that is within `tolerance` (converged: stop sweeping).
+inline bool end_sweep(LagrangeSolveResult& result, int sweep, Real worst, Real tolerance) {
+  result.sweeps = sweep + 1;
+  result.correction = worst;
+  result.converged = worst <= tolerance;
+  return result.converged;
+}
+
 }  // namespace detail
 
 /// x^{n+1} of node i as the last solve left it (length): the damped update of ConstraintView
@@ -286,13 +295,7 @@ inline LagrangeSolveResult solve_cached(std::span<LagrangeConstraint> cs, const 
         worst = std::max(worst, w.c.cwiseProduct(dt).norm());
       }
     }
-    result.sweeps = sweep + 1;
-    result.correction = worst;
-    if (worst <= opt.tolerance) {
-      result.converged = true;
-      break;
-    }
-    result.converged = false;
+    if (detail::end_sweep(result, sweep, worst, opt.tolerance)) break;
   }
   for (std::size_t j = 0; j < cs.size(); ++j) {
     const LagrangeConstraint& k = cs[j];
@@ -370,13 +373,7 @@ inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint>
         worst = std::max(worst, c.cwiseProduct(dt).norm());
       }
     }
-    result.sweeps = sweep + 1;
-    result.correction = worst;
-    if (worst <= opt.tolerance) {
-      result.converged = true;
-      break;
-    }
-    result.converged = false;
+    if (detail::end_sweep(result, sweep, worst, opt.tolerance)) break;
   }
   for (auto& k : cs) {
     const Vec3 r = p.relative_increment(k);

@@ -5,11 +5,11 @@
 /// against all segments with the single-surface filters). See docs/contact.md, "Penalty contact".
 ///
 /// Per cycle (compute(), then scatter()):
-/// - Search: when SearchCadence says a node moved more than margin / 2 since the last search, the
-///   broad phase is refitted and queried and each slave takes, among the candidate segments that
-///   face it, the one it is over, else the nearest (search/slave_orientation.hpp); otherwise each
-///   slave tracks its segment locally (track_segment with the same rule; the automatic pass
-///   instead re-picks among its still valid candidates, so that the single-surface filters hold).
+/// - Pairs: the pass holds one ContactPairs stage (search/contact_pairs.hpp: broad phase and its
+///   cadence, tracking, offsets, side memory): each slave's segment and closest point. Options:
+///   allowance = margin_fraction x the smallest segment diagonal, boxes padded by the largest
+///   offsets, the side forgotten on a new segment; the automatic pass skips incident segments and
+///   its own shell part and re-picks among its candidates between searches.
 /// - Gap: g = s (x_s - x_p) . n - o_m - o_s + g_0, with n the segment normal at the closest point
 ///   x_p, s = +1 for a solid face and the side the slave is on for a shell (frozen while in
 ///   contact), o_m half the master shell thickness, o_s the slave offset (half the slave shell
@@ -41,11 +41,7 @@
 #include "slideline/contact/enforcement/mortar_weights.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/friction/frictionless.hpp"
-#include "slideline/contact/search/broad_phase.hpp"
-#include "slideline/contact/search/narrow_phase.hpp"
-#include "slideline/contact/search/search_cadence.hpp"
-#include "slideline/contact/search/segment_tracking.hpp"
-#include "slideline/contact/search/slave_orientation.hpp"
+#include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/shell_offset.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/element_block.hpp"
@@ -100,8 +96,9 @@ class PenaltyPass {
   /// master: the master surface (adjacency built); broad_phase: a fresh broad phase.
   PenaltyPass(std::vector<Index> slaves, std::vector<Real> slave_offset, Surface master,
               std::unique_ptr<BroadPhase> broad_phase, PenaltyPassOptions options)
-      : slaves_(std::move(slaves)), slave_offset_(std::move(slave_offset)), master_(std::move(master)),
-        broad_(std::move(broad_phase)), opt_(options) {}
+      : pairs_(std::move(slaves), std::move(slave_offset), std::move(master), options.master_shells,
+               std::move(broad_phase), pairs_options(options)),
+        opt_(options) {}
   PenaltyPass(const PenaltyPass&) = delete;
   PenaltyPass& operator=(const PenaltyPass&) = delete;
 
@@ -135,8 +132,10 @@ class PenaltyPass {
   /// over every slave with a segment at the last compute().
   Real stable_dt() const { return dt_; }
 
-  std::span<const Index> slaves() const { return slaves_; }
-  const Surface& master() const { return master_; }
+  std::span<const Index> slaves() const { return pairs_.slaves(); }
+  const Surface& master() const { return pairs_.master(); }
+  /// The contact-pairs stage (search, tracking, offsets, side memory) this pass consumes.
+  const ContactPairs& pairs() const { return pairs_; }
   std::span<const PenaltyRecord> records() const { return records_; }
   /// Stiffness of master segment s (force / length).
   Real segment_stiffness(Index s) const { return k_seg_[static_cast<std::size_t>(s)]; }
@@ -150,60 +149,59 @@ class PenaltyPass {
   void set_slave_surface(Surface surface) { slave_surface_ = std::move(surface); }
   /// Which master segments each slave may meet (search/slave_orientation.hpp; indexed like
   /// slaves()), set by the factory before initialize(); default: no orientation filter.
-  void set_slave_orientation(SlaveOrientation orientation) { orientation_ = std::move(orientation); }
-  /// Part of each slave node (automatic pass: for the transmitted force), set by the owner.
-  std::vector<Id>& slave_part() { return slave_part_; }
-  const std::vector<Id>& slave_part() const { return slave_part_; }
+  void set_slave_orientation(SlaveOrientation orientation) { pairs_.set_orientation(std::move(orientation)); }
+  /// Part of each slave node (automatic pass: its own-part filter), set by the owner.
+  std::vector<Id>& slave_part() { return pairs_.slave_parts(); }
+  const std::vector<Id>& slave_part() const { return pairs_.slave_parts(); }
 
  private:
-  void search(const Vec3Field& x);
-  void set_depth_limits(const NodalFields& nodes, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
-  bool accepted(std::size_t i, Index s, const Vec3Field& x) const;
-  Real master_offset(Index s) const { return segment_offset(master_, s, opt_.master_shells); }
-  void locate(const Vec3Field& x);
+  /// The stage's options for a pass: the search allowance, Type 12's single-surface filters, and
+  /// the side forgotten on a new segment.
+  static ContactPairsOptions pairs_options(const PenaltyPassOptions& o) {
+    ContactPairsOptions p;
+    p.allowance_fraction = o.margin_fraction;
+    p.skip_incident = o.automatic;
+    p.skip_own_shell_part = o.automatic;
+    p.repick_between_searches = o.automatic;
+    return p;
+  }
   struct CoupledPoint {
     Vec3 dx, dv;     ///< slave minus coupled master point: position (length), velocity
     Real inv_mass;   ///< 1/m_s + sum weight^2 / m_a (1 / mass)
   };
   static CoupledPoint coupled_point(Index node, const Projection& pr, const Index* c, const MortarWeights* mw,
                                     const NodalFields& nodes);
-  void pick_nearest_candidates(const Vec3Field& x);
+  /// What the stick spring of one slave needs: the oriented normal, the normal force (force), the
+  /// spring k (force / length), 1/m of the coupled pair, gamma (length), the relative velocity.
+  struct StickInputs {
+    Vec3 normal;
+    Real fn, k, inv_mass, slip;
+    Vec3 dv;
+  };
+  template <class Friction>
+  void add_friction(std::size_t i, const StickInputs& in, const StepTimes& times, const Friction& law,
+                    PenaltyRecord& rec, Vec3& f);
   template <class Friction>
   void evaluate(std::size_t i, const NodalFields& nodes, const StepTimes& times, const Friction& friction);
   /// Search and gaps at t = 0; each slave below the surface (beyond round-off) keeps its depth as
   /// the spring's zero (g0_). Returns the count; `deepest` gets the largest depth.
   Index detect_initial_penetrations(const NodalFields& nodes, Real& deepest);
 
-  std::vector<Index> slaves_;
-  std::vector<Real> slave_offset_;
-  Surface master_;
-  std::unique_ptr<BroadPhase> broad_;
+  ContactPairs pairs_;
   PenaltyPassOptions opt_;
-  std::unique_ptr<SearchCadence> cadence_;
-  std::vector<Candidate> candidates_;
-  std::vector<std::size_t> run_begin_;  ///< per slave: first candidate (automatic pass)
-  std::vector<std::size_t> run_end_;
   std::vector<Real> k_seg_;
   std::vector<Real> kappa_;             ///< mortar coupling: k_s / A_s per segment (else empty)
   Surface slave_surface_;               ///< mortar coupling: the slaves' own surface
   std::vector<MortarWeights> mortar_;   ///< mortar coupling: per slave, this cycle's weights
-  std::vector<Index> segment_;          ///< per slave: current segment (-1 none)
-  std::vector<SegmentProjection> proj_;
-  std::vector<std::int8_t> side_;       ///< shell master: side of the slave, 0 unknown
   std::vector<std::uint8_t> touched_;   ///< sliding only: has been in contact
   std::vector<Vec3> ue_;                ///< elastic slip: contact point - sticking point (length)
   std::vector<Real> slip_seg_;          ///< per master segment: gamma (length)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
-  std::vector<Real> depth_seg_;         ///< per master segment: deepest contact (length; empty: half its size)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
-  std::vector<Id> slave_part_;
-  std::vector<std::uint8_t> slave_solid_;  ///< automatic: the slave node has only solid faces
-  SlaveOrientation orientation_;
   Real dt_ = std::numeric_limits<Real>::max();
   Index initial_count_ = 0;
   Real initial_max_ = 0.0;
-  bool first_ = true;
 };
 
 }  // namespace slideline
