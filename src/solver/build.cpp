@@ -217,17 +217,6 @@ struct Builder {
     for (Index n : nodes) rigid_node_part.emplace(n, part.pid);
   }
 
-  /// A support on a node of a rigid part would tear the node off its body: refuse it, naming the
-  /// card, the node and the part, and say how a rigid part is constrained instead.
-  void check_not_rigid(const std::vector<Index>& nodes, const model::Source& src, const char* card) const {
-    for (Index n : nodes)
-      if (const auto it = rigid_node_part.find(n); it != rigid_node_part.end())
-        throw InputError(describe(src) + ": " + card + " constrains node " + std::to_string(sim->nodes.ids[n]) +
-                         " of rigid part " + std::to_string(it->second) +
-                         "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) or move it with "
-                         "*BOUNDARY_PRESCRIBED_MOTION_RIGID instead");
-  }
-
   /// Resolves every node, part and segment set into sim->sets (after build_elements, which finds
   /// each part's nodes), so that they outlive the build: contact interfaces look them up by id.
   void build_sets() {
@@ -291,14 +280,12 @@ struct Builder {
 
   void build_boundaries() {
     for (const auto& spc : m.spcs) {
-      SupportGroup g;
-      const char* const card = spc.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET";
+      SupportGroup g;  // DOF flags 0 or 1, no CID, no rigid node (validate_model)
       g.name = !spc.title.empty() ? spc.title
                                   : std::string(spc.node ? "spc_node_" : "spc_") +
                                         std::to_string(spc.id != 0 ? spc.id : spc.nsid);
       const auto nodes = spc.node ? std::vector<Index>{node(spc.nsid, spc.src, "NID")}
                                   : node_set(spc.nsid, spc.src, "NSID");
-      check_not_rigid(nodes, spc.src, card);
       for (int d = 0; d < 6; ++d) {
         if (spc.dof[d] == 0) continue;
         Support s;
@@ -310,8 +297,7 @@ struct Builder {
       sim->supports.push_back(std::move(g));
     }
     for (const auto& pm : m.prescribed_motions) {
-      // validate_model let through only the VAD (0-2) and DOF values run here.
-      const std::string card = pm.keyword();
+      // validate_model let through only the VAD (0-2) and DOF values run here, on no rigid node.
       if (pm.target == model::PrescribedMotion::Target::rigid) {
         build_rigid_motion(pm);
         continue;
@@ -324,7 +310,6 @@ struct Builder {
       s.nodes = pm.target == model::PrescribedMotion::Target::node
                     ? std::vector<Index>{node(pm.nsid, pm.src, "NID")}
                     : node_set(pm.nsid, pm.src, "NSID");
-      check_not_rigid(s.nodes, pm.src, card.c_str());
       s.has_curve = true;
       s.kind = pm.vad == 0 ? Prescribed::velocity : pm.vad == 1 ? Prescribed::acceleration : Prescribed::displacement;
       s.curve = curve(pm.lcid, pm.src, "LCID");

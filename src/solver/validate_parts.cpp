@@ -1,6 +1,7 @@
 // validate_model, the parts: what each part with elements asks of its section, hourglass card and
 // material (the checks build_elements relies on), and the nodes' constraint codes. A dangling id
 // is check_references' to report (and the builder's lookup's): it is passed over here.
+#include <algorithm>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -111,6 +112,67 @@ void check_rigid_motions(const model::Model& m, const std::set<Id>& in_use, cons
   }
 }
 
+/// Supports and motions on nodes of rigid parts would tear the nodes off their bodies: the first
+/// such node of each card (in deck order of *NODE), named with its part, as the builder named it.
+class RigidNodes {
+ public:
+  RigidNodes(const model::Model& m, const std::set<Id>& rigid) : m_(m) {
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) index_.emplace(m.nodes[i].id, i);
+    std::unordered_map<Id, std::size_t> rank;  // rigid part -> its place in build order
+    for (const auto& [pid, use] : parts_in_use(m))
+      if (rigid.count(pid)) rank.emplace(pid, rank.size());
+    const auto add = [&](Id pid, const auto& element_nodes) {
+      const auto r = rank.find(pid);
+      if (r == rank.end()) return;
+      for (Id n : element_nodes) {
+        const auto [it, fresh] = part_.try_emplace(n, pid);
+        if (!fresh && r->second < rank.at(it->second)) it->second = pid;
+      }
+    };
+    for (const auto& e : m.solids) add(e.pid, e.n);
+    for (const auto& e : m.shells) add(e.pid, e.n);
+  }
+
+  void check(bool single, Id id, const model::Source& src, const std::string& card, Problems& p) const {
+    if (part_.empty()) return;
+    std::vector<std::pair<std::size_t, Id>> nodes;  // (deck index, id)
+    const auto add = [&](Id n) {
+      if (const auto f = index_.find(n); f != index_.end()) nodes.emplace_back(f->second, n);
+    };
+    if (single) {
+      add(id);
+    } else if (const auto s = std::find_if(m_.node_sets.begin(), m_.node_sets.end(),
+                                           [&](const model::NodeSet& x) { return x.sid == id; });
+               s != m_.node_sets.end()) {
+      for (Id n : s->nodes) add(n);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    for (const auto& [i, n] : nodes)
+      if (const auto f = part_.find(n); f != part_.end()) {
+        p.bad(describe(src) + ": " + card + " constrains node " + std::to_string(n) + " of rigid part " +
+              std::to_string(f->second) +
+              "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) or move it with "
+              "*BOUNDARY_PRESCRIBED_MOTION_RIGID instead");
+        return;
+      }
+  }
+
+ private:
+  const model::Model& m_;
+  std::unordered_map<Id, std::size_t> index_;
+  std::unordered_map<Id, Id> part_;  // node id -> the first rigid part (build order) it belongs to
+};
+
+void check_rigid_nodes(const model::Model& m, const std::set<Id>& rigid, Problems& p) {
+  if (rigid.empty()) return;
+  const RigidNodes nodes(m, rigid);
+  for (const auto& spc : m.spcs)
+    nodes.check(spc.node, spc.nsid, spc.src, spc.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET", p);
+  for (const auto& pm : m.prescribed_motions)
+    if (pm.target != model::PrescribedMotion::Target::rigid)
+      nodes.check(pm.target == model::PrescribedMotion::Target::node, pm.nsid, pm.src, pm.keyword(), p);
+}
+
 }  // namespace
 
 void check_parts(const model::Model& m, Problems& p) {
@@ -166,6 +228,7 @@ void check_parts(const model::Model& m, Problems& p) {
     }
   }
   check_rigid_motions(m, in_use, rigid, unresolved, p);
+  check_rigid_nodes(m, rigid, p);
 }
 
 }  // namespace slideline::validation
