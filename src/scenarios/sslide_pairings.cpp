@@ -36,20 +36,9 @@ Real coordinate(const model::Model& m, Id node, int axis) {
   return 0.0;
 }
 
-}  // namespace
-
-SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common, SslideIds& ids,
-                                 const SslidePairingRequest& r, SslidePairingSets& sets) {
-  SslidePairing p;
-  p.name = r.name;
-  p.contact_title = r.name;
-  p.bottom_support = r.name + "_bottom";
-  p.right_support = r.name + "_right";
-  p.gap = r.gap;
-  p.upper_mass = kUnitMass * r.cells;
-  p.px = r.px;
-  p.py = r.py;
-
+/// The pairing's parts: the lower block, the optional skin, the upper body.
+void add_parts(model::Model& m, const SslideCommonIds& common, SslideIds& ids, const SslidePairingRequest& r,
+               SslidePairing& p) {
   const bool upper_is_shell = r.upper_shell || r.upper_edge_plate;
   p.lower_part = ids.next_part++;
   m.parts.push_back({p.lower_part, r.name + "_lower", common.solid_section, common.solid_material, 0,
@@ -66,36 +55,51 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
   else
     m.parts.push_back({p.upper_part, r.name + "_upper", common.solid_section, common.solid_material, 0,
                        common.solid_hourglass, {}});
+}
 
+/// The pairing's meshes and where the upper body sits.
+struct PairingMesh {
+  Grid lower, upper;
+  std::vector<Id> contact_nodes;  // the upper body's contact nodes
+  Real xu = 0.0;                  // the upper body's left face
+  Real z0 = 0.0;                  // the upper body's near face in z
+};
+
+PairingMesh add_meshes(SslideIds& ids, const SslidePairingRequest& r, const SslidePairing& p) {
   // Lower block: 2 elements per unit length in x and z, 2 through y. The upper body is centred in
   // z (0.01 margin per unit cell on each side) and inset 0.03 in x, so that none of its nodes lies
   // on a lower grid line and it can slide 0.45 in +x and stay seated.
+  PairingMesh g;
   const Real depth = 1.02 * r.cells;
-  const Real z0 = 0.01 * r.cells;
+  g.z0 = 0.01 * r.cells;
   const int nz_upper = static_cast<int>(3 * r.cells), nz_lower = static_cast<int>(2 * r.cells);
-  const Real xu = r.x0 + kUpperInset;
-  const Grid lower = ids.mesh.add_grid(lines(r.x0, kLowerLength, 3), lines(0.0, 1.0, 2), lines(0.0, depth, nz_lower),
-                                       p.lower_part, false);
+  g.xu = r.x0 + kUpperInset;
+  g.lower = ids.mesh.add_grid(lines(r.x0, kLowerLength, 3), lines(0.0, 1.0, 2), lines(0.0, depth, nz_lower),
+                              p.lower_part, false);
   if (r.skin) {
-    const Grid skin = ids.mesh.add_nodes(lower.xs, {lower.ys.back()}, lower.zs, true);
+    const Grid skin = ids.mesh.add_nodes(g.lower.xs, {g.lower.ys.back()}, g.lower.zs, true);
     ids.mesh.add_shells(skin, p.skin_part, true);
   }
-  Grid upper;
-  std::vector<Id> contact_nodes;
   if (r.upper_edge_plate) {
-    upper = ids.mesh.add_nodes({xu + 0.5}, lines(1.0 + r.gap, 1.0, 3), lines(z0, r.cells, nz_upper), false);
-    ids.mesh.add_shells(upper, p.upper_part, false);
-    contact_nodes = layer_nodes(upper, 0);  // the bottom edge
+    g.upper = ids.mesh.add_nodes({g.xu + 0.5}, lines(1.0 + r.gap, 1.0, 3), lines(g.z0, r.cells, nz_upper), false);
+    ids.mesh.add_shells(g.upper, p.upper_part, false);
+    g.contact_nodes = layer_nodes(g.upper, 0);  // the bottom edge
   } else if (r.upper_shell) {
-    upper = ids.mesh.add_nodes(lines(xu, 1.0, 3), {1.0 + r.gap}, lines(z0, r.cells, nz_upper), false);
-    ids.mesh.add_shells(upper, p.upper_part, true);
-    contact_nodes = layer_nodes(upper, 0);
+    g.upper = ids.mesh.add_nodes(lines(g.xu, 1.0, 3), {1.0 + r.gap}, lines(g.z0, r.cells, nz_upper), false);
+    ids.mesh.add_shells(g.upper, p.upper_part, true);
+    g.contact_nodes = layer_nodes(g.upper, 0);
   } else {
-    upper = ids.mesh.add_grid(lines(xu, 1.0, 3), lines(1.0 + r.gap, 1.0, 2), lines(z0, r.cells, nz_upper),
-                              p.upper_part, false);
-    contact_nodes = layer_nodes(upper, 0);
+    g.upper = ids.mesh.add_grid(lines(g.xu, 1.0, 3), lines(1.0 + r.gap, 1.0, 2), lines(g.z0, r.cells, nz_upper),
+                                p.upper_part, false);
+    g.contact_nodes = layer_nodes(g.upper, 0);
   }
+  return g;
+}
 
+/// The supports and the node, segment and part sets the contacts refer to.
+void add_sets(model::Model& m, const SslideCommonIds& common, SslideIds& ids, const SslidePairingRequest& r,
+              const SslidePairing& p, const PairingMesh& g, SslidePairingSets& sets) {
+  const Grid& lower = g.lower;
   auto add_node_set = [&](const std::string& title, std::vector<Id> nodes) {
     m.node_sets.push_back({ids.next_set, title, std::move(nodes), {}});
     return ids.next_set++;
@@ -111,9 +115,9 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
   const Id right = add_node_set(p.right_support, right_nodes);
   m.spcs.push_back({bottom, p.bottom_support, bottom, 0, {0, 1, 0, 0, 0, 0}, {}});
   m.spcs.push_back({right, p.right_support, right, 0, {1, 0, 0, 0, 0, 0}, {}});
-  sets.upper_nodes = add_node_set(r.name + "_upper_contact_nodes", contact_nodes);
-  if (!upper_is_shell) {
-    m.segment_sets.push_back({ids.next_set, r.name + "_upper_bottom", layer_segments(upper, 0, false), {}});
+  sets.upper_nodes = add_node_set(r.name + "_upper_contact_nodes", g.contact_nodes);
+  if (!(r.upper_shell || r.upper_edge_plate)) {
+    m.segment_sets.push_back({ids.next_set, r.name + "_upper_bottom", layer_segments(g.upper, 0, false), {}});
     sets.upper_segments = ids.next_set++;
   }
   m.segment_sets.push_back(
@@ -123,9 +127,13 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
   sets.contact_parts = ids.next_set++;
   for (auto& ps : m.part_sets)
     if (ps.sid == common.loaded_parts) ps.parts.push_back(p.upper_part);
+}
 
-  // Monitor: the contact node nearest the centre of the contact area, and the segment under it.
-  const Id slave = nearest_in_layer(upper, 0, xu + 0.5, z0 + 0.5 * r.cells);
+/// The monitor: the contact node nearest the centre of the contact area, the segment under it,
+/// the row of segments it slides over and the leading edge, and their history nodes.
+void add_monitor(model::Model& m, const SslidePairingRequest& r, const PairingMesh& g, SslidePairing& p) {
+  const Grid& lower = g.lower;
+  const Id slave = nearest_in_layer(g.upper, 0, g.xu + 0.5, g.z0 + 0.5 * r.cells);
   p.monitor = locate_on_top(lower, slave, coordinate(m, slave, 0), coordinate(m, slave, 2));
   p.monitor.slave_x0 = Vec3(coordinate(m, slave, 0), coordinate(m, slave, 1), coordinate(m, slave, 2));
   // The row of top-face segments under the slave's z, over the whole block length: the slave
@@ -142,7 +150,7 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
   }
   // The leading edge: the contact node at the upper body's +x end in the slave's row (the edge
   // plate's own x: it is its own leading edge).
-  p.monitor.leading_node = nearest_in_layer(upper, 0, xu + 1.0, p.monitor.slave_x0.z());
+  p.monitor.leading_node = nearest_in_layer(g.upper, 0, g.xu + 1.0, p.monitor.slave_x0.z());
   p.monitor.leading_x0 = Vec3(coordinate(m, p.monitor.leading_node, 0), coordinate(m, p.monitor.leading_node, 1),
                               coordinate(m, p.monitor.leading_node, 2));
   m.database.history_nodes.push_back(slave);
@@ -153,6 +161,25 @@ SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common,
       if (std::find(m.database.history_nodes.begin(), m.database.history_nodes.end(), n) ==
           m.database.history_nodes.end())
         m.database.history_nodes.push_back(n);
+}
+
+}  // namespace
+
+SslidePairing add_sslide_pairing(model::Model& m, const SslideCommonIds& common, SslideIds& ids,
+                                 const SslidePairingRequest& r, SslidePairingSets& sets) {
+  SslidePairing p;
+  p.name = r.name;
+  p.contact_title = r.name;
+  p.bottom_support = r.name + "_bottom";
+  p.right_support = r.name + "_right";
+  p.gap = r.gap;
+  p.upper_mass = kUnitMass * r.cells;
+  p.px = r.px;
+  p.py = r.py;
+  add_parts(m, common, ids, r, p);
+  const PairingMesh mesh = add_meshes(ids, r, p);
+  add_sets(m, common, ids, r, p, mesh, sets);
+  add_monitor(m, r, mesh, p);
   return p;
 }
 

@@ -11,34 +11,40 @@ using detail::lines;
 using detail::merge_lines;
 using detail::MeshWriter;
 
-TwoBlockIds add_solid_pair(model::Model& m, const TwoBlockOptions& o) {
-  const bool first = m.materials.empty();
-  Id id = o.first_id;
-  TwoBlockIds ids;
+namespace {
+
+/// The cards every pair shares, written by the first call: material, section, hourglass, the load
+/// curves and body loads, damping, termination and output.
+void add_common_cards(model::Model& m, const TwoBlockOptions& o) {
   const Id mat_id = o.first_id, sec_id = o.first_id, hg_id = o.first_id;
   const Id curve_y = o.first_id, curve_x = o.first_id + 1;
-  if (first) {
-    m.title = "slideline two-block problem (LLNL DYNA3D contact verification, scenario 1)";
-    m.materials.push_back(model::MatMooneyRivlin{mat_id, 0.01, 0.1, 909.091, 0.0, "rubber", {}});
-    m.solid_sections.push_back({sec_id, 1, {}});
-    m.hourglasses.push_back({hg_id, 10, 1.0, 1.5, 0.06, {}});
-    m.bulk_viscosity = {1.5, 0.06};
-    m.curves.push_back({curve_y, "load_y", 0, 1.0, 1.0, 0.0, 0.0, 0,
-                        {{0.0, 0.0}, {0.1, 1.0}, {1000.0, 1.0}}, {}});
-    m.curves.push_back({curve_x, "load_x", 0, 1.0, 1.0, 0.0, 0.0, 0,
-                        {{0.0, 0.0}, {0.3, 0.0}, {0.4, 1.0}, {1000.0, 1.0}}, {}});
-    // Body loads: LS-DYNA base accelerations, so the sign is opposite to the force. The upper block
-    // has mass 0.01 (density 0.01, volume 1).
-    const Real upper_mass = 0.01;
-    m.body_loads.push_back({Axis::y, curve_y, o.py / upper_mass, 0, 0, 0, 0, 0, {}});
-    m.body_loads.push_back({Axis::x, curve_x, -o.px / upper_mass, 0, 0, 0, 0, 0, {}});
-    m.damping_global = model::DampingGlobal{0, 2.0 * 0.05 * 150.0, {0, 0, 0, 0, 0, 0}, {}};
-    m.termination.endtim = o.end_time;
-    m.timestep.tssfac = 0.9;
-    m.database.rcforc = m.database.spcforc = m.database.nodout = m.database.glstat =
-        o.history_interval;
-    m.database.d3plot = o.state_interval;
-  }
+  m.title = "slideline two-block problem (LLNL DYNA3D contact verification, scenario 1)";
+  m.materials.push_back(model::MatMooneyRivlin{mat_id, 0.01, 0.1, 909.091, 0.0, "rubber", {}});
+  m.solid_sections.push_back({sec_id, 1, {}});
+  m.hourglasses.push_back({hg_id, 10, 1.0, 1.5, 0.06, {}});
+  m.bulk_viscosity = {1.5, 0.06};
+  m.curves.push_back({curve_y, "load_y", 0, 1.0, 1.0, 0.0, 0.0, 0,
+                      {{0.0, 0.0}, {0.1, 1.0}, {1000.0, 1.0}}, {}});
+  m.curves.push_back({curve_x, "load_x", 0, 1.0, 1.0, 0.0, 0.0, 0,
+                      {{0.0, 0.0}, {0.3, 0.0}, {0.4, 1.0}, {1000.0, 1.0}}, {}});
+  // Body loads: LS-DYNA base accelerations, so the sign is opposite to the force. The upper block
+  // has mass 0.01 (density 0.01, volume 1).
+  const Real upper_mass = 0.01;
+  m.body_loads.push_back({Axis::y, curve_y, o.py / upper_mass, 0, 0, 0, 0, 0, {}});
+  m.body_loads.push_back({Axis::x, curve_x, -o.px / upper_mass, 0, 0, 0, 0, 0, {}});
+  m.damping_global = model::DampingGlobal{0, 2.0 * 0.05 * 150.0, {0, 0, 0, 0, 0, 0}, {}};
+  m.termination.endtim = o.end_time;
+  m.timestep.tssfac = 0.9;
+  m.database.rcforc = m.database.spcforc = m.database.nodout = m.database.glstat = o.history_interval;
+  m.database.d3plot = o.state_interval;
+}
+
+}  // namespace
+
+TwoBlockIds add_solid_pair(model::Model& m, const TwoBlockOptions& o) {
+  if (m.materials.empty()) add_common_cards(m, o);
+  const Id id = o.first_id;
+  TwoBlockIds ids;
   Id next_part = 1, next_set = 1;
   for (const auto& p : m.parts) next_part = std::max(next_part, p.pid + 1);
   for (const auto& s : m.node_sets) next_set = std::max(next_set, s.sid + 1);

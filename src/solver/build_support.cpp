@@ -4,7 +4,6 @@
 #include <cmath>
 #include <variant>
 
-#include "slideline/core/overloaded.hpp"
 
 namespace slideline {
 
@@ -32,52 +31,25 @@ LoadCurve make_curve(const model::Curve& c) {
   }
 }
 
-std::array<int, 3> rigid_constraint_code(int code, const model::Source& src, const char* field) {
+std::optional<std::array<int, 3>> rigid_constraint_code(int code) {
   switch (code) {
-    case 0: return {0, 0, 0};
-    case 1: return {1, 0, 0};
-    case 2: return {0, 1, 0};
-    case 3: return {0, 0, 1};
-    case 4: return {1, 1, 0};
-    case 5: return {0, 1, 1};
-    case 6: return {1, 0, 1};
-    case 7: return {1, 1, 1};
-    default:
-      throw InputError(describe(src) + ": field " + field + " of *MAT_RIGID must be 0 to 7 (got " +
-                       std::to_string(code) + ")");
+    case 0: return std::array<int, 3>{0, 0, 0};
+    case 1: return std::array<int, 3>{1, 0, 0};
+    case 2: return std::array<int, 3>{0, 1, 0};
+    case 3: return std::array<int, 3>{0, 0, 1};
+    case 4: return std::array<int, 3>{1, 1, 0};
+    case 5: return std::array<int, 3>{0, 1, 1};
+    case 6: return std::array<int, 3>{1, 0, 1};
+    case 7: return std::array<int, 3>{1, 1, 1};
+    default: return std::nullopt;
   }
 }
 
-void check_positive(Real v, const char* field, const model::Source& src) {
-  if (!(v > 0.0))
-    throw InputError(describe(src) + ": field " + field + " must be positive (got " +
-                     std::to_string(v) + ")");
-}
-
-void check_material_constants(const model::Material& material) {
-  std::visit(Overloaded{[](const model::MatElastic& x) {
-                          check_positive(x.ro, "RO", x.src);
-                          check_positive(x.e, "E", x.src);
-                        },
-                        [](const model::MatMooneyRivlin& x) { check_positive(x.ro, "RO", x.src); },
-                        [](const model::MatRigid& x) {
-                          check_positive(x.ro, "RO", x.src);
-                          check_positive(x.e, "E", x.src);  // sets the part's time step, as in LS-DYNA
-                        }},
-             material);
-}
+int shell_nip(const model::SectionShell& sec) { return sec.nip == 0 ? 2 : sec.nip; }
 
 std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const IdTable<model::Part>& parts) {
   std::map<Id, StiffnessDamping> out;
   for (const auto& d : m.damping_stiffness) {
-    if (d.coef > 0.0)
-      throw NotImplementedError(
-          describe(d.src) + ": *DAMPING_PART_STIFFNESS COEF = " + std::to_string(d.coef) +
-          " > 0 selects LS-DYNA's approximate fraction of critical damping at high frequencies, "
-          "whose formulation is not published; give COEF = -beta (beta in time units, the "
-          "classical Rayleigh coefficient: fraction of critical damping beta * omega / 2)");
-    if (!std::isfinite(d.coef))
-      throw InputError(describe(d.src) + ": field COEF of *DAMPING_PART_STIFFNESS must be finite");
     // Before build_sets (which needs the parts' nodes): the part set straight from the deck.
     std::vector<Id> pids{d.pid};
     if (d.set) {
@@ -98,17 +70,15 @@ std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const Id
   return out;
 }
 
-HexHourglass hex_hourglass(int ihq, Real qm, const model::Part& part) {
+std::optional<HexHourglass::Kind> hex_hourglass_kind(int ihq) {
+  if (ihq == 0 || ihq == 1 || ihq == 2 || ihq == 3) return HexHourglass::Kind::viscous;
+  if (ihq == 10) return HexHourglass::Kind::physical_stiffness;
+  return std::nullopt;
+}
+
+HexHourglass hex_hourglass(int ihq, Real qm) {
   HexHourglass hg;
-  if (ihq == 0 || ihq == 1 || ihq == 2 || ihq == 3) {
-    hg.kind = HexHourglass::Kind::viscous;
-  } else if (ihq == 10) {
-    hg.kind = HexHourglass::Kind::physical_stiffness;
-  } else {
-    throw NotImplementedError(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) +
-                              " of part " + std::to_string(part.pid) +
-                              " is not implemented (use 1-3 viscous or 10 physical stiffness)");
-  }
+  hg.kind = hex_hourglass_kind(ihq).value();  // validate_model refused the other types
   hg.coefficient = qm;
   return hg;
 }

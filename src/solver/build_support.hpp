@@ -49,21 +49,22 @@ class IdTable {
 /// A *DEFINE_CURVE with its scale factors and offsets applied.
 LoadCurve make_curve(const model::Curve& c);
 
-/// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all.
-std::array<int, 3> rigid_constraint_code(int code, const model::Source& src, const char* field);
+/// LS-DYNA *MAT_RIGID constraint codes (CMO = +1): 0 none, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all
+/// (the fixed axes); nothing for another code (validate_model refuses it).
+std::optional<std::array<int, 3>> rigid_constraint_code(int code);
 
-/// Throws an InputError naming the field and the card unless v > 0.
-void check_positive(Real v, const char* field, const model::Source& src);
-
-/// The constants a law divides by (validate_model reports them all first, with the rest).
-void check_material_constants(const model::Material& material);
+/// NIP of a *SECTION_SHELL, 0 meaning LS-DYNA's default 2.
+int shell_nip(const model::SectionShell& sec);
 
 /// *DAMPING_PART_STIFFNESS[_SET] by part id. COEF < 0 is the classical (LS-DYNA 950) Rayleigh
-/// coefficient beta = -COEF; COEF > 0 is LS-DYNA's later, unpublished formulation.
+/// coefficient beta = -COEF (validate_model refuses COEF > 0, LS-DYNA's later, unpublished formulation).
 std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const IdTable<model::Part>& parts);
 
-/// The hexahedron hourglass control of a part's IHQ (1-3 viscous, 10 physical stiffness; 0 means
-/// the default) and coefficient QM; other types are refused naming the part.
-HexHourglass hex_hourglass(int ihq, Real qm, const model::Part& part);
+/// The hexahedron hourglass kind of an IHQ (1-3 viscous, 10 physical stiffness; 0 means the
+/// default); nothing for the other types (validate_model refuses them, naming the part).
+std::optional<HexHourglass::Kind> hex_hourglass_kind(int ihq);
+
+/// The hexahedron hourglass control of a validated IHQ and its coefficient QM.
+HexHourglass hex_hourglass(int ihq, Real qm);
 
 }  // namespace slideline

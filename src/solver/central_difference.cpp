@@ -41,18 +41,12 @@ void update_rotation(NodalFields& nodes, const NodeRoles& roles, Index i, Real a
     const bool fixed = roles.fixed_rot(c)[i] != 0;
     const Real wnew = fixed ? 0.0 : ((1.0 - h) * wold + dt_avg * nodes.alpha[c][i]) / (1.0 + h);
     nodes.omega[c][i] = wnew;
-    const Real wbar = 0.5 * (wold + wnew);
-    const Real dprev = 0.5 * s.dt_prev * wold;
-    const Real dnext = 0.5 * s.dt_next * wnew;
-    const Real wk = s.first ? wold : wbar;
-    e.kinetic += 0.5 * inertia * wk * wk;
-    e.stress.add(-mi, dprev, dnext);
-    e.external.add(me, dprev, dnext);
-    e.contact.add(mk, dprev, dnext);
-    e.damping.add(al * inertia * wbar, dprev, dnext);
+    const DofMotion d = book_dof(e, inertia, wold, wnew, mi, me, s);
+    e.contact.add(mk, d.dprev, d.dnext);
+    e.damping.add(al * inertia * d.vbar, d.dprev, d.dnext);
     if (kind != kFree && !fixed) {
-      const Real mc = inertia * (wnew - wold) / dt_avg - mi - me - mk + al * inertia * wbar;
-      (kind == kRigid ? e.constraint : e.contact).add(mc, dprev, dnext);
+      const Real mc = inertia * (wnew - wold) / dt_avg - mi - me - mk + al * inertia * d.vbar;
+      (kind == kRigid ? e.constraint : e.contact).add(mc, d.dprev, d.dnext);
     }
   }
 }
@@ -69,12 +63,9 @@ NodalEnergySums update_velocities(NodalFields& nodes, const NodeRoles& roles, st
                                   const VelocityStep& s, std::span<NodalEnergySums> chunk_sums) {
   const Index n = static_cast<Index>(nodes.size());
   const Real dt_avg = s.dt_avg;
-  const Real dt_old = s.dt_prev;
-  const Real dt_new = s.dt_next;
   // The kinetic energy at t^n is that of the mean of the half-step velocities, except at t = 0:
   // there the initial velocity is v(0) itself (the first step is a half step from it), and the
-  // mean would put an O(dt) offset into the balance that never goes away.
-  const bool first = s.first;
+  // mean would put an O(dt) offset into the balance that never goes away (book_dof).
   const bool with_contact = s.with_contact;
   const auto kinds = roles.kinds();
   parallel_for_chunks(n, [&](Index b, Index end, Index chunk) {
@@ -95,26 +86,20 @@ NodalEnergySums update_velocities(NodalFields& nodes, const NodeRoles& roles, st
           vnew = ((1.0 - h) * vold + dt_avg * nodes.a[c][i]) / (1.0 + h);
         }
         nodes.v[c][i] = vnew;
-        const Real vbar = 0.5 * (vold + vnew);
-        const Real dprev = 0.5 * dt_old * vold;  // half of x^n - x^{n-1}
-        const Real dnext = 0.5 * dt_new * vnew;  // half of x^{n+1} - x^n
         const Real fi = nodes.f_int[c][i];
         const Real fe = nodes.f_ext[c][i];
         const Real fk = with_contact ? nodes.f_contact[c][i] : 0.0;
-        const Real fd = fixed ? 0.0 : -al * m * vbar;
-        const Real vk = first ? vold : vbar;
-        e.kinetic += 0.5 * m * vk * vk;
-        e.stress.add(-fi, dprev, dnext);
-        e.external.add(fe, dprev, dnext);
-        if (with_contact) e.contact.add(fk, dprev, dnext);
-        e.damping.add(-fd, dprev, dnext);
+        const DofMotion d = book_dof(e, m, vold, vnew, fi, fe, s);
+        const Real fd = fixed ? 0.0 : -al * m * d.vbar;
+        if (with_contact) e.contact.add(fk, d.dprev, d.dnext);
+        e.damping.add(-fd, d.dprev, d.dnext);
         if (fixed) {
-          e.support.add(m * (vnew - vold) / dt_avg - fi - fe - fk, dprev, dnext);
+          e.support.add(m * (vnew - vold) / dt_avg - fi - fe - fk, d.dprev, d.dnext);
         } else if (kind != kFree) {
           // The node's acceleration is the constraint's or the tie's, not the loads' over its own
           // mass: the difference is the force the rigid body or the tie applies.
           const Real fc = m * (vnew - vold) / dt_avg - fi - fe - fk - fd;
-          (kind == kRigid ? e.constraint : e.contact).add(fc, dprev, dnext);
+          (kind == kRigid ? e.constraint : e.contact).add(fc, d.dprev, d.dnext);
         }
       }
       if (nodes.has_rotation[i] && nodes.rot_inertia[i] > 0.0) update_rotation(nodes, roles, i, al, s, e);

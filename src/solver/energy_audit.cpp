@@ -21,14 +21,8 @@ NodalEnergySums dictated_node_sums(const NodalFields& nodes, std::span<const Ind
     const Index i = idx[k];
     // One dof of mass (or rotary inertia) m: velocity before and after, internal and external load.
     const auto book = [&](Real m, Real vold, Real vnew, Real fi, Real fe) {
-      const Real vbar = 0.5 * (vold + vnew);
-      const Real dprev = 0.5 * step.dt_prev * vold;
-      const Real dnext = 0.5 * step.dt_next * vnew;
-      const Real vk = step.first ? vold : vbar;
-      e.kinetic += 0.5 * m * vk * vk;
-      e.stress.add(-fi, dprev, dnext);
-      e.external.add(fe, dprev, dnext);
-      e.contact.add(m * (vnew - vold) / step.dt_avg - fi - fe, dprev, dnext);
+      const DofMotion d = book_dof(e, m, vold, vnew, fi, fe, step);
+      e.contact.add(m * (vnew - vold) / step.dt_avg - fi - fe, d.dprev, d.dnext);
     };
     for (int c = 0; c < 3; ++c)
       book(nodes.mass[i], v_old[k][c], nodes.v[c][i], nodes.f_int[c][i], nodes.f_ext[c][i]);

@@ -58,6 +58,7 @@ void Simulation::initialize() {
   chunk_e_.assign(static_cast<std::size_t>(chunk_count(n)), NodalEnergySums{});
   ledger_.reset();
   part_energy_.reset(blocks);
+  block_energy_.assign(blocks.size(), BlockEnergy{});
   votes_ = assemble_forces();
   const Real dt_stable = votes_.stable();
   if (!(dt_stable > 0.0) || !std::isfinite(dt_stable))
@@ -290,7 +291,8 @@ void Simulation::advance(const StepPlan& plan) {
   if (!constraints.empty()) {
     const Real k_before = kinetic_energy(nodes, roles_.constrained_nodes());
     for (auto& c : constraints) c->after_positions(effective_mass(), nodes, t_);
-    ledger_.add_constraint_work(kinetic_energy(nodes, roles_.constrained_nodes()) - k_before);
+    // Exchange point 3 (exchange.hpp): the work of the resets over all processes.
+    ledger_.add_constraint_work(exchange_->sum_reset_work(kinetic_energy(nodes, roles_.constrained_nodes()) - k_before));
   }
   const auto dictated = roles_.dictated_nodes();
   if (!dictated.empty()) {
@@ -299,7 +301,7 @@ void Simulation::advance(const StepPlan& plan) {
     if (!constraints.empty()) {
       const Real k_before = translational_kinetic_energy(nodes, dictated);
       contacts.follow_velocities(nodes);
-      ledger_.add_contact_work(translational_kinetic_energy(nodes, dictated) - k_before);
+      ledger_.add_contact_work(exchange_->sum_reset_work(translational_kinetic_energy(nodes, dictated) - k_before));
     }
     contacts.follow_positions(nodes);
   }

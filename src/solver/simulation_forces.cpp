@@ -29,17 +29,14 @@ StepVotes Simulation::assemble_forces() {
 Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
   const auto t0 = std::chrono::steady_clock::now();
   Real dtc = std::numeric_limits<Real>::max();
-  BlockEnergy be;
   controlling = nullptr;
   try {
     Real dt_other = std::numeric_limits<Real>::max();  // steps of blocks that do not bound it
     const ElementBlock* controlling_other = nullptr;
     for (std::size_t k = 0; k < blocks.size(); ++k) {
       const auto& b = blocks[k];
-      BlockEnergy bk;
-      const Real d = b->compute_forces(nodes, dt_, corners_, bk);
-      be += bk;
-      part_energy_.add(k, bk, cycle_ == 0 ? 0.0 : dt_);
+      block_energy_[k] = BlockEnergy{};
+      const Real d = b->compute_forces(nodes, dt_, corners_, block_energy_[k]);
       if (b->bounds_time_step()) {
         if (d < dtc) controlling = b.get();
         dtc = std::min(dtc, d);
@@ -59,7 +56,14 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
   }
   corners_.gather(nodes.f_int, nodes.m_int);
   element_seconds_ += seconds_since(t0);
-  // Element powers at t^n, integrated over the step that ends at t^n.
+  // Exchange point 3 (exchange.hpp): the element powers at t^n over all processes, integrated
+  // over the step that ends at t^n, per part and in total.
+  exchange_->sum_block_energies(block_energy_);
+  BlockEnergy be;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    be += block_energy_[k];
+    part_energy_.add(k, block_energy_[k], cycle_ == 0 ? 0.0 : dt_);
+  }
   ledger_.add_element_powers(be.hourglass_power, be.viscous_power, be.damping_power,
                              cycle_ == 0 ? 0.0 : dt_);
   return dtc;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "issue_groups.hpp"
+#include "validate_problems.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/core/overloaded.hpp"
 #include "slideline/element/hex8.hpp"
@@ -15,36 +16,12 @@
 namespace slideline {
 namespace {
 
+using validation::num;
+using validation::Problems;
+
 // Material constants beyond this magnitude overflow the products the solver forms (wave speeds,
 // energies): no consistent unit system needs them.
 constexpr Real kMaxConstant = 1e30;
-
-struct Problems {
-  std::vector<Diagnostic> input;         // bad input
-  std::vector<Diagnostic> unimplemented; // valid but not implemented yet
-
-  void bad(const model::Source& src, std::string msg) { input.push_back({src.file, src.line, std::move(msg)}); }
-  void todo(const model::Source& src, std::string msg) {
-    unimplemented.push_back({src.file, src.line, std::move(msg)});
-  }
-
-  [[noreturn]] void raise() const {
-    std::string what;
-    for (const auto* list : {&input, &unimplemented})
-      for (const auto& d : *list) {
-        if (!what.empty()) what += '\n';
-        what += to_string(d);
-      }
-    if (input.empty()) throw NotImplementedError(what);
-    throw InputError(what);
-  }
-};
-
-std::string num(Real v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 void positive(Problems& p, const model::Source& src, const char* card, const char* field, Real v) {
   if (!(v > 0.0) || !std::isfinite(v))
@@ -248,7 +225,9 @@ void validate_model(const model::Model& m, const BuildOptions& options) {
   check_controls(m, options, p);
   check_contact_times(m, p);
   check_elements(m, p);
-  if (!p.input.empty() || !p.unimplemented.empty()) p.raise();
+  validation::check_parts(m, p);
+  validation::check_loads(m, p);
+  if (!p.empty()) p.raise();
 }
 
 }  // namespace slideline

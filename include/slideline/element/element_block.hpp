@@ -80,9 +80,6 @@ class ElementBlock : public MeshBlock {
  public:
   ~ElementBlock() override = default;
 
-  /// Nodes per element when every element has the same topology, 0 for a mixed block (the
-  /// topology() runs say which element has which).
-  virtual int nodes_per_element() const = 0;
   /// True when the block writes corner moments (its nodes carry rotations).
   virtual bool has_moments() const { return false; }
   /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in

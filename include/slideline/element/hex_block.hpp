@@ -66,7 +66,6 @@ class HexBlock final : public ElementBlock {
   std::string kind() const override { return "hex8"; }
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return static_cast<Index>(ids_.size()); }
-  int nodes_per_element() const override { return 8; }
   BlockTopology topology() const override { return {hex8_topology, element_count()}; }
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }

@@ -59,10 +59,6 @@ class RigidMassBlock final : public ElementBlock {
   std::string kind() const override { return "rigid"; }
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return n_hex_ + n_quad_; }
-  /// 8 or 4 for a part of one element kind; 0 for a mixed part (topology() has both runs).
-  int nodes_per_element() const override {
-    return n_quad_ == 0 ? 8 : (n_hex_ == 0 ? 4 : 0);
-  }
   std::span<const Index> connectivity() const override { return conn_; }
   /// The hexahedra, then the shells (with the part's shell thickness).
   BlockTopology topology() const override {

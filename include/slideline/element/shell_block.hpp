@@ -70,7 +70,6 @@ class BasicShellBlock final : public ElementBlock {
   std::string kind() const override { return "shell_bt"; }
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return static_cast<Index>(ids_.size()); }
-  int nodes_per_element() const override { return 4; }
   BlockTopology topology() const override { return {quad4_topology, element_count(), sec_.thickness}; }
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }

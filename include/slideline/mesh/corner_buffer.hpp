@@ -28,7 +28,7 @@ struct NodeSlots {
 };
 
 /// Corner slots of all element blocks of a model. A block owns the range
-/// [base, base + nodes_per_element * elements) of `force`, and shells also a range of `moment`.
+/// [base, base + nodes of its elements' topologies) of `force`, and shells also a range of `moment`.
 struct CornerBuffer {
   Vec3Field force;
   Vec3Field moment;
@@ -39,28 +39,25 @@ struct CornerBuffer {
   void gather(Vec3Field& f, Vec3Field& m) const {
     const Index n = static_cast<Index>(f.size());
     parallel_for(n, [&](Index i) {
-      Real sx = 0, sy = 0, sz = 0;
-      for (Index k = force_slots.offset[i]; k < force_slots.offset[i + 1]; ++k) {
-        const Index s = force_slots.slot[k];
-        sx += force.x[s];
-        sy += force.y[s];
-        sz += force.z[s];
-      }
-      f.x[i] = sx;
-      f.y[i] = sy;
-      f.z[i] = sz;
+      sum_slots(force_slots, force, i, f);
       if (moment_slots.offset.empty()) return;
-      Real mx = 0, my = 0, mz = 0;
-      for (Index k = moment_slots.offset[i]; k < moment_slots.offset[i + 1]; ++k) {
-        const Index s = moment_slots.slot[k];
-        mx += moment.x[s];
-        my += moment.y[s];
-        mz += moment.z[s];
-      }
-      m.x[i] = mx;
-      m.y[i] = my;
-      m.z[i] = mz;
+      sum_slots(moment_slots, moment, i, m);
     });
+  }
+
+ private:
+  /// out[i] = the sum of node i's slots of `corners`, in slot-list order.
+  static void sum_slots(const NodeSlots& slots, const Vec3Field& corners, Index i, Vec3Field& out) {
+    Real sx = 0, sy = 0, sz = 0;
+    for (Index k = slots.offset[i]; k < slots.offset[i + 1]; ++k) {
+      const Index s = slots.slot[k];
+      sx += corners.x[s];
+      sy += corners.y[s];
+      sz += corners.z[s];
+    }
+    out.x[i] = sx;
+    out.y[i] = sy;
+    out.z[i] = sz;
   }
 };
 

@@ -35,6 +35,28 @@ struct VelocityStep {
 NodalEnergySums update_velocities(NodalFields& nodes, const NodeRoles& roles, std::span<const Real> damping,
                                   const VelocityStep& step, std::span<NodalEnergySums> chunk_sums);
 
+/// The motion of one degree of freedom over a velocity update, for the work halves of its loads.
+struct DofMotion {
+  Real vbar;   ///< (v^{n-1/2} + v^{n+1/2}) / 2
+  Real dprev;  ///< half of x^n - x^{n-1}
+  Real dnext;  ///< half of x^{n+1} - x^n
+};
+
+/// Books into `e` the kinetic energy at t^n of one degree of freedom of mass (or rotary inertia)
+/// `m` whose velocity went from `vold` to `vnew` (v(0) itself on the first cycle, else the mean
+/// velocity), and the work halves of its internal (`fi`) and external (`fe`) loads; returns its
+/// motion for the works the caller books next. The one rule of the velocity update's energy sums
+/// (update_velocities, tied slaves in energy_audit.hpp).
+inline DofMotion book_dof(NodalEnergySums& e, Real m, Real vold, Real vnew, Real fi, Real fe,
+                          const VelocityStep& s) {
+  const DofMotion d{0.5 * (vold + vnew), 0.5 * s.dt_prev * vold, 0.5 * s.dt_next * vnew};
+  const Real vk = s.first ? vold : d.vbar;
+  e.kinetic += 0.5 * m * vk * vk;
+  e.stress.add(-fi, d.dprev, d.dnext);
+  e.external.add(fe, d.dprev, d.dnext);
+  return d;
+}
+
 /// x^{n+1} = x^n + dt v^{n+1/2}.
 void update_positions(NodalFields& nodes, Real dt);
 

@@ -152,6 +152,7 @@ class Simulation {
   StabilityMonitor monitor_;
   EnergyLedger ledger_;
   PartEnergyMonitor part_energy_;
+  std::vector<BlockEnergy> block_energy_;  // this cycle's element powers per block (exchange point 3)
   CornerBuffer corners_;
   std::vector<Real> alpha_;              // per-node mass-damping coefficient
   std::vector<Vec3> dictated_v_old_;     // the tied slaves' v^{n-1/2} (and omega) during a cycle

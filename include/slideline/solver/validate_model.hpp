@@ -6,7 +6,10 @@
 /// - validate_model: what build_simulation runs first: an empty model, element kinds (degenerate
 ///   hexahedra: tetrahedra, pentahedra, pyramids; triangular shells), inverted hexahedra (node
 ///   order), material constants, *CONTROL_TIMESTEP TSSFAC, the end time, contact birth and death,
-///   and prescribed-motion fields that are read but not run.
+///   and prescribed-motion fields that are read but not run (validate_model.cpp); what each part
+///   asks of its section, hourglass card and material, *MAT_RIGID constraints, nodal TC/RC and
+///   _RIGID motions (validate_parts.cpp); supports, loads, damping, curves, the other controls
+///   and contact titles (validate_loads.cpp). The builder then builds from a validated model.
 ///
 /// The reader checks only the syntax of each field (io/keyword_reader.hpp). See docs/keywords.md.
 #include <vector>

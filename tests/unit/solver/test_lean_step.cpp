@@ -122,7 +122,7 @@ namespace {
 class CountingExchange final : public Exchange {
  public:
   struct Counts {
-    int forces = 0, dt = 0, energies = 0;
+    int forces = 0, dt = 0, energies = 0, block_energies = 0;
   };
   explicit CountingExchange(Counts& c) : c_(c) {}
   void sum_forces(NodalFields&) override { ++c_.forces; }
@@ -133,9 +133,28 @@ class CountingExchange final : public Exchange {
     return v;
   }
   void sum_energies(NodalEnergySums&, Real&) override { ++c_.energies; }
+  void sum_block_energies(std::span<BlockEnergy>) override { ++c_.block_energies; }
+  Real sum_reset_work(Real local) override { return local; }
 
  private:
   Counts& c_;
+};
+
+/// Two processes holding the same elements and nodes: every sum is twice this process's.
+class DoublingExchange final : public Exchange {
+ public:
+  void sum_forces(NodalFields&) override {}
+  StepVotes min_dt(const StepVotes& local) override { return local; }
+  void sum_energies(NodalEnergySums&, Real&) override {}
+  void sum_block_energies(std::span<BlockEnergy> blocks) override {
+    for (auto& b : blocks) {
+      b.hourglass_power *= 2.0;
+      b.viscous_power *= 2.0;
+      b.damping_power *= 2.0;
+      b.element_power *= 2.0;
+    }
+  }
+  Real sum_reset_work(Real local) override { return 2.0 * local; }
 };
 
 /// One free elastic hexahedron [0,1]^3 moving at unit speed in x, for `cycles` cycles.
@@ -176,8 +195,38 @@ TEST(Exchange, TheStepCallsItsThreePointsAndTakesTheReducedStep) {
   EXPECT_EQ(counts.forces, 11);
   EXPECT_EQ(counts.dt, 11);
   EXPECT_EQ(counts.energies, 11);
+  EXPECT_EQ(counts.block_energies, 11);
   // A rigid translation at unit speed: the centre moved by the time elapsed.
   Real mean_ux = 0.0;
   for (Index i = 0; i < 8; ++i) mean_ux += sim.nodes.displacement(i)[0] / 8.0;
   EXPECT_NEAR(mean_ux, sim.time(), 1e-12);
+}
+
+TEST(Exchange, ElementEnergiesPerPartAndInTotalComeFromTheReducedPowers) {
+  // A stretch in x with a small hourglass mode on it: hourglass, bulk-viscosity and stored
+  // energies all nonzero.
+  const auto hourglassing_hex = [](Simulation& sim) {
+    free_hex(sim, 3);  // a few cycles: a free element so set going stops with "inverted" by cycle 10
+    for (Index i = 0; i < 8; ++i) {
+      const Real hg = (((i & 1) + ((i >> 1) & 1) + ((i >> 2) & 1)) % 2) ? 1e-4 : -1e-4;
+      sim.nodes.v.set(i, Vec3((i & 1 ? 1e-3 : -1e-3) + hg, 0.0, 0.0));
+    }
+    // Doubled element energies against one process's nodal work: not a balance to stop on.
+    sim.controls.energy_error_limit = 1e30;
+    sim.controls.energy_error_warning = 1e30;
+  };
+  Simulation plain;
+  hourglassing_hex(plain);
+  plain.run({});
+  Simulation twice(std::make_unique<DoublingExchange>());
+  hourglassing_hex(twice);
+  twice.run({});
+  ASSERT_EQ(twice.cycle(), plain.cycle());
+  ASSERT_GT(plain.energy().hourglass, 0.0);
+  ASSERT_GT(plain.part_energies().internal_energy(0), 0.0);
+  // The motion is this process's own; the energies are the reduced powers', exactly twice.
+  EXPECT_EQ(twice.energy().hourglass, 2.0 * plain.energy().hourglass);
+  EXPECT_EQ(twice.energy().bulk_viscosity, 2.0 * plain.energy().bulk_viscosity);
+  EXPECT_EQ(twice.part_energies().hourglass_energy(0), 2.0 * plain.part_energies().hourglass_energy(0));
+  EXPECT_EQ(twice.part_energies().internal_energy(0), 2.0 * plain.part_energies().internal_energy(0));
 }

@@ -1,0 +1,234 @@
+// validate_model, the parts: what each part with elements asks of its section, hourglass card and
+// material (the checks build_elements relies on), and the nodes' constraint codes. A dangling id
+// is check_references' to report (and the builder's lookup's): it is passed over here.
+#include <algorithm>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+#include "build_support.hpp"
+#include "slideline/solver/material_registry.hpp"
+#include "validate_problems.hpp"
+
+namespace slideline::validation {
+namespace {
+
+/// The part ids with elements in order of first appearance (solids, then shells), each with the
+/// kinds of element it has: the order build_elements builds them in.
+struct PartUse {
+  bool solids = false, shells = false;
+};
+
+std::vector<std::pair<Id, PartUse>> parts_in_use(const model::Model& m) {
+  std::vector<std::pair<Id, PartUse>> out;
+  std::unordered_map<Id, std::size_t> at;
+  const auto use = [&](Id pid) -> PartUse& {
+    const auto [it, fresh] = at.try_emplace(pid, out.size());
+    if (fresh) out.push_back({pid, {}});
+    return out[it->second].second;
+  };
+  for (const auto& e : m.solids) use(e.pid).solids = true;
+  for (const auto& e : m.shells) use(e.pid).shells = true;
+  return out;
+}
+
+template <class T, class Key>
+std::unordered_map<Id, const T*> by_id(const std::vector<T>& items, Key key) {
+  std::unordered_map<Id, const T*> out;
+  for (const auto& it : items) out.emplace(key(it), &it);
+  return out;
+}
+
+template <class Map>
+auto find(const Map& map, Id id) -> decltype(map.begin()->second) {
+  const auto f = map.find(id);
+  return f == map.end() ? nullptr : f->second;
+}
+
+void check_shell_section(const model::SectionShell& sec, Problems& p) {
+  if (sec.elform != 2 && sec.elform != 0)
+    p.todo(describe(sec.src) + ": *SECTION_SHELL ELFORM " + std::to_string(sec.elform) +
+           " is not implemented (only 2, Belytschko-Tsay)");
+  if (!(sec.t[0] > 0.0))
+    p.bad(describe(sec.src) + ": field T1 of *SECTION_SHELL must be positive (got " + std::to_string(sec.t[0]) +
+          ")");
+  for (int k = 1; k < 4; ++k)
+    if (sec.t[k] != 0.0 && sec.t[k] != sec.t[0]) {
+      p.todo(describe(sec.src) + ": varying nodal shell thicknesses (T2-T4 != T1) are not implemented");
+      break;
+    }
+}
+
+void check_rigid(const model::MatRigid& mat, Problems& p) {
+  if (mat.cmo == 1.0) {
+    for (const auto& [code, field] : {std::pair{mat.con1, "CON1"}, std::pair{mat.con2, "CON2"}})
+      if (!rigid_constraint_code(code))
+        p.bad(describe(mat.src) + ": field " + field + " of *MAT_RIGID must be 0 to 7 (got " +
+              std::to_string(code) + ")");
+  } else if (mat.cmo != 0.0) {
+    p.todo(describe(mat.src) + ": *MAT_RIGID CMO = -1 (constraints in a local system) is not implemented");
+  }
+}
+
+/// A deformable part of shells: its section, the material's shell law, the hourglass type.
+void check_shell_part(const model::Part& part, const model::SectionShell* sec, const MaterialLaws& laws, int ihq,
+                      Problems& p) {
+  if (sec) check_shell_section(*sec, p);
+  if (!laws.shell)
+    p.todo(describe(part.src) + ": part " + std::to_string(part.pid) +
+           " combines shells with a material other than *MAT_ELASTIC or *MAT_RIGID, which is not implemented");
+  if (ihq < 0 || ihq > 3)
+    p.todo(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) + " for shells of part " +
+           std::to_string(part.pid) + " is not implemented (shells take the viscous types 1-3)");
+  if (sec && (shell_nip(*sec) < 1 || shell_nip(*sec) > 5))
+    p.bad(describe(sec->src) + ": field NIP of *SECTION_SHELL must be 1 to 5 (got " + std::to_string(sec->nip) +
+          ")");
+}
+
+/// A deformable part of hexahedra: its section, the hourglass type, the material's solid law.
+void check_solid_part(const model::Part& part, const model::SectionSolid* sec, const MaterialLaws& laws, int ihq,
+                      Problems& p) {
+  if (sec && sec->elform != 1 && sec->elform != 0)
+    p.todo(describe(sec->src) + ": *SECTION_SOLID ELFORM " + std::to_string(sec->elform) +
+           " is not implemented (only 1, the one-point hexahedron)");
+  if (!hex_hourglass_kind(ihq))
+    p.todo(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) + " of part " +
+           std::to_string(part.pid) + " is not implemented (use 1-3 viscous or 10 physical stiffness)");
+  if (!laws.solid)
+    p.todo(describe(part.src) + ": part " + std::to_string(part.pid) + " combines solids with " + laws.keyword +
+           ", which is not implemented");
+}
+
+/// *BOUNDARY_PRESCRIBED_MOTION_RIGID drives a *MAT_RIGID part with elements. `unresolved`: parts
+/// with elements whose card or material is missing (check_references reports them).
+void check_rigid_motions(const model::Model& m, const std::set<Id>& in_use, const std::set<Id>& rigid,
+                         const std::set<Id>& unresolved, Problems& p) {
+  for (const auto& pm : m.prescribed_motions) {
+    if (pm.target != model::PrescribedMotion::Target::rigid || rigid.count(pm.nsid) || unresolved.count(pm.nsid))
+      continue;
+    p.bad(describe(pm.src) + ": field PID of " + pm.keyword() + " refers to part " + std::to_string(pm.nsid) +
+          (in_use.count(pm.nsid) ? ", which is not a *MAT_RIGID part" : ", which has no elements in the deck"));
+  }
+}
+
+/// Supports and motions on nodes of rigid parts would tear the nodes off their bodies: the first
+/// such node of each card (in deck order of *NODE), named with its part, as the builder named it.
+class RigidNodes {
+ public:
+  RigidNodes(const model::Model& m, const std::set<Id>& rigid) : m_(m) {
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) index_.emplace(m.nodes[i].id, i);
+    std::unordered_map<Id, std::size_t> rank;  // rigid part -> its place in build order
+    for (const auto& [pid, use] : parts_in_use(m))
+      if (rigid.count(pid)) rank.emplace(pid, rank.size());
+    const auto add = [&](Id pid, const auto& element_nodes) {
+      const auto r = rank.find(pid);
+      if (r == rank.end()) return;
+      for (Id n : element_nodes) {
+        const auto [it, fresh] = part_.try_emplace(n, pid);
+        if (!fresh && r->second < rank.at(it->second)) it->second = pid;
+      }
+    };
+    for (const auto& e : m.solids) add(e.pid, e.n);
+    for (const auto& e : m.shells) add(e.pid, e.n);
+  }
+
+  void check(bool single, Id id, const model::Source& src, const std::string& card, Problems& p) const {
+    if (part_.empty()) return;
+    std::vector<std::pair<std::size_t, Id>> nodes;  // (deck index, id)
+    const auto add = [&](Id n) {
+      if (const auto f = index_.find(n); f != index_.end()) nodes.emplace_back(f->second, n);
+    };
+    if (single) {
+      add(id);
+    } else if (const auto s = std::find_if(m_.node_sets.begin(), m_.node_sets.end(),
+                                           [&](const model::NodeSet& x) { return x.sid == id; });
+               s != m_.node_sets.end()) {
+      for (Id n : s->nodes) add(n);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    for (const auto& [i, n] : nodes)
+      if (const auto f = part_.find(n); f != part_.end()) {
+        p.bad(describe(src) + ": " + card + " constrains node " + std::to_string(n) + " of rigid part " +
+              std::to_string(f->second) +
+              "; constrain a rigid part through its *MAT_RIGID (CMO = 1, CON1, CON2) or move it with "
+              "*BOUNDARY_PRESCRIBED_MOTION_RIGID instead");
+        return;
+      }
+  }
+
+ private:
+  const model::Model& m_;
+  std::unordered_map<Id, std::size_t> index_;
+  std::unordered_map<Id, Id> part_;  // node id -> the first rigid part (build order) it belongs to
+};
+
+void check_rigid_nodes(const model::Model& m, const std::set<Id>& rigid, Problems& p) {
+  if (rigid.empty()) return;
+  const RigidNodes nodes(m, rigid);
+  for (const auto& spc : m.spcs)
+    nodes.check(spc.node, spc.nsid, spc.src, spc.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET", p);
+  for (const auto& pm : m.prescribed_motions)
+    if (pm.target != model::PrescribedMotion::Target::rigid)
+      nodes.check(pm.target == model::PrescribedMotion::Target::node, pm.nsid, pm.src, pm.keyword(), p);
+}
+
+}  // namespace
+
+void check_parts(const model::Model& m, Problems& p) {
+  for (const auto& nd : m.nodes)
+    if (nd.tc != 0 || nd.rc != 0) {  // the first such node, as the builder named it
+      p.todo("*NODE " + std::to_string(nd.id) +
+             ": nodal constraint codes TC/RC are not supported yet; use *BOUNDARY_SPC_SET");
+      break;
+    }
+  const auto parts = by_id(m.parts, [](const model::Part& x) { return x.pid; });
+  const auto ssec = by_id(m.solid_sections, [](const model::SectionSolid& x) { return x.secid; });
+  const auto shsec = by_id(m.shell_sections, [](const model::SectionShell& x) { return x.secid; });
+  const auto hgs = by_id(m.hourglasses, [](const model::Hourglass& x) { return x.hgid; });
+  const auto mats = by_id(m.materials, [](const model::Material& x) { return model::material_id(x); });
+  std::set<Id> in_use, rigid, unresolved;
+  for (const auto& [pid, use] : parts_in_use(m)) {
+    in_use.insert(pid);
+    const model::Part* part = find(parts, pid);
+    if (!part) {
+      unresolved.insert(pid);
+      continue;
+    }
+    if (use.solids && use.shells) {
+      p.bad(describe(part->src) + ": part " + std::to_string(pid) +
+            " has both solid and shell elements; one part takes one section");
+      unresolved.insert(pid);
+      continue;
+    }
+    const model::Material* mat = find(mats, part->mid);
+    if (!mat) {
+      unresolved.insert(pid);
+      continue;
+    }
+    int ihq = m.control_hourglass.ihq;
+    if (part->hgid != 0) {
+      const model::Hourglass* h = find(hgs, part->hgid);
+      if (!h) {
+        unresolved.insert(pid);
+        continue;
+      }
+      ihq = h->ihq;
+    }
+    const MaterialLaws laws = material_laws(*mat);
+    const model::SectionShell* shell_sec = use.shells ? find(shsec, part->secid) : nullptr;
+    if (laws.rigid) {
+      rigid.insert(pid);
+      check_rigid(std::get<model::MatRigid>(*mat), p);
+      if (shell_sec) check_shell_section(*shell_sec, p);
+    } else if (use.shells) {
+      check_shell_part(*part, shell_sec, laws, ihq, p);
+    } else {
+      check_solid_part(*part, find(ssec, part->secid), laws, ihq, p);
+    }
+  }
+  check_rigid_motions(m, in_use, rigid, unresolved, p);
+  check_rigid_nodes(m, rigid, p);
+}
+
+}  // namespace slideline::validation
