@@ -15,6 +15,20 @@
 
 namespace slideline {
 
+Simulation::Simulation(SimulationSetup setup, std::unique_ptr<Exchange> exchange)
+    : nodes(std::move(setup.nodes)),
+      blocks(std::move(setup.blocks)),
+      constraints(std::move(setup.constraints)),
+      contacts(std::move(setup.contacts)),
+      body_loads(std::move(setup.body_loads)),
+      nodal_loads(std::move(setup.nodal_loads)),
+      supports(std::move(setup.supports)),
+      damping(std::move(setup.damping)),
+      history_nodes(std::move(setup.history_nodes)),
+      sets(std::move(setup.sets)),
+      controls(std::move(setup.controls)),
+      exchange_(exchange ? std::move(exchange) : std::make_unique<SingleProcessExchange>()) {}
+
 Index Simulation::element_count() const {
   Index n = 0;
   for (const auto& b : blocks) n += b->element_count();

@@ -31,6 +31,7 @@
 #include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/part_energy_monitor.hpp"
 #include "slideline/solver/simulation_controls.hpp"
+#include "slideline/solver/simulation_setup.hpp"
 #include "slideline/solver/stability_monitor.hpp"
 
 namespace slideline {
@@ -42,6 +43,8 @@ class Simulation {
   /// energy sums) go through `exchange`, e.g. a distributed run's; null means one process.
   explicit Simulation(std::unique_ptr<Exchange> exchange)
       : exchange_(exchange ? std::move(exchange) : std::make_unique<SingleProcessExchange>()) {}
+  /// A simulation of `setup` (simulation_setup.hpp), which it owns from here on; `exchange` as above.
+  explicit Simulation(SimulationSetup setup, std::unique_ptr<Exchange> exchange = nullptr);
 
   NodalFields nodes;
   std::vector<std::unique_ptr<ElementBlock>> blocks;
