@@ -139,30 +139,30 @@ class CountingExchange final : public Exchange {
 };
 
 /// One free elastic hexahedron [0,1]^3 moving at unit speed in x, for `cycles` cycles.
-void free_hex(Simulation& sim, long cycles) {
-  sim.nodes.resize(8);
+SimulationSetup free_hex(long cycles) {
+  SimulationSetup setup;
+  setup.nodes.resize(8);
   for (Index i = 0; i < 8; ++i) {
     const Vec3 x(Real(i & 1), Real((i >> 1) & 1), Real((i >> 2) & 1));
-    sim.nodes.ids[i] = i + 1;
-    sim.nodes.x0.set(i, x);
-    sim.nodes.x.set(i, x);
-    sim.nodes.v.set(i, Vec3(1.0, 0.0, 0.0));
+    setup.nodes.ids[i] = i + 1;
+    setup.nodes.x0.set(i, x);
+    setup.nodes.x.set(i, x);
+    setup.nodes.v.set(i, Vec3(1.0, 0.0, 0.0));
   }
-  sim.blocks.push_back(make_hex_block(1, ElasticSolid(1.0, 1000.0, 0.3), HexHourglass{}, BulkViscosity{1.5, 0.06},
-                                      {0, 1, 3, 2, 4, 5, 7, 6}, {1}));
-  sim.controls.end_time = 1.0;
-  sim.controls.max_cycles = cycles;
+  setup.blocks.push_back(make_hex_block(1, ElasticSolid(1.0, 1000.0, 0.3), HexHourglass{}, BulkViscosity{1.5, 0.06},
+                                        {0, 1, 3, 2, 4, 5, 7, 6}, {1}));
+  setup.controls.end_time = 1.0;
+  setup.controls.max_cycles = cycles;
+  return setup;
 }
 
 }  // namespace
 
 TEST(Exchange, TheStepCallsItsThreePointsAndTakesTheReducedStep) {
-  Simulation plain;
-  free_hex(plain, 10);
+  Simulation plain(free_hex(10));
   plain.initialize();
   CountingExchange::Counts counts;
-  Simulation sim(std::make_unique<CountingExchange>(counts));
-  free_hex(sim, 10);
+  Simulation sim(free_hex(10), std::make_unique<CountingExchange>(counts));
   sim.initialize();
   EXPECT_EQ(counts.forces, 1);  // the forces at t = 0
   EXPECT_EQ(counts.dt, 1);
@@ -178,6 +178,6 @@ TEST(Exchange, TheStepCallsItsThreePointsAndTakesTheReducedStep) {
   EXPECT_EQ(counts.energies, 11);
   // A rigid translation at unit speed: the centre moved by the time elapsed.
   Real mean_ux = 0.0;
-  for (Index i = 0; i < 8; ++i) mean_ux += sim.nodes.displacement(i)[0] / 8.0;
+  for (Index i = 0; i < 8; ++i) mean_ux += sim.nodes().displacement(i)[0] / 8.0;
   EXPECT_NEAR(mean_ux, sim.time(), 1e-12);
 }
