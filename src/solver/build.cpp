@@ -594,10 +594,4 @@ SimulationSetup build_setup(const model::Model& model, const BuildOptions& optio
   return std::move(b.setup);
 }
 
-std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options) {
-  auto sim = std::make_unique<Simulation>(build_setup(model, options));
-  sim->set_diagnostics(options.diagnostics);
-  return sim;
-}
-
 }  // namespace slideline

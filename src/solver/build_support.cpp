@@ -113,4 +113,11 @@ HexHourglass hex_hourglass(int ihq, Real qm, const model::Part& part) {
   return hg;
 }
 
+/// build_setup (build.cpp), then the simulation constructed from it.
+std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options) {
+  auto sim = std::make_unique<Simulation>(build_setup(model, options));
+  sim->set_diagnostics(options.diagnostics);
+  return sim;
+}
+
 }  // namespace slideline
