@@ -51,13 +51,13 @@ Surface face(const BlockGrid& g, int j, bool up, int je, Index block, Id part) {
 }
 
 std::unique_ptr<Simulation> make_two_block_model() {
-  auto sim = std::make_unique<Simulation>();
+  SimulationSetup setup;
   test_support::GridMesh mesh;
   const BlockGrid lower{mesh.add_box({0, 0, 0}, {6.0, 1.4, 6.0}, kLowerN, kLowerNy, kLowerN)};
   const BlockGrid upper{mesh.add_box({1.03, 1.4, 1.03}, {3.9, 3.1, 3.9}, kUpperN, kUpperNy, kUpperN)};
-  mesh.fill(sim->nodes);
-  sim->blocks.push_back(elastic(1, lower));
-  sim->blocks.push_back(elastic(2, upper));
+  mesh.fill(setup.nodes);
+  setup.blocks.push_back(elastic(1, lower));
+  setup.blocks.push_back(elastic(2, upper));
   SupportGroup g;
   g.name = "bottom";
   for (int c = 0; c < 3; ++c) {
@@ -66,19 +66,19 @@ std::unique_ptr<Simulation> make_two_block_model() {
     s.nodes = lower.layer(0);
     g.supports.push_back(s);
   }
-  sim->supports.push_back(g);
-  sim->sets.part_nodes[1] = lower.all();
-  sim->sets.part_nodes[2] = upper.all();
+  setup.supports.push_back(g);
+  setup.sets.part_nodes[1] = lower.all();
+  setup.sets.part_nodes[2] = upper.all();
   // Pressed down (g = 30) and pushed along x at 0.5 g > mu g: the interface slides.
-  sim->body_loads.push_back(test::ramped_body_load(Axis::y, -30.0, 2, 0.0));
-  sim->body_loads.push_back(test::ramped_body_load(Axis::x, 15.0, 2, 0.0));
-  sim->controls.end_time = 1e9;  // the benchmark decides how many cycles
+  setup.body_loads.push_back(test::ramped_body_load(Axis::y, -30.0, 2, 0.0));
+  setup.body_loads.push_back(test::ramped_body_load(Axis::x, 15.0, 2, 0.0));
+  setup.controls.end_time = 1e9;  // the benchmark decides how many cycles
 
   std::vector<Index> slaves = upper.layer(0), masters = lower.layer(kLowerNy);
   std::sort(slaves.begin(), slaves.end());
   std::sort(masters.begin(), masters.end());
   const PenaltyPassOptions o;  // SLSFAC 0.1, the CLI's default
-  sim->contacts.add(std::make_unique<SurfaceToSurfaceContact<ExponentialCoulomb>>(
+  setup.contacts.add(std::make_unique<SurfaceToSurfaceContact<ExponentialCoulomb>>(
       "type3",
       std::make_unique<PenaltyPass>(slaves, std::vector<Real>(slaves.size(), 0.0),
                                     face(lower, kLowerNy, true, kLowerNy - 1, 0, 1), std::make_unique<FclBroadPhase>(),
@@ -86,6 +86,7 @@ std::unique_ptr<Simulation> make_two_block_model() {
       std::make_unique<PenaltyPass>(masters, std::vector<Real>(masters.size(), 0.0), face(upper, 0, false, 0, 1, 2),
                                     std::make_unique<FclBroadPhase>(), o),
       ExponentialCoulomb{0.3, 0.3, 0.0}));
+  auto sim = std::make_unique<Simulation>(std::move(setup));
   sim->initialize();
   return sim;
 }
@@ -108,7 +109,7 @@ void BM_TwoBlockFullStep(benchmark::State& state) {
   state.counters["threads"] = static_cast<double>(state.range(0));
   state.counters["contact_share_pct"] = 100.0 * (sim->contact_seconds() - contact0) / wall;
   state.counters["element_share_pct"] = 100.0 * (sim->element_seconds() - element0) / wall;
-  state.counters["friction_work"] = sim->contacts[0].friction_work();
+  state.counters["friction_work"] = sim->contacts()[0].friction_work();
   state.counters["ns_per_element_cycle"] = benchmark::Counter(
       elements * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }

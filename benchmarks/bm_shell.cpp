@@ -17,19 +17,19 @@ namespace {
 
 /// A warped n x n plate of shells, loaded and moving so that every kernel term is active.
 std::unique_ptr<Simulation> make_plate(int n) {
-  auto sim = std::make_unique<Simulation>();
+  SimulationSetup setup;
   const int np = n + 1;
-  sim->nodes.resize(static_cast<std::size_t>(np) * np);
+  setup.nodes.resize(static_cast<std::size_t>(np) * np);
   for (int j = 0; j < np; ++j)
     for (int i = 0; i < np; ++i) {
       const Index q = i + np * j;
       const Real x = static_cast<Real>(i) / n, y = static_cast<Real>(j) / n;
       const Vec3 p(x, y, 0.01 * std::sin(7.0 * x) * std::cos(5.0 * y));
-      sim->nodes.ids[q] = q + 1;
-      sim->nodes.x0.set(q, p);
-      sim->nodes.x.set(q, p);
-      sim->nodes.v.set(q, Vec3(0.01 * y, -0.02 * x, 0.05 * x * y));
-      sim->nodes.omega.set(q, Vec3(0.1 * x, 0.05, -0.1 * y));
+      setup.nodes.ids[q] = q + 1;
+      setup.nodes.x0.set(q, p);
+      setup.nodes.x.set(q, p);
+      setup.nodes.v.set(q, Vec3(0.01 * y, -0.02 * x, 0.05 * x * y));
+      setup.nodes.omega.set(q, Vec3(0.1 * x, 0.05, -0.1 * y));
     }
   std::vector<Index> conn;
   conn.reserve(4 * static_cast<std::size_t>(n) * n);
@@ -38,17 +38,18 @@ std::unique_ptr<Simulation> make_plate(int n) {
       conn.insert(conn.end(), {i + np * j, i + 1 + np * j, i + 1 + np * (j + 1), i + np * (j + 1)});
   std::vector<Id> ids(conn.size() / 4);
   for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<Id>(k + 1);
-  sim->blocks.push_back(make_shell_block(1, ElasticShell(0.1, 1000.0, 0.3),
+  setup.blocks.push_back(make_shell_block(1, ElasticShell(0.1, 1000.0, 0.3),
                                         ShellSection{.thickness = 0.01}, std::move(conn),
                                         std::move(ids)));
   BodyLoad bz;
   bz.axis = Axis::z;
   bz.scale = -10.0;
-  sim->body_loads.push_back(bz);
+  setup.body_loads.push_back(bz);
   MassDamping d;
   d.alpha = 15.0;
-  sim->damping.push_back(d);
-  sim->controls.end_time = 1e30;
+  setup.damping.push_back(d);
+  setup.controls.end_time = 1e30;
+  auto sim = std::make_unique<Simulation>(std::move(setup));
   return sim;
 }
 
@@ -65,14 +66,14 @@ void BM_ShellInternalForces(benchmark::State& state) {
   set_threads(static_cast<int>(state.range(1)));
   auto sim = make_plate(side(state.range(0)));
   sim->initialize();
-  ElementBlock& block = *sim->blocks[0];
+  ElementBlock& block = *sim->blocks()[0];
   CornerBuffer corners;
   corners.force.resize(4 * static_cast<std::size_t>(block.element_count()));
   corners.moment.resize(4 * static_cast<std::size_t>(block.element_count()));
   block.set_slot_base(0, 0);
   for (auto _ : state) {
     BlockEnergy e;
-    benchmark::DoNotOptimize(block.compute_forces(sim->nodes, 1e-6, corners, e));
+    benchmark::DoNotOptimize(block.compute_forces(sim->nodes(), 1e-6, corners, e));
     benchmark::ClobberMemory();
   }
   set_rate(state, block.element_count());

@@ -15,10 +15,10 @@ namespace {
 /// n x n x n unit cube of the spec's rubber, bottom fixed in y, loaded by gravity-like body load;
 /// stiffness damping `beta` (0 = none).
 std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
-  auto sim = std::make_unique<Simulation>();
+  SimulationSetup setup;
   const int m = n + 1;
   const Index nn = m * m * m;
-  sim->nodes.resize(nn);
+  setup.nodes.resize(nn);
   auto idx = [m](int i, int j, int k) { return static_cast<Index>(i + m * (j + m * k)); };
   const Real h = 1.0 / n;
   for (int k = 0; k < m; ++k)
@@ -26,9 +26,9 @@ std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
       for (int i = 0; i < m; ++i) {
         const Index a = idx(i, j, k);
         const Vec3 x(i * h, j * h, k * h);
-        sim->nodes.ids[a] = a + 1;
-        sim->nodes.x0.set(a, x);
-        sim->nodes.x.set(a, x);
+        setup.nodes.ids[a] = a + 1;
+        setup.nodes.x0.set(a, x);
+        setup.nodes.x.set(a, x);
       }
   std::vector<Index> conn;
   std::vector<Id> ids;
@@ -41,7 +41,7 @@ std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
                                  idx(i, j + 1, k + 1)});
         ids.push_back(static_cast<Id>(ids.size() + 1));
       }
-  sim->blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
+  setup.blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
       1, MooneyRivlin(0.01, 909.091, 0.0, 0.1),
       HexHourglass{HexHourglass::Kind::physical_stiffness, 1.0}, BulkViscosity{}, std::move(conn),
       std::move(ids), StiffnessDamping{beta}));
@@ -51,16 +51,17 @@ std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
   for (int k = 0; k < m; ++k)
     for (int i = 0; i < m; ++i) s.nodes.push_back(idx(i, 0, k));
   bottom.supports.push_back(std::move(s));
-  sim->supports.push_back(std::move(bottom));
+  setup.supports.push_back(std::move(bottom));
   BodyLoad g;
   g.axis = Axis::y;
   g.scale = -10.0;
   g.curve = LoadCurve({{0.0, 0.0}, {0.1, 1.0}});
-  sim->body_loads.push_back(std::move(g));
+  setup.body_loads.push_back(std::move(g));
   MassDamping d;
   d.alpha = 15.0;
-  sim->damping.push_back(d);
-  sim->controls.end_time = 1e30;
+  setup.damping.push_back(d);
+  setup.controls.end_time = 1e30;
+  auto sim = std::make_unique<Simulation>(std::move(setup));
   sim->initialize();
   return sim;
 }
@@ -83,10 +84,10 @@ void BM_HexInternalForces(benchmark::State& state) {
   // Reuse the simulation's own step but time only the element kernel via a private copy of the
   // buffers: build a corner buffer exactly as the simulation does.
   CornerBuffer cb;
-  auto& block = *sim->blocks.front();
+  auto& block = *sim->blocks().front();
   cb.force.resize(block.connectivity().size());
   for (auto _ : state) {
-    benchmark::DoNotOptimize(block.compute_forces(sim->nodes, 1e-5, cb, e));
+    benchmark::DoNotOptimize(block.compute_forces(sim->nodes(), 1e-5, cb, e));
     benchmark::ClobberMemory();
   }
   set_counters(state, sim->element_count());

@@ -132,7 +132,7 @@ void print_run_end(const slideline::Simulation& sim, double wall) {
     fmt::print(stderr, "warning: the energy balance error passed {:.1f}% at t = {:g} (cycle {}); it ended at {:.2f}% "
                "(the run stops at {:.1f}%: --energy-limit or *CONTROL_TERMINATION ENDENG)\n",
                100.0 * w->relative_error, w->time, w->cycle, 100.0 * sim.energy_error_fraction(),
-               100.0 * sim.controls.energy_error_limit);
+               100.0 * sim.controls().energy_error_limit);
   const double element_cycles = double(sim.element_count()) * double(std::max(1L, sim.cycle()));
   fmt::print("done: {} cycles to t = {:g} in {:.2f} s ({:.1f} ns per element-cycle, contact {:.0f}% of the time)\n",
              sim.cycle(), sim.time(), wall, element_cycles > 0 ? 1e9 * wall / element_cycles : 0.0,
@@ -155,11 +155,13 @@ int run_deck(const RunOptions& o) {
   slideline::BuildOptions build;
   build.end_time = o.end_time;
   build.diagnostics = &diagnostics;
-  auto sim = slideline::build_simulation(model, build);
+  slideline::SimulationSetup setup = slideline::build_setup(model, build);
   if (o.energy_limit >= 0.0) {  // the flag overrides the deck's ENDENG
-    sim->controls.energy_error_limit = o.energy_limit;
-    if (o.energy_limit > 0.0) sim->controls.energy_error_warning = std::min(0.01, 0.2 * o.energy_limit);
+    setup.controls.energy_error_limit = o.energy_limit;
+    if (o.energy_limit > 0.0) setup.controls.energy_error_warning = std::min(0.01, 0.2 * o.energy_limit);
   }
+  const auto sim = std::make_unique<slideline::Simulation>(std::move(setup));
+  sim->set_diagnostics(&diagnostics);
   if (o.threads > 0) slideline::set_threads(o.threads);
   sim->initialize();  // before any output file exists: a refused model leaves no stub .h5
 
@@ -177,10 +179,10 @@ int run_deck(const RunOptions& o) {
   }
 
   fmt::print("{}: {} nodes, {} elements, {} contact interface(s), end time {:g}, {} thread(s)\n", o.deck,
-             model.nodes.size(), sim->element_count(), sim->contacts.size(), sim->controls.end_time,
+             model.nodes.size(), sim->element_count(), sim->contacts().size(), sim->controls().end_time,
              slideline::max_threads());
   std::fflush(stdout);
-  Progress progress(sim->controls.end_time);
+  Progress progress(sim->controls().end_time);
   PeriodicFlush periodic_flush(sinks, o.flush_every);
   HourglassWarnings hourglass_warnings;
   try {

@@ -28,12 +28,12 @@ struct Builder {
   Builder(const model::Model& model, const BuildOptions& options) : m(model), opt(options) {}
   const model::Model& m;
   const BuildOptions& opt;
-  std::unique_ptr<Simulation> sim = std::make_unique<Simulation>();
+  SimulationSetup setup;
   std::unordered_map<Id, Index> node_index;
   std::map<Id, LoadCurve> curves;
   std::map<Id, std::vector<Index>> part_nodes;  // unique nodes of each part
   std::unordered_map<Index, Id> rigid_node_part;  // node -> the rigid part that moves it
-  std::map<Id, RigidBody*> rigid_bodies;          // part id -> its body (owned by sim->constraints)
+  std::map<Id, RigidBody*> rigid_bodies;          // part id -> its body (owned by setup.constraints)
 
   Index node(Id id, const model::Source& src, const char* field) const {
     const auto f = node_index.find(id);
@@ -53,14 +53,14 @@ struct Builder {
 
   void build_nodes() {
     const Index n = static_cast<Index>(m.nodes.size());
-    sim->nodes.resize(n);
+    setup.nodes.resize(n);
     for (Index i = 0; i < n; ++i) {
       const auto& nd = m.nodes[i];
       if (!node_index.emplace(nd.id, i).second)
         throw InputError("*NODE: duplicate node id " + std::to_string(nd.id));
-      sim->nodes.ids[i] = nd.id;
-      sim->nodes.x0.set(i, nd.x);
-      sim->nodes.x.set(i, nd.x);
+      setup.nodes.ids[i] = nd.id;
+      setup.nodes.x0.set(i, nd.x);
+      setup.nodes.x.set(i, nd.x);
     }
   }
 
@@ -168,7 +168,7 @@ struct Builder {
                         StiffnessDamping damping) {
     const Id pid = part.pid;
     const HexHourglass hg = hex_hourglass(ihq, qm);
-    sim->blocks.push_back(make_hex_block(pid, *laws.solid, hg, bv, std::move(g.hex_conn),
+    setup.blocks.push_back(make_hex_block(pid, *laws.solid, hg, bv, std::move(g.hex_conn),
                                          std::move(g.hex_ids), damping));
   }
 
@@ -189,7 +189,7 @@ struct Builder {
     ss.shear_factor = sec.shrf == 0.0 ? 1.0 : sec.shrf;
     ss.hourglass_coefficient = qm;
     ss.bulk = bv;
-    sim->blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),
+    setup.blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),
                                            std::move(g.quad_ids), damping));
   }
 
@@ -209,18 +209,18 @@ struct Builder {
     if (!g.quad_ids.empty()) thickness = shell_section(part, shsec).t[0];
     std::vector<Id> ids = g.hex_ids;
     ids.insert(ids.end(), g.quad_ids.begin(), g.quad_ids.end());
-    sim->blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, mat.e, mat.pr, std::move(g.hex_conn),
+    setup.blocks.push_back(make_rigid_mass_block(part.pid, mat.ro, mat.e, mat.pr, std::move(g.hex_conn),
                                                 std::move(g.quad_conn), thickness, std::move(ids)));
     auto body = std::make_unique<RigidBody>(part.pid, nodes, fixed);
     rigid_bodies.emplace(part.pid, body.get());
-    sim->constraints.push_back(std::move(body));
+    setup.constraints.push_back(std::move(body));
     for (Index n : nodes) rigid_node_part.emplace(n, part.pid);
   }
 
-  /// Resolves every node, part and segment set into sim->sets (after build_elements, which finds
+  /// Resolves every node, part and segment set into setup.sets (after build_elements, which finds
   /// each part's nodes), so that they outlive the build: contact interfaces look them up by id.
   void build_sets() {
-    MeshSets& sets = sim->sets;
+    MeshSets& sets = setup.sets;
     sets.part_nodes = part_nodes;
     for (const auto& s : m.node_sets) {
       const std::string card = "*SET_NODE_LIST " + std::to_string(s.sid);
@@ -259,7 +259,7 @@ struct Builder {
   }
 
   std::vector<Index> node_set(Id sid, const model::Source& from, const char* field) const {
-    return sim->sets.node_set(sid, describe(from) + ": " + field);
+    return setup.sets.node_set(sid, describe(from) + ": " + field);
   }
 
   std::vector<Index> parts_nodes(const std::vector<Id>& pids, const model::Source& from) const {
@@ -275,7 +275,7 @@ struct Builder {
   }
 
   std::vector<Id> part_set(Id sid, const model::Source& from, const char* field) const {
-    return sim->sets.part_set(sid, describe(from) + ": " + field);
+    return setup.sets.part_set(sid, describe(from) + ": " + field);
   }
 
   void build_boundaries() {
@@ -294,7 +294,7 @@ struct Builder {
         s.nodes = nodes;
         g.supports.push_back(std::move(s));
       }
-      sim->supports.push_back(std::move(g));
+      setup.supports.push_back(std::move(g));
     }
     for (const auto& pm : m.prescribed_motions) {
       // validate_model let through only the VAD (0-2) and DOF values run here, on no rigid node.
@@ -317,13 +317,13 @@ struct Builder {
       s.birth = pm.birth;
       s.death = pm.death;
       g.supports.push_back(std::move(s));
-      sim->supports.push_back(std::move(g));
+      setup.supports.push_back(std::move(g));
     }
   }
 
   /// v(0) from the *INITIAL_VELOCITY cards (initial_velocity.cpp): after the sets and supports.
   void build_initial_velocities() {
-    apply_initial_velocities({m, node_index, sim->sets, rigid_node_part, sim->supports}, sim->nodes);
+    apply_initial_velocities({m, node_index, setup.sets, rigid_node_part, setup.supports}, setup.nodes);
   }
 
   /// *BOUNDARY_PRESCRIBED_MOTION_RIGID: drives the centre of mass of a *MAT_RIGID part (DOF 1-3)
@@ -357,7 +357,7 @@ struct Builder {
       b.scale = -lb.sf;
       b.curve = curve(lb.lcid, lb.src, "LCID");
       b.parts = loaded;
-      sim->body_loads.push_back(std::move(b));
+      setup.body_loads.push_back(std::move(b));
     }
   }
 
@@ -374,7 +374,7 @@ struct Builder {
       std::sort(nl.nodes.begin(), nl.nodes.end());
       nl.nodes.erase(std::unique(nl.nodes.begin(), nl.nodes.end()), nl.nodes.end());
       nl.source = describe(l.src) + ": " + card;
-      sim->nodal_loads.push_back(std::move(nl));
+      setup.nodal_loads.push_back(std::move(nl));
     }
   }
 
@@ -390,7 +390,7 @@ struct Builder {
         md.alpha = d.valdmp;
       }
       md.alpha *= common_direction_factor(d.stf).value();  // validate_model: one factor
-      sim->damping.push_back(std::move(md));
+      setup.damping.push_back(std::move(md));
     }
     for (const auto& d : m.damping_parts) {
       MassDamping md;
@@ -400,12 +400,12 @@ struct Builder {
       // FLAG = 1 is LS-DYNA's per-direction scale-factor card, not a part set (that is _SET).
       md.alpha *= d.flag == 1 ? common_direction_factor(d.stf).value() : 1.0;  // validate_model: one factor
       md.nodes = d.set ? parts_nodes(part_set(d.pid, d.src, "PSID"), d.src) : parts_nodes({d.pid}, d.src);
-      sim->damping.push_back(std::move(md));
+      setup.damping.push_back(std::move(md));
     }
   }
 
   void build_controls() {
-    auto& c = sim->controls;
+    auto& c = setup.controls;
     c.end_time = opt.end_time > 0.0 ? opt.end_time : m.termination.endtim;
     c.max_cycles = m.termination.endcyc;
     c.dt_min_fraction = m.termination.dtmin > 0.0 ? m.termination.dtmin : 1e-4;
@@ -425,23 +425,23 @@ struct Builder {
     c.history_interval = hi;
     c.state_interval = m.database.d3plot;
     for (Id nid : m.database.history_nodes)
-      sim->history_nodes.push_back(node(nid, {"*DATABASE_HISTORY_NODE", 0}, "NID"));
+      setup.history_nodes.push_back(node(nid, {"*DATABASE_HISTORY_NODE", 0}, "NID"));
   }
 
   void build_contacts() {
-    const ContactBuildContext ctx{m, sim->blocks, sim->nodes, sim->sets};
+    const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets};
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
       const auto& card = m.contacts[k];  // titles distinct (validate_model)
       InterfaceSpec spec = resolve_interface(card, k + 1, ctx);
       // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
-      sim->contacts.add(make_contact_interface(spec, ctx), spec.window);
+      setup.contacts.add(make_contact_interface(spec, ctx), spec.window);
     }
   }
 };
 
 }  // namespace
 
-std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options) {
+SimulationSetup build_setup(const model::Model& model, const BuildOptions& options) {
   validate_model(model, options);  // located, collapsed input errors before anything is built
   Builder b(model, options);
   b.build_nodes();
@@ -455,8 +455,7 @@ std::unique_ptr<Simulation> build_simulation(const model::Model& model, const Bu
   b.build_damping();
   b.build_controls();
   b.build_contacts();
-  b.sim->set_diagnostics(options.diagnostics);
-  return std::move(b.sim);
+  return std::move(b.setup);
 }
 
 }  // namespace slideline

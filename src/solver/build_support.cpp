@@ -83,4 +83,11 @@ HexHourglass hex_hourglass(int ihq, Real qm) {
   return hg;
 }
 
+/// build_setup (build.cpp), then the simulation constructed from it.
+std::unique_ptr<Simulation> build_simulation(const model::Model& model, const BuildOptions& options) {
+  auto sim = std::make_unique<Simulation>(build_setup(model, options));
+  sim->set_diagnostics(options.diagnostics);
+  return sim;
+}
+
 }  // namespace slideline

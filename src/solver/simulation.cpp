@@ -15,23 +15,37 @@
 
 namespace slideline {
 
+Simulation::Simulation(SimulationSetup setup, std::unique_ptr<Exchange> exchange)
+    : nodes_(std::move(setup.nodes)),
+      blocks_(std::move(setup.blocks)),
+      constraints_(std::move(setup.constraints)),
+      contacts_(std::move(setup.contacts)),
+      body_loads_(std::move(setup.body_loads)),
+      nodal_loads_(std::move(setup.nodal_loads)),
+      supports_(std::move(setup.supports)),
+      damping_(std::move(setup.damping)),
+      history_nodes_(std::move(setup.history_nodes)),
+      sets_(std::move(setup.sets)),
+      controls_(std::move(setup.controls)),
+      exchange_(exchange ? std::move(exchange) : std::make_unique<SingleProcessExchange>()) {}
+
 Index Simulation::element_count() const {
   Index n = 0;
-  for (const auto& b : blocks) n += b->element_count();
+  for (const auto& b : blocks_) n += b->element_count();
   return n;
 }
 
 MeshDescription Simulation::mesh_description() const {
   MeshDescription m;
-  m.node_ids = nodes.ids;
-  const std::size_t n = nodes.size();
+  m.node_ids = nodes_.ids;
+  const std::size_t n = nodes_.size();
   m.x0.resize(3 * n);
   for (std::size_t i = 0; i < n; ++i) {
-    m.x0[3 * i] = nodes.x0.x[i];
-    m.x0[3 * i + 1] = nodes.x0.y[i];
-    m.x0[3 * i + 2] = nodes.x0.z[i];
+    m.x0[3 * i] = nodes_.x0.x[i];
+    m.x0[3 * i + 1] = nodes_.x0.y[i];
+    m.x0[3 * i + 2] = nodes_.x0.z[i];
   }
-  m.cells = cells_by_topology(mesh_blocks(blocks));
+  m.cells = cells_by_topology(mesh_blocks(blocks_));
   return m;
 }
 
@@ -39,16 +53,16 @@ MeshDescription Simulation::mesh_description() const {
 
 void Simulation::initialize() {
   check_controls();
-  const Index n = static_cast<Index>(nodes.size());
+  const Index n = static_cast<Index>(nodes_.size());
   const auto block_mass = lump_masses();
   check_nodal_moments();
   // Who dictates each node's motion: rigid bodies first (their node lists are known before they
   // initialise), then contact ties (known after the interfaces initialise, initialize_contacts).
-  roles_.assign_rigid(n, constraints);
+  roles_.assign_rigid(n, constraints_);
   resolve_body_loads(block_mass);
-  roles_.assign_supports(n, supports, t_);
+  roles_.assign_supports(n, supports_, t_);
   alpha_.assign(n, 0.0);
-  has_damping_curves_ = std::any_of(damping.begin(), damping.end(), [](const MassDamping& d) { return d.has_curve; });
+  has_damping_curves_ = std::any_of(damping_.begin(), damping_.end(), [](const MassDamping& d) { return d.has_curve; });
   update_damping_coefficients();
   t_ = 0.0;
   dt_ = 0.0;
@@ -57,8 +71,8 @@ void Simulation::initialize() {
   recorder_.build_channels(output_sources());
   chunk_e_.assign(static_cast<std::size_t>(chunk_count(n)), NodalEnergySums{});
   ledger_.reset();
-  part_energy_.reset(blocks);
-  block_energy_.assign(blocks.size(), BlockEnergy{});
+  part_energy_.reset(blocks_);
+  block_energy_.assign(blocks_.size(), BlockEnergy{});
   votes_ = assemble_forces();
   const Real dt_stable = votes_.stable();
   if (!(dt_stable > 0.0) || !std::isfinite(dt_stable))
@@ -67,24 +81,24 @@ void Simulation::initialize() {
 }
 
 void Simulation::check_controls() const {
-  if (controls.end_time <= 0.0 && controls.max_cycles <= 0)
-    throw InputError("simulation: end time must be positive (got " + std::to_string(controls.end_time) + ")");
-  if (!(controls.dt_scale > 0.0 && controls.dt_scale <= 1.0))
+  if (controls_.end_time <= 0.0 && controls_.max_cycles <= 0)
+    throw InputError("simulation: end time must be positive (got " + std::to_string(controls_.end_time) + ")");
+  if (!(controls_.dt_scale > 0.0 && controls_.dt_scale <= 1.0))
     throw InputError("simulation: time-step scale factor must be in (0, 1] (got " +
-                     std::to_string(controls.dt_scale) + ")");
+                     std::to_string(controls_.dt_scale) + ")");
 }
 
 std::vector<std::vector<Real>> Simulation::lump_masses() {
-  const Index n = static_cast<Index>(nodes.size());
+  const Index n = static_cast<Index>(nodes_.size());
   std::vector<std::pair<Index, Index>> force_pairs, moment_pairs;
   Index fbase = 0, mbase = 0;
   std::vector<std::vector<Real>> block_mass;  // mass each block lumps to each node
   std::vector<Real> before;
-  for (auto& b : blocks) {
+  for (auto& b : blocks_) {
     b->set_slot_base(fbase, mbase);
-    before = nodes.mass;
-    b->initialize(nodes);
-    block_mass.emplace_back(nodes.mass);
+    before = nodes_.mass;
+    b->initialize(nodes_);
+    block_mass.emplace_back(nodes_.mass);
     for (Index i = 0; i < n; ++i) block_mass.back()[i] -= before[i];
     const auto conn = b->connectivity();
     for (std::size_t k = 0; k < conn.size(); ++k) {
@@ -101,29 +115,29 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
   corners_.moment.resize(mbase);
   corners_.force_slots.build(n, force_pairs);
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
-  has_rotations_ = std::any_of(nodes.has_rotation.begin(), nodes.has_rotation.end(),
+  has_rotations_ = std::any_of(nodes_.has_rotation.begin(), nodes_.has_rotation.end(),
                                [](std::uint8_t r) { return r != 0; });
   return block_mass;
 }
 
 void Simulation::check_nodal_moments() const {
   // A moment on a node without rotational degrees of freedom would be lost: refuse it.
-  for (const auto& nl : nodal_loads)
+  for (const auto& nl : nodal_loads_)
     if (nl.moment)
       for (Index i : nl.nodes)
-        if (!nodes.has_rotation[i])
-          throw InputError(nl.source + ": a moment (DOF 5-7) on node " + std::to_string(nodes.ids[i]) +
+        if (!nodes_.has_rotation[i])
+          throw InputError(nl.source + ": a moment (DOF 5-7) on node " + std::to_string(nodes_.ids[i]) +
                            ", which has no rotational degrees of freedom (only shell nodes do)");
 }
 
 void Simulation::resolve_body_loads(const std::vector<std::vector<Real>>& block_mass) {
   // Body loads act on the mass of the loaded parts only.
-  const Index n = static_cast<Index>(nodes.size());
-  for (auto& bl : body_loads) {
+  const Index n = static_cast<Index>(nodes_.size());
+  for (auto& bl : body_loads_) {
     std::vector<Real> m(n, 0.0);
-    for (std::size_t k = 0; k < blocks.size(); ++k)
+    for (std::size_t k = 0; k < blocks_.size(); ++k)
       if (bl.parts.empty() ||
-          std::find(bl.parts.begin(), bl.parts.end(), blocks[k]->part_id()) != bl.parts.end())
+          std::find(bl.parts.begin(), bl.parts.end(), blocks_[k]->part_id()) != bl.parts.end())
         for (Index i = 0; i < n; ++i) m[i] += block_mass[k][i];
     bl.nodes.clear();
     bl.mass.clear();
@@ -138,15 +152,15 @@ void Simulation::resolve_body_loads(const std::vector<std::vector<Real>>& block_
 void Simulation::initialize_contacts() {
   // Contact interfaces, then the nodes their ties dictate, then the rigid bodies (which need the
   // effective mass: a slave tied to a rigid master moves with the body).
-  const Index n = static_cast<Index>(nodes.size());
-  contacts.initialize(ContactContext{nodes, blocks, &sets, roles_.rigid(), diagnostics_});
-  contacts.resolve_initial_penetrations(nodes);
+  const Index n = static_cast<Index>(nodes_.size());
+  contacts_.initialize(ContactContext{nodes_, blocks_, &sets_, roles_.rigid(), diagnostics_});
+  contacts_.resolve_initial_penetrations(nodes_);
   // A rigid body's mass properties take the tied slaves condensed onto it once, here: a tie that
   // is born or dies mid-run would change them.
-  if (!constraints.empty())
-    for (std::size_t k = 0; k < contacts.size(); ++k)
-      if (contacts.window(k).timed() && contacts[k].condenses())
-        throw NotImplementedError("contact " + contacts[k].name() +
+  if (!constraints_.empty())
+    for (std::size_t k = 0; k < contacts_.size(); ++k)
+      if (contacts_.window(k).timed() && contacts_[k].condenses())
+        throw NotImplementedError("contact " + contacts_[k].name() +
                                   ": a tied interface with a birth or death time (BT, DT) in a model with rigid "
                                   "bodies is not supported");
   classify_contact_nodes();
@@ -154,31 +168,31 @@ void Simulation::initialize_contacts() {
     f_total_.resize(n);
     m_total_.resize(n);
   }
-  mass_eff_ = nodes.mass;
-  rot_inertia_eff_ = nodes.rot_inertia;
-  if (contacts.condenses()) {
+  mass_eff_ = nodes_.mass;
+  rot_inertia_eff_ = nodes_.rot_inertia;
+  if (contacts_.condenses()) {
     // The condensed mass of constant ties, for the rigid bodies' mass properties.
     f_total_.fill(0.0);
     m_total_.fill(0.0);
-    contacts.condense(nodes, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
+    contacts_.condense(nodes_, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
   }
-  for (auto& c : constraints) c->initialize(nodes, effective_mass());
+  for (auto& c : constraints_) c->initialize(nodes_, effective_mass());
 }
 
 void Simulation::classify_contact_nodes() {
-  roles_.classify_contacts(contacts, nodes);
+  roles_.classify_contacts(contacts_, nodes_);
   dictated_v_old_.assign(roles_.dictated_nodes().size(), Vec3::Zero());
   dictated_w_old_.assign(roles_.dictated_nodes().size(), Vec3::Zero());
 }
 
 OutputSources Simulation::output_sources() const {
-  return OutputSources{nodes, contacts, supports, constraints, history_nodes, ledger_.report()};
+  return OutputSources{nodes_, contacts_, supports_, constraints_, history_nodes_, ledger_.report()};
 }
 
 void Simulation::update_damping_coefficients() {
   if (!has_damping_curves_ && cycle_ > 0) return;
   std::fill(alpha_.begin(), alpha_.end(), 0.0);
-  for (const auto& d : damping) {
+  for (const auto& d : damping_) {
     const Real a = d.value(t_);
     if (d.nodes.empty())
       for (Real& v : alpha_) v += a;
@@ -191,23 +205,23 @@ void Simulation::update_damping_coefficients() {
 
 StepPlan Simulation::plan_step() const {
   StepPlan p;
-  const Real end = controls.end_time;
+  const Real end = controls_.end_time;
   // Time tolerance relative to the run's own time scale (an absolute one would swallow whole
   // steps of a nanosecond-scale run), far above the round-off of t.
   const Real tol_t =
-      1e-12 * (end > 0.0 ? end : std::max({t_, controls.history_interval, controls.state_interval}));
+      1e-12 * (end > 0.0 ? end : std::max({t_, controls_.history_interval, controls_.state_interval}));
   p.at_end = (end > 0.0 && t_ >= end - tol_t) ||
-             (controls.max_cycles > 0 && cycle_ >= controls.max_cycles);
+             (controls_.max_cycles > 0 && cycle_ >= controls_.max_cycles);
 
   // The scaled stable step, divided so as to land exactly on the next output time.
-  Real dt_new = controls.dt_scale * votes_.stable();
-  if (controls.dt_max > 0.0) dt_new = std::min(dt_new, controls.dt_max);
-  if (controls.has_dt_max_curve) dt_new = std::min(dt_new, controls.dt_max_curve(t_));
+  Real dt_new = controls_.dt_scale * votes_.stable();
+  if (controls_.dt_max > 0.0) dt_new = std::min(dt_new, controls_.dt_max);
+  if (controls_.has_dt_max_curve) dt_new = std::min(dt_new, controls_.dt_max_curve(t_));
   Real target = end > 0.0 ? end : std::numeric_limits<Real>::infinity();
-  if (controls.history_interval > 0.0)
-    target = std::min(target, next_output_time(controls.history_interval, t_));
-  if (controls.state_interval > 0.0)
-    target = std::min(target, next_output_time(controls.state_interval, t_));
+  if (controls_.history_interval > 0.0)
+    target = std::min(target, next_output_time(controls_.history_interval, t_));
+  if (controls_.state_interval > 0.0)
+    target = std::min(target, next_output_time(controls_.state_interval, t_));
   // The last output multiple can fall an ulp short of the end time (50 x 2e-6 < 1e-4): land on
   // the end time itself, or the run would end there and record its last values at the wrong time.
   if (end > 0.0 && target >= end - tol_t) target = end;
@@ -232,19 +246,19 @@ bool Simulation::step() {
   // The forces at t^n and the step they vote for (votes_) came from the last cycle's
   // assemble_forces(), or initialize()'s for t = 0.
   const StepPlan plan = plan_step();
-  monitor_.check_step(plan, votes_, t_, cycle_, controls, contacts);
-  form_accelerations(nodes, has_contact(), has_rotations_);
+  monitor_.check_step(plan, votes_, t_, cycle_, controls_, contacts_);
+  form_accelerations(nodes_, has_contact(), has_rotations_);
   apply_constraints(plan);
   update_damping_coefficients();
   const VelocityStep vs = velocity_step(plan);
   remember_dictated_velocities();
-  NodalEnergySums sums = update_velocities(nodes, roles_, alpha_, vs, chunk_e_);
+  NodalEnergySums sums = update_velocities(nodes_, roles_, alpha_, vs, chunk_e_);
   if (!roles_.dictated_nodes().empty()) sums += follow_ties(vs);
   book_energies(sums);
-  monitor_.check_energy(ledger_.report(), part_energy_, MonitoredModel{nodes, blocks, contacts}, t_, cycle_,
-                        controls);
+  monitor_.check_energy(ledger_.report(), part_energy_, MonitoredModel{nodes_, blocks_, contacts_}, t_, cycle_,
+                        controls_);
   const Real output_tol = 1e-9 * std::max(votes_.stable(), 1e-300);
-  recorder_.record(output_sources(), t_, controls.history_interval, controls.state_interval, output_tol,
+  recorder_.record(output_sources(), t_, controls_.history_interval, controls_.state_interval, output_tol,
                    plan.at_end);
   if (plan.at_end) {
     finished_ = true;
@@ -262,48 +276,48 @@ VelocityStep Simulation::velocity_step(const StepPlan& plan) const {
 void Simulation::remember_dictated_velocities() {
   const auto dictated = roles_.dictated_nodes();
   for (std::size_t k = 0; k < dictated.size(); ++k) {
-    dictated_v_old_[k] = nodes.v.get(dictated[k]);
-    dictated_w_old_[k] = nodes.omega.get(dictated[k]);
+    dictated_v_old_[k] = nodes_.v.get(dictated[k]);
+    dictated_w_old_[k] = nodes_.omega.get(dictated[k]);
   }
 }
 
 NodalEnergySums Simulation::follow_ties(const VelocityStep& vs) {
-  contacts.follow_velocities(nodes);
-  return dictated_node_sums(nodes, roles_.dictated_nodes(), dictated_v_old_, dictated_w_old_, vs);
+  contacts_.follow_velocities(nodes_);
+  return dictated_node_sums(nodes_, roles_.dictated_nodes(), dictated_v_old_, dictated_w_old_, vs);
 }
 
 void Simulation::book_energies(NodalEnergySums sums) {
   // Exchange point 3 (exchange.hpp): the energy sums over all processes.
-  Real friction = contacts.friction_work();
+  Real friction = contacts_.friction_work();
   exchange_->sum_energies(sums, friction);
   ledger_.book(sums, cycle_ == 0);
   ledger_.set_friction(friction);
 }
 
 void Simulation::advance(const StepPlan& plan) {
-  update_positions(nodes, plan.dt_next);
+  update_positions(nodes_, plan.dt_next);
   t_ = plan.t_next;
   dt_ = plan.dt_next;
   ++cycle_;
   // The constraints reset the half-step velocities of their nodes; the kinetic energy that changes
   // is work the constraint does (with constant steps this closes the balance up to a bounded
   // O(dt^2) term, as for unconstrained nodes).
-  if (!constraints.empty()) {
-    const Real k_before = kinetic_energy(nodes, roles_.constrained_nodes());
-    for (auto& c : constraints) c->after_positions(effective_mass(), nodes, t_);
+  if (!constraints_.empty()) {
+    const Real k_before = kinetic_energy(nodes_, roles_.constrained_nodes());
+    for (auto& c : constraints_) c->after_positions(effective_mass(), nodes_, t_);
     // Exchange point 3 (exchange.hpp): the work of the resets over all processes.
-    ledger_.add_constraint_work(exchange_->sum_reset_work(kinetic_energy(nodes, roles_.constrained_nodes()) - k_before));
+    ledger_.add_constraint_work(exchange_->sum_reset_work(kinetic_energy(nodes_, roles_.constrained_nodes()) - k_before));
   }
   const auto dictated = roles_.dictated_nodes();
   if (!dictated.empty()) {
     // A rigid master's reset moved its nodes: the slaves follow again (the change of their
     // kinetic energy is work of the tie).
-    if (!constraints.empty()) {
-      const Real k_before = translational_kinetic_energy(nodes, dictated);
-      contacts.follow_velocities(nodes);
-      ledger_.add_contact_work(exchange_->sum_reset_work(translational_kinetic_energy(nodes, dictated) - k_before));
+    if (!constraints_.empty()) {
+      const Real k_before = translational_kinetic_energy(nodes_, dictated);
+      contacts_.follow_velocities(nodes_);
+      ledger_.add_contact_work(exchange_->sum_reset_work(translational_kinetic_energy(nodes_, dictated) - k_before));
     }
-    contacts.follow_positions(nodes);
+    contacts_.follow_positions(nodes_);
   }
 }
 

@@ -19,16 +19,16 @@ void Simulation::apply_constraints(const StepPlan& plan) {
   prescribe_supports(plan);
   if (has_contact()) {
     const StepTimes times{t_, dt_, plan.dt_avg, plan.dt_next, cycle_};
-    ConstraintView view{nodes,
+    ConstraintView view{nodes_,
                         effective_mass(),
                         alpha_,
                         {roles_.fixed(0), roles_.fixed(1), roles_.fixed(2)},
                         roles_.rigid(),
-                        nodes.a,
+                        nodes_.a,
                         f_total_,
-                        nodes.f_contact};
-    contacts.enforce(view, times);
-    if (!constraints.empty()) {
+                        nodes_.f_contact};
+    contacts_.enforce(view, times);
+    if (!constraints_.empty()) {
       constrain_rigid_bodies(plan);
       prescribe_supports(plan);
     }
@@ -37,40 +37,40 @@ void Simulation::apply_constraints(const StepPlan& plan) {
 }
 
 ConstraintLoads Simulation::constraint_loads() const {
-  if (!has_contact()) return ConstraintLoads{nodes.mass, nodes};
-  return ConstraintLoads{effective_mass(), nodes, &f_total_, &m_total_};
+  if (!has_contact()) return ConstraintLoads{nodes_.mass, nodes_};
+  return ConstraintLoads{effective_mass(), nodes_, &f_total_, &m_total_};
 }
 
 void Simulation::condense_ties() {
   // Total loads: the nodes' own, then tied slaves moved onto their masters.
-  const Index n = static_cast<Index>(nodes.size());
-  const bool condensing = contacts.condenses();
+  const Index n = static_cast<Index>(nodes_.size());
+  const bool condensing = contacts_.condenses();
   const bool rotations = has_rotations_;
   parallel_for(n, [&](Index i) {
-    for (int c = 0; c < 3; ++c) f_total_[c][i] = total_force(nodes, c, i);
+    for (int c = 0; c < 3; ++c) f_total_[c][i] = total_force(nodes_, c, i);
     if (rotations)
-      for (int c = 0; c < 3; ++c) m_total_[c][i] = total_moment(nodes, c, i);
+      for (int c = 0; c < 3; ++c) m_total_[c][i] = total_moment(nodes_, c, i);
     if (condensing) {
-      mass_eff_[i] = nodes.mass[i];
-      rot_inertia_eff_[i] = nodes.rot_inertia[i];
+      mass_eff_[i] = nodes_.mass[i];
+      rot_inertia_eff_[i] = nodes_.rot_inertia[i];
     }
   });
   if (!condensing) return;
-  contacts.condense(nodes, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
+  contacts_.condense(nodes_, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
   const auto kinds = roles_.kinds();
   parallel_for(n, [&](Index i) {
     if (kinds[i] == kFree) return;  // unchanged by the condensation
     const Real m = mass_eff_[i];
     const Real inv = m > 0.0 ? 1.0 / m : 0.0;
-    nodes.a.x[i] = f_total_.x[i] * inv;
-    nodes.a.y[i] = f_total_.y[i] * inv;
-    nodes.a.z[i] = f_total_.z[i] * inv;
-    if (rotations && nodes.has_rotation[i]) {
+    nodes_.a.x[i] = f_total_.x[i] * inv;
+    nodes_.a.y[i] = f_total_.y[i] * inv;
+    nodes_.a.z[i] = f_total_.z[i] * inv;
+    if (rotations && nodes_.has_rotation[i]) {
       const Real ri = rot_inertia_eff_[i];
       const Real rinv = ri > 0.0 ? 1.0 / ri : 0.0;
-      nodes.alpha.x[i] = m_total_.x[i] * rinv;
-      nodes.alpha.y[i] = m_total_.y[i] * rinv;
-      nodes.alpha.z[i] = m_total_.z[i] * rinv;
+      nodes_.alpha.x[i] = m_total_.x[i] * rinv;
+      nodes_.alpha.y[i] = m_total_.y[i] * rinv;
+      nodes_.alpha.z[i] = m_total_.z[i] * rinv;
     }
   });
 }
@@ -79,7 +79,7 @@ void Simulation::constrain_rigid_bodies(const StepPlan& plan) {
   ConstraintLoads loads = constraint_loads();
   loads.dt_avg = plan.dt_avg;
   loads.dt_next = plan.dt_next;
-  for (auto& c : constraints) c->constrain_accelerations(loads, nodes, t_);
+  for (auto& c : constraints_) c->constrain_accelerations(loads, nodes_, t_);
 }
 
 void Simulation::prescribe_supports(const StepPlan& plan) {
@@ -89,8 +89,8 @@ void Simulation::prescribe_supports(const StepPlan& plan) {
   // exactly while the curve is linear over the step); an acceleration curve is a(t^n), integrated
   // by the same central difference as free nodes: v^{n+1/2} = v^{n-1/2} + a(t^n) dt_avg.
   const Real dt_new = plan.dt_next;
-  if (roles_.has_timed_supports()) roles_.refresh_supports(supports, t_);
-  for (auto& g : supports)
+  if (roles_.has_timed_supports()) roles_.refresh_supports(supports_, t_);
+  for (auto& g : supports_)
     for (const auto& s : g.supports) {
       const int c = static_cast<int>(s.axis);
       if (s.rotational || !s.active(t_)) continue;  // the velocity update zeroes fixed rotations
@@ -99,13 +99,13 @@ void Simulation::prescribe_supports(const StepPlan& plan) {
         if (s.has_curve) {
           switch (s.kind) {
             case Prescribed::displacement:
-              vnew = (s.scale * s.curve(t_ + dt_new) - (nodes.x[c][i] - nodes.x0[c][i])) / dt_new;
+              vnew = (s.scale * s.curve(t_ + dt_new) - (nodes_.x[c][i] - nodes_.x0[c][i])) / dt_new;
               break;
             case Prescribed::velocity: vnew = s.scale * s.curve(t_ + 0.5 * dt_new); break;
-            case Prescribed::acceleration: vnew = nodes.v[c][i] + s.scale * s.curve(t_) * plan.dt_avg; break;
+            case Prescribed::acceleration: vnew = nodes_.v[c][i] + s.scale * s.curve(t_) * plan.dt_avg; break;
           }
         }
-        nodes.a[c][i] = (vnew - nodes.v[c][i]) / plan.dt_avg;  // the velocity update lands on vnew
+        nodes_.a[c][i] = (vnew - nodes_.v[c][i]) / plan.dt_avg;  // the velocity update lands on vnew
       }
     }
 }
@@ -115,14 +115,14 @@ void Simulation::compute_reactions() {
   // contact (penalty, Lagrange, or condensed tied slaves) carries into a supported node.
   const bool total = has_contact();
   const auto mass = effective_mass();
-  for (auto& g : supports) {
+  for (auto& g : supports_) {
     Vec3 r = Vec3::Zero();
     for (const auto& s : g.supports) {
       if (s.rotational || !s.active(t_)) continue;
       const int c = static_cast<int>(s.axis);
       for (Index i : s.nodes) {
-        const Real f = total ? f_total_[c][i] : total_force<false>(nodes, c, i);
-        r[c] += f - mass[i] * nodes.a[c][i];
+        const Real f = total ? f_total_[c][i] : total_force<false>(nodes_, c, i);
+        r[c] += f - mass[i] * nodes_.a[c][i];
       }
     }
     g.reaction = r;

@@ -22,7 +22,7 @@ StepVotes Simulation::assemble_forces() {
   compute_external_forces();
   local.contact = apply_contact_forces();
   // Exchange points 1 and 2 (exchange.hpp): the forces of shared nodes, the step over all processes.
-  exchange_->sum_forces(nodes);
+  exchange_->sum_forces(nodes_);
   return exchange_->min_dt(local);
 }
 
@@ -33,10 +33,10 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
   try {
     Real dt_other = std::numeric_limits<Real>::max();  // steps of blocks that do not bound it
     const ElementBlock* controlling_other = nullptr;
-    for (std::size_t k = 0; k < blocks.size(); ++k) {
-      const auto& b = blocks[k];
+    for (std::size_t k = 0; k < blocks_.size(); ++k) {
+      const auto& b = blocks_[k];
       block_energy_[k] = BlockEnergy{};
-      const Real d = b->compute_forces(nodes, dt_, corners_, block_energy_[k]);
+      const Real d = b->compute_forces(nodes_, dt_, corners_, block_energy_[k]);
       if (b->bounds_time_step()) {
         if (d < dtc) controlling = b.get();
         dtc = std::min(dtc, d);
@@ -54,13 +54,13 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
                                ", cycle " + std::to_string(cycle_),
                            t_, cycle_);
   }
-  corners_.gather(nodes.f_int, nodes.m_int);
+  corners_.gather(nodes_.f_int, nodes_.m_int);
   element_seconds_ += seconds_since(t0);
   // Exchange point 3 (exchange.hpp): the element powers at t^n over all processes, integrated
   // over the step that ends at t^n, per part and in total.
   exchange_->sum_block_energies(block_energy_);
   BlockEnergy be;
-  for (std::size_t k = 0; k < blocks.size(); ++k) {
+  for (std::size_t k = 0; k < blocks_.size(); ++k) {
     be += block_energy_[k];
     part_energy_.add(k, block_energy_[k], cycle_ == 0 ? 0.0 : dt_);
   }
@@ -71,29 +71,29 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
 
 void Simulation::compute_external_forces() {
   // In parallel: serial node loops here would cap the two-thread speed-up.
-  const Index n = static_cast<Index>(nodes.size());
+  const Index n = static_cast<Index>(nodes_.size());
   const bool rotations = has_rotations_;
   parallel_for(n, [&](Index i) {
-    nodes.f_ext.x[i] = 0.0;
-    nodes.f_ext.y[i] = 0.0;
-    nodes.f_ext.z[i] = 0.0;
+    nodes_.f_ext.x[i] = 0.0;
+    nodes_.f_ext.y[i] = 0.0;
+    nodes_.f_ext.z[i] = 0.0;
     if (rotations) {
-      nodes.m_ext.x[i] = 0.0;
-      nodes.m_ext.y[i] = 0.0;
-      nodes.m_ext.z[i] = 0.0;
+      nodes_.m_ext.x[i] = 0.0;
+      nodes_.m_ext.y[i] = 0.0;
+      nodes_.m_ext.z[i] = 0.0;
     }
   });
-  for (const auto& bl : body_loads) {
+  for (const auto& bl : body_loads_) {
     const Real acc = bl.scale * bl.curve(t_);
-    auto& f = nodes.f_ext[static_cast<int>(bl.axis)];
+    auto& f = nodes_.f_ext[static_cast<int>(bl.axis)];
     // bl.nodes is unique, so the iterations write distinct entries.
     parallel_for(static_cast<Index>(bl.nodes.size()),
                  [&](Index k) { f[bl.nodes[k]] += bl.mass[k] * acc; });
   }
   // Serial and in card order: a node may appear in several loads (same sum for any thread count).
-  for (const auto& nl : nodal_loads) {
+  for (const auto& nl : nodal_loads_) {
     const Real v = nl.scale * nl.curve(t_);
-    auto& f = nl.moment ? nodes.m_ext[static_cast<int>(nl.axis)] : nodes.f_ext[static_cast<int>(nl.axis)];
+    auto& f = nl.moment ? nodes_.m_ext[static_cast<int>(nl.axis)] : nodes_.f_ext[static_cast<int>(nl.axis)];
     for (Index i : nl.nodes) f[i] += v;
   }
 }
@@ -102,12 +102,12 @@ Real Simulation::apply_contact_forces() {
   if (!has_contact()) return std::numeric_limits<Real>::max();
   const auto t0 = std::chrono::steady_clock::now();
   // Birth and death (BT, DT): the interfaces that act in the cycle from t_ (contact_manager.hpp).
-  if (contacts.update_activity(t_)) classify_contact_nodes();
-  nodes.f_contact.fill(0.0);
-  if (has_rotations_) nodes.m_contact.fill(0.0);
+  if (contacts_.update_activity(t_)) classify_contact_nodes();
+  nodes_.f_contact.fill(0.0);
+  if (has_rotations_) nodes_.m_contact.fill(0.0);
   // The coming step is not known yet (the interfaces vote for it here).
   const StepTimes times{t_, dt_, 0.0, 0.0, cycle_};
-  const Real dtc = contacts.apply_forces(nodes, times, ContactForceView{nodes.f_contact, nodes.m_contact});
+  const Real dtc = contacts_.apply_forces(nodes_, times, ContactForceView{nodes_.f_contact, nodes_.m_contact});
   contact_seconds_ += seconds_since(t0);
   return dtc;
 }

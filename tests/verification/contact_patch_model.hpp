@@ -149,15 +149,15 @@ inline PatchModel make_patch_model(const PatchOptions& o) {
 inline std::vector<Real> normal_stresses(const Simulation& sim, const model::Model& m, const std::vector<Id>& elements,
                                          const Mat3& rotation, const ElasticSolid& law) {
   std::unordered_map<Id, Index> index;
-  for (std::size_t i = 0; i < sim.nodes.ids.size(); ++i) index[sim.nodes.ids[i]] = static_cast<Index>(i);
+  for (std::size_t i = 0; i < sim.nodes().ids.size(); ++i) index[sim.nodes().ids[i]] = static_cast<Index>(i);
   std::vector<Real> out;
   for (Id e : elements) {
     const model::SolidElement& el = m.solids[static_cast<std::size_t>(e - 1)];
     hex8::NodeMat X, x;
     for (int a = 0; a < 8; ++a) {
       const Index n = index.at(el.n[static_cast<std::size_t>(a)]);
-      X.row(a) = sim.nodes.x0.get(n).transpose();
-      x.row(a) = sim.nodes.x.get(n).transpose();
+      X.row(a) = sim.nodes().x0.get(n).transpose();
+      x.row(a) = sim.nodes().x.get(n).transpose();
     }
     const hex8::NodeMat dv = hex8::volume_gradient(X);
     const Real v = hex8::volume(X, dv);

@@ -146,11 +146,11 @@ struct Run {
   std::unordered_map<Id, Index> index;
   explicit Run(const model::Model& m) : sim(build_simulation(m)) {
     sim->initialize();
-    for (std::size_t i = 0; i < sim->nodes.ids.size(); ++i) index[sim->nodes.ids[i]] = static_cast<Index>(i);
+    for (std::size_t i = 0; i < sim->nodes().ids.size(); ++i) index[sim->nodes().ids[i]] = static_cast<Index>(i);
   }
-  Vec3 x(Id id) const { return sim->nodes.x.get(index.at(id)); }
-  Vec3 v(Id id) const { return sim->nodes.v.get(index.at(id)); }
-  Real mass(Id id) const { return sim->nodes.mass[static_cast<std::size_t>(index.at(id))]; }
+  Vec3 x(Id id) const { return sim->nodes().x.get(index.at(id)); }
+  Vec3 v(Id id) const { return sim->nodes().v.get(index.at(id)); }
+  Real mass(Id id) const { return sim->nodes().mass[static_cast<std::size_t>(index.at(id))]; }
   /// Mass-weighted mean of `field` over `ids`.
   template <class F>
   Vec3 mean(const std::vector<Id>& ids, F field) const {

@@ -58,9 +58,9 @@ std::vector<HertzSample> run_hertz(const HertzOptions& o, const std::vector<Real
     if (d < fractions[next] * o.travel) continue;
     HertzSample s;
     s.d = d;
-    s.force = force_on_block(run.sim->contacts[0]).dot(down);
-    const Real u_probe = (run.x(hm.axis_depth) - run.sim->nodes.x0.get(run.index.at(hm.axis_depth))).dot(down);
-    const Real u_top = (run.x(hm.axis_top) - run.sim->nodes.x0.get(run.index.at(hm.axis_top))).dot(down);
+    s.force = force_on_block(run.sim->contacts()[0]).dot(down);
+    const Real u_probe = (run.x(hm.axis_depth) - run.sim->nodes().x0.get(run.index.at(hm.axis_depth))).dot(down);
+    const Real u_top = (run.x(hm.axis_top) - run.sim->nodes().x0.get(run.index.at(hm.axis_top))).dot(down);
     s.d_rel = d - u_probe;
     s.ratio = s.force / hertz_test::hertz_force_at_relative_approach(s.d_rel, hm.probe_depth, o.radius, o.youngs,
                                                                       o.poisson);

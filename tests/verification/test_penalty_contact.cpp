@@ -38,13 +38,13 @@ PressedRun run_pressed(const std::string& name) {
   auto sim = build_simulation(p.model);
   sim->initialize();
   PressedRun r;
-  const std::size_t nc = sim->contacts.size();
+  const std::size_t nc = sim->contacts().size();
   r.mean_force.assign(nc, Vec3::Zero());
   std::vector<int> samples(nc, 0);
   Real fmax = 0.0, imbalance = 0.0;
   while (sim->step()) {
     for (std::size_t k = 0; k < nc; ++k) {
-      const ContactAlgorithm& c = sim->contacts[k];
+      const ContactAlgorithm& c = sim->contacts()[k];
       fmax = std::max(fmax, c.slave_force().norm());
       imbalance = std::max(imbalance, (c.slave_force() + c.master_force()).norm());
       if (sim->time() >= 0.2) {
@@ -95,7 +95,7 @@ struct SlidingRun {
 SlidingRun run_sliding(SslideProblem& p, Real mu_k) {
   auto sim = build_simulation(p.model);
   sim->initialize();
-  const std::size_t nc = sim->contacts.size();
+  const std::size_t nc = sim->contacts().size();
   SlidingRun r;
   r.peak.assign(nc, 0.0);
   r.mean_fx.assign(nc, 0.0);
@@ -105,7 +105,7 @@ SlidingRun run_sliding(SslideProblem& p, Real mu_k) {
   while (sim->step()) {
     const Real t = sim->time();
     for (std::size_t k = 0; k < nc; ++k) {
-      const Vec3 f = upper_force(sim->contacts[k]);
+      const Vec3 f = upper_force(sim->contacts()[k]);
       if (t >= 0.3 && t <= 0.45) r.peak[k] = std::max(r.peak[k], std::abs(f[0]));
       if (t >= 0.45) {
         r.mean_fx[k] += f[0];
@@ -117,8 +117,8 @@ SlidingRun run_sliding(SslideProblem& p, Real mu_k) {
   }
   for (std::size_t k = 0; k < nc; ++k) {
     r.mean_fx[k] /= std::max(samples[k], 1);
-    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[k]);
-    for (Index n : pc.pass(0).slaves()) r.slide[k] = std::max(r.slide[k], sim->nodes.displacement(n)[0]);
+    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts()[k]);
+    for (Index n : pc.pass(0).slaves()) r.slide[k] = std::max(r.slide[k], sim->nodes().displacement(n)[0]);
   }
   r.friction = sim->energy().friction;
   return r;
@@ -171,19 +171,19 @@ TEST(PenaltyNodes, NodalRadiusAndMasterThicknessSetTheRestGap) {
   p.model.termination.endtim = 0.25;
   auto sim = build_simulation(p.model);
   sim->run({});
-  ASSERT_EQ(sim->contacts.size(), 2u);
+  ASSERT_EQ(sim->contacts().size(), 2u);
   const Real expected[2] = {0.05, 0.10};  // node_on_solid, node_on_shell
   for (std::size_t k = 0; k < 2; ++k) {
-    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[k]);
+    const PenaltyPasses& pc = *penalty_passes_of(sim->contacts()[k]);
     const PenaltyPass& pass = pc.pass(0);
     Real top = 0.0;
-    for (Index n : pass.master().nodes) top += sim->nodes.x.y[n];
+    for (Index n : pass.master().nodes) top += sim->nodes().x.y[n];
     top /= static_cast<Real>(pass.master().nodes.size());
     Real worst = 0.0;
-    for (Index n : pass.slaves()) worst = std::max(worst, std::abs(sim->nodes.x.y[n] - top - expected[k]));
+    for (Index n : pass.slaves()) worst = std::max(worst, std::abs(sim->nodes().x.y[n] - top - expected[k]));
     std::printf("sslide5p contact %zu: rest gap error max %.3e (bound 5e-5)\n", k, worst);
     EXPECT_LT(worst, 1e-3 * 0.05);
-    EXPECT_NEAR(sim->contacts[k].slave_force()[1], 0.01, 1e-4);
+    EXPECT_NEAR(sim->contacts()[k].slave_force()[1], 0.01, 1e-4);
   }
 }
 
@@ -207,11 +207,11 @@ TEST(PenaltyAutomatic, SingleBlockHasNoSelfContact) {
   std::vector<Real> mean_fy(pairs, 0.0);
   int samples = 0;
   while (sim->step()) {
-    for (std::size_t k = pairs; k < sim->contacts.size(); ++k)
-      spurious = std::max(spurious, sim->contacts[k].slave_force().norm());
+    for (std::size_t k = pairs; k < sim->contacts().size(); ++k)
+      spurious = std::max(spurious, sim->contacts()[k].slave_force().norm());
     if (sim->time() >= 0.2 && sim->time() <= 0.3) {
       ++samples;
-      for (std::size_t k = 0; k < pairs; ++k) mean_fy[k] += upper_force(sim->contacts[k])[1];
+      for (std::size_t k = 0; k < pairs; ++k) mean_fy[k] += upper_force(sim->contacts()[k])[1];
     }
   }
   EXPECT_EQ(spurious, 0.0);
@@ -234,14 +234,14 @@ TEST(PenaltyInitialPenetration, FoundReportedAndHarmless) {
   p.model.termination.endtim = 0.02;
   auto sim = build_simulation(p.model);
   sim->initialize();
-  ASSERT_NE(penalty_passes_of(sim->contacts[0]), nullptr);
-  const PenaltyPasses& pc = *penalty_passes_of(sim->contacts[0]);
+  ASSERT_NE(penalty_passes_of(sim->contacts()[0]), nullptr);
+  const PenaltyPasses& pc = *penalty_passes_of(sim->contacts()[0]);
   EXPECT_EQ(pc.initial_penetration_count(), 16);
   EXPECT_NEAR(pc.largest_initial_penetration(), 2e-3, 1e-9);
   EXPECT_EQ(pc.moved_node_count(), 16);
   EXPECT_NEAR(pc.largest_move(), 2e-3, 1e-9);
   Real fmax = 0.0;
-  while (sim->step()) fmax = std::max(fmax, sim->contacts[0].slave_force().norm());
+  while (sim->step()) fmax = std::max(fmax, sim->contacts()[0].slave_force().norm());
   std::printf("initial penetration 2e-3: max |F| over t <= 0.02: %.4f (load 2.0 at 0.02)\n", fmax);
   EXPECT_LT(fmax, 3.0);
 }
@@ -260,7 +260,7 @@ TEST(PenaltyStableStep, ScalesWithTheFactor) {
     Real dt = 1e300, step_min = 1e300;
     while (sim->step()) {
       step_min = std::min(step_min, sim->dt());
-      for (std::size_t k = 0; k < sim->contacts.size(); ++k) dt = std::min(dt, sim->contacts[k].stable_dt());
+      for (std::size_t k = 0; k < sim->contacts().size(); ++k) dt = std::min(dt, sim->contacts()[k].stable_dt());
     }
     contact_dt[f] = dt;
     std::printf("sslide3p factor %5.1f: contact step %.3e, analysis step (x TSSFAC, min over t <= 0.15) %.3e\n",

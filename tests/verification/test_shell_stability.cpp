@@ -33,16 +33,16 @@ struct HoldResult {
 HoldResult hold_plate(Real nu, long cycles, Real output_every) {
   const Real L = 1.0, b = 0.1, t = 0.02, E = 1.0e4, rho = 1.0;
   const int nx = 16, ny = 2;
-  Simulation sim;
-  sim.nodes.resize(static_cast<std::size_t>((nx + 1) * (ny + 1)));
+  SimulationSetup setup;
+  setup.nodes.resize(static_cast<std::size_t>((nx + 1) * (ny + 1)));
   auto node = [&](int i, int j) { return static_cast<Index>(i + (nx + 1) * j); };
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       const Index n = node(i, j);
       const Vec3 x(L * i / nx, b * j / ny, 0.0);
-      sim.nodes.ids[n] = n + 1;
-      sim.nodes.x0.set(n, x);
-      sim.nodes.x.set(n, x);
+      setup.nodes.ids[n] = n + 1;
+      setup.nodes.x0.set(n, x);
+      setup.nodes.x.set(n, x);
     }
   std::vector<Index> conn;
   std::vector<Id> ids;
@@ -55,7 +55,7 @@ HoldResult hold_plate(Real nu, long cycles, Real output_every) {
   sec.thickness = t;
   sec.hourglass_coefficient = 0.1;
   sec.bulk = BulkViscosity{1.5, 0.06};
-  sim.blocks.push_back(std::make_unique<ShellBlock>(1, ElasticShell(rho, E, nu), sec, conn, ids));
+  setup.blocks.push_back(std::make_unique<ShellBlock>(1, ElasticShell(rho, E, nu), sec, conn, ids));
   // Beam theory for a uniform load: w_tip = q L^4 / (8 E I) (nu enters through the plate's
   // anticlastic stiffening, below 1% for this narrow strip).
   const Real I = b * t * t * t / 12.0;
@@ -66,7 +66,7 @@ HoldResult hold_plate(Real nu, long cycles, Real output_every) {
   load.axis = Axis::z;
   load.scale = -q / (rho * b * t);
   load.curve = LoadCurve({{0.0, 0.0}, {3.0 / omega1, 1.0}, {1e9, 1.0}}, "q");
-  sim.body_loads.push_back(load);
+  setup.body_loads.push_back(load);
   SupportGroup clamp;
   clamp.name = "root";
   std::vector<Index> root;
@@ -80,17 +80,18 @@ HoldResult hold_plate(Real nu, long cycles, Real output_every) {
       s.nodes = root;
       clamp.supports.push_back(s);
     }
-  sim.supports.push_back(clamp);
+  setup.supports.push_back(clamp);
   MassDamping d;
   d.alpha = 2.0 * omega1;
-  sim.damping.push_back(d);
-  sim.controls.max_cycles = cycles;
+  setup.damping.push_back(d);
+  setup.controls.max_cycles = cycles;
+  Simulation sim(std::move(setup));
   sim.initialize();
   // An end time beyond the last cycle (the simulation's time tolerance is relative to it).
-  const Real dt0 = sim.controls.dt_scale * sim.stable_dt();
-  sim.controls.end_time = 2.0 * static_cast<Real>(cycles) * dt0;
+  const Real dt0 = sim.controls().dt_scale * sim.stable_dt();
+  sim.set_end_time(2.0 * static_cast<Real>(cycles) * dt0);
   const Real interval = output_every * dt0;
-  sim.controls.history_interval = interval;  // the output times the simulation lands on
+  sim.set_history_interval(interval);  // the output times the simulation lands on
 
   HoldResult r;
   const Real settled = 12.0 / omega1;  // the ramp's transient has decayed to ~1e-5
@@ -98,8 +99,7 @@ HoldResult hold_plate(Real nu, long cycles, Real output_every) {
   for (;;) {
     if (output_every > 0.0) {
       const Real target = (std::floor(sim.time() / interval + 1e-9) + 1.0) * interval;
-      sim.controls.dt_max =
-          step_towards(sim.time(), target, sim.controls.dt_scale * sim.stable_dt(), 1e-12 * interval).dt;
+      sim.set_dt_max(step_towards(sim.time(), target, sim.controls().dt_scale * sim.stable_dt(), 1e-12 * interval).dt);
     }
     if (!sim.step()) break;
     const EnergyReport& e = sim.energy();
@@ -107,7 +107,7 @@ HoldResult hold_plate(Real nu, long cycles, Real output_every) {
     if (sim.time() > settled) {
       r.max_balance = std::max(r.max_balance, std::abs(e.relative_balance_error()));
       Real tip = 0.0;
-      for (int j = 0; j <= ny; ++j) tip += -sim.nodes.displacement(node(nx, j))[2] / (ny + 1);
+      for (int j = 0; j <= ny; ++j) tip += -sim.nodes().displacement(node(nx, j))[2] / (ny + 1);
       r.max_tip_error = std::max(r.max_tip_error, std::abs(tip / delta - 1.0));
       r.tip_ratio = tip / delta;
     }

@@ -45,7 +45,7 @@ struct Grid {
   Index node(int i, int j) const { return i + (nx + 1) * j; }
 };
 
-/// Fills `sim.nodes` with a grid of the x-y plane (or, with `xz`, the x-z plane at height y0) and
+/// Fills `sim.nodes()` with a grid of the x-y plane (or, with `xz`, the x-z plane at height y0) and
 /// returns the shell connectivity (counter-clockwise about +z, or about +y for xz).
 std::vector<Index> shell_grid(NodalFields& nodes, const Grid& g, Real lx, Real ly, bool xz = false,
                               Real y0 = 0.0, Index first = 0) {
@@ -92,15 +92,15 @@ struct CantileverResult {
 CantileverResult run_cantilever(shell_bt::ThicknessRule::Kind rule) {
   const Real L = 1.0, b = 0.1, t = 0.02, E = 1.0e4, nu = 0.0, rho = 1.0;
   const Grid g{32, 2};
-  Simulation sim;
-  sim.nodes.resize(static_cast<std::size_t>((g.nx + 1) * (g.ny + 1)));
-  auto conn = shell_grid(sim.nodes, g, L, b);
+  SimulationSetup setup;
+  setup.nodes.resize(static_cast<std::size_t>((g.nx + 1) * (g.ny + 1)));
+  auto conn = shell_grid(setup.nodes, g, L, b);
   ShellSection sec;
   sec.thickness = t;
   sec.nip = 5;
   sec.rule = rule;
   const std::size_t ne = conn.size() / 4;
-  sim.blocks.push_back(std::make_unique<ShellBlock>(1, ElasticShell(rho, E, nu), sec, conn,
+  setup.blocks.push_back(std::make_unique<ShellBlock>(1, ElasticShell(rho, E, nu), sec, conn,
                                                     iota_ids(ne)));
   // Beam theory (nu = 0: the plate's uniaxial bending is the beam's).
   const Real I = b * t * t * t / 12.0;
@@ -119,8 +119,8 @@ CantileverResult run_cantilever(shell_bt::ThicknessRule::Kind rule) {
   const Real t_end = 14.0 / omega1;
   // PointLoads applies a load the energy ledger does not see (a test-only stand-in for nodal
   // loads): the balance check would stop the run.
-  sim.controls.energy_error_limit = 0.0;
-  sim.constraints.push_back(std::make_unique<PointLoads>(
+  setup.controls.energy_error_limit = 0.0;
+  setup.constraints.push_back(std::make_unique<PointLoads>(
       tip, f, LoadCurve({{0.0, 0.0}, {3.0 / omega1, 1.0}, {100.0 * t_end, 1.0}}, "tip")));
   // Clamp: every translation and rotation of the root nodes.
   SupportGroup clamp;
@@ -136,19 +136,20 @@ CantileverResult run_cantilever(shell_bt::ThicknessRule::Kind rule) {
       s.nodes = root;
       clamp.supports.push_back(s);
     }
-  sim.supports.push_back(clamp);
+  setup.supports.push_back(clamp);
   MassDamping d;
   d.alpha = 2.0 * omega1;
-  sim.damping.push_back(d);
-  sim.controls.end_time = t_end;
-  sim.controls.history_interval = t_end / 200;
+  setup.damping.push_back(d);
+  setup.controls.end_time = t_end;
+  setup.controls.history_interval = t_end / 200;
   History h;
+  Simulation sim(std::move(setup));
   sim.run({&h});
   CantileverResult r;
-  for (Index i : tip) r.tip += -sim.nodes.displacement(i)[2] / static_cast<Real>(tip.size());
+  for (Index i : tip) r.tip += -sim.nodes().displacement(i)[2] / static_cast<Real>(tip.size());
   r.tip_theory = delta;
   // Root elements (i = 0): the top-surface bending stress at the centroid x = L / (2 nx).
-  const auto& blk = static_cast<const ShellBlock&>(*sim.blocks[0]);
+  const auto& blk = static_cast<const ShellBlock&>(*sim.blocks()[0]);
   const Real xc = 0.5 * L / g.nx;
   r.stress_theory = P * (L - xc) * (0.5 * t) / I;
   for (int j = 0; j < g.ny; ++j) r.stress += blk.surface_stress(g.nx * j, true)[0] / g.ny;
@@ -182,11 +183,11 @@ TEST(ShellVerification, CantileverTipLoadLobatto) {
 // on supports (every node held in y) under the body load P_y = 10 (-y), ramped over [0, 0.1],
 // alpha = 15: the reaction equals the load.
 TEST(ShellVerification, SpecPlateOnSupportsReactionEqualsLoad) {
-  Simulation sim;
+  SimulationSetup setup;
   const Grid g{3, 3};
-  sim.nodes.resize(16);
-  auto conn = shell_grid(sim.nodes, g, 1.0, 1.0, true, 0.0);
-  sim.blocks.push_back(make_shell_block(2, ElasticShell(0.1, 1000.0, 0.1),
+  setup.nodes.resize(16);
+  auto conn = shell_grid(setup.nodes, g, 1.0, 1.0, true, 0.0);
+  setup.blocks.push_back(make_shell_block(2, ElasticShell(0.1, 1000.0, 0.1),
                                         ShellSection{.thickness = 0.1}, conn, iota_ids(9)));
   const Real mass = 0.1 * 1.0 * 0.1;
   BodyLoad by;
@@ -194,23 +195,24 @@ TEST(ShellVerification, SpecPlateOnSupportsReactionEqualsLoad) {
   by.scale = -10.0 / mass;
   by.curve = ramp_y();
   by.parts = {2};
-  sim.body_loads.push_back(by);
+  setup.body_loads.push_back(by);
   SupportGroup sg;
   sg.name = "plate";
   Support s;
   s.axis = Axis::y;
   for (Index i = 0; i < 16; ++i) s.nodes.push_back(i);
   sg.supports.push_back(s);
-  sim.supports.push_back(sg);
+  setup.supports.push_back(sg);
   MassDamping d;
   d.alpha = 15.0;
-  sim.damping.push_back(d);
-  sim.controls.end_time = 0.3;
-  sim.controls.history_interval = 0.005;
+  setup.damping.push_back(d);
+  setup.controls.end_time = 0.3;
+  setup.controls.history_interval = 0.005;
   History h;
+  Simulation sim(std::move(setup));
   sim.run({&h});
   Real m = 0.0;
-  for (Real v : sim.nodes.mass) m += v;
+  for (Real v : sim.nodes().mass) m += v;
   EXPECT_NEAR(m, mass, 1e-15);
   const Real ry = h.mean("supports/plate/reaction", 1, 0.2, 0.3);
   std::printf("spec plate on supports: R_y = %.6f (load -10)\n", ry);
@@ -223,17 +225,17 @@ TEST(ShellVerification, SpecPlateOnSupportsReactionEqualsLoad) {
 TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
   const int nx = 3, ny = 2, nz = 2;
   const Real lx = 1.51, ly = 1.0, lz = 1.02;
-  Simulation sim;
+  SimulationSetup setup;
   auto id = [&](int i, int j, int k) { return static_cast<Index>(i + (nx + 1) * (j + (ny + 1) * k)); };
-  sim.nodes.resize(static_cast<std::size_t>((nx + 1) * (ny + 1) * (nz + 1)));
+  setup.nodes.resize(static_cast<std::size_t>((nx + 1) * (ny + 1) * (nz + 1)));
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i) {
         const Index n = id(i, j, k);
         const Vec3 x(lx * i / nx, ly * j / ny, lz * k / nz);
-        sim.nodes.ids[n] = n + 1;
-        sim.nodes.x0.set(n, x);
-        sim.nodes.x.set(n, x);
+        setup.nodes.ids[n] = n + 1;
+        setup.nodes.x0.set(n, x);
+        setup.nodes.x.set(n, x);
       }
   std::vector<Index> hex;
   for (int k = 0; k < nz; ++k)
@@ -242,7 +244,7 @@ TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
         hex.insert(hex.end(), {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
                                id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
                                id(i, j + 1, k + 1)});
-  sim.blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
+  setup.blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
       1, MooneyRivlin(0.01, 909.091, 0.0, 0.1),
       HexHourglass{HexHourglass::Kind::physical_stiffness, 0.1}, BulkViscosity{}, hex,
       iota_ids(hex.size() / 8)));
@@ -250,7 +252,7 @@ TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i)  // top face y = ly, normal +y
       quad.insert(quad.end(), {id(i, ny, k), id(i, ny, k + 1), id(i + 1, ny, k + 1), id(i + 1, ny, k)});
-  sim.blocks.push_back(make_shell_block(2, ElasticShell(0.1, 1000.0, 0.1),
+  setup.blocks.push_back(make_shell_block(2, ElasticShell(0.1, 1000.0, 0.1),
                                         ShellSection{.thickness = 0.1}, quad,
                                         iota_ids(quad.size() / 4, 100)));
   const Real shell_mass = 0.1 * lx * lz * 0.1;
@@ -263,8 +265,8 @@ TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
   bx.scale = 3.1 / shell_mass;
   bx.curve = ramp_x();
   bx.parts = {2};
-  sim.body_loads.push_back(by);
-  sim.body_loads.push_back(bx);
+  setup.body_loads.push_back(by);
+  setup.body_loads.push_back(bx);
   SupportGroup bottom, right;
   bottom.name = "bottom";
   right.name = "right";
@@ -277,14 +279,15 @@ TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
   }
   bottom.supports.push_back(sy);
   right.supports.push_back(sx);
-  sim.supports.push_back(bottom);
-  sim.supports.push_back(right);
+  setup.supports.push_back(bottom);
+  setup.supports.push_back(right);
   MassDamping d;
   d.alpha = 15.0;
-  sim.damping.push_back(d);
-  sim.controls.end_time = 0.5;
-  sim.controls.history_interval = 0.0025;
+  setup.damping.push_back(d);
+  setup.controls.end_time = 0.5;
+  setup.controls.history_interval = 0.0025;
   History h;
+  Simulation sim(std::move(setup));
   sim.run({&h});
   const Real ry = h.mean("supports/bottom/reaction", 1, 0.2, 0.3);
   const Real rx = h.mean("supports/right/reaction", 0, 0.45, 0.5);
@@ -302,26 +305,26 @@ TEST(ShellVerification, SpecShellLayerOnBrickReactionsEqualLoads) {
 TEST(ShellVerification, ResultsIndependentOfThreadCount) {
   auto run = [](int threads) {
     set_threads(threads);
-    Simulation sim;
+    SimulationSetup setup;
     const Grid g{96, 64};
-    sim.nodes.resize(static_cast<std::size_t>((g.nx + 1) * (g.ny + 1)));
-    auto conn = shell_grid(sim.nodes, g, 1.5, 1.0);
+    setup.nodes.resize(static_cast<std::size_t>((g.nx + 1) * (g.ny + 1)));
+    auto conn = shell_grid(setup.nodes, g, 1.5, 1.0);
     // Warp it a little so that every term of the kernel is active.
-    for (std::size_t i = 0; i < sim.nodes.size(); ++i) {
-      const Real z = 0.01 * std::sin(7.0 * sim.nodes.x0.x[i]) * std::cos(5.0 * sim.nodes.x0.y[i]);
-      sim.nodes.x0.z[i] = sim.nodes.x.z[i] = z;
+    for (std::size_t i = 0; i < setup.nodes.size(); ++i) {
+      const Real z = 0.01 * std::sin(7.0 * setup.nodes.x0.x[i]) * std::cos(5.0 * setup.nodes.x0.y[i]);
+      setup.nodes.x0.z[i] = setup.nodes.x.z[i] = z;
     }
     const std::size_t ne = conn.size() / 4;
-    sim.blocks.push_back(make_shell_block(1, ElasticShell(0.1, 1000.0, 0.3),
+    setup.blocks.push_back(make_shell_block(1, ElasticShell(0.1, 1000.0, 0.3),
                                           ShellSection{.thickness = 0.01}, conn, iota_ids(ne)));
     BodyLoad bz;
     bz.axis = Axis::z;
     bz.scale = -50.0;
-    sim.body_loads.push_back(bz);
+    setup.body_loads.push_back(bz);
     BodyLoad bx = bz;
     bx.axis = Axis::x;
     bx.scale = 20.0;
-    sim.body_loads.push_back(bx);
+    setup.body_loads.push_back(bx);
     SupportGroup sg;
     sg.name = "edge";
     for (Axis a : {Axis::x, Axis::y, Axis::z}) {
@@ -330,13 +333,14 @@ TEST(ShellVerification, ResultsIndependentOfThreadCount) {
       for (int j = 0; j <= g.ny; ++j) s.nodes.push_back(g.node(0, j));
       sg.supports.push_back(s);
     }
-    sim.supports.push_back(sg);
-    sim.controls.end_time = 1.0;
-    sim.controls.max_cycles = 300;
+    setup.supports.push_back(sg);
+    setup.controls.end_time = 1.0;
+    setup.controls.max_cycles = 300;
+    Simulation sim(std::move(setup));
     sim.initialize();
     while (sim.step()) {
     }
-    return sim.nodes;
+    return sim.nodes();
   };
   const int hw = max_threads();
   const NodalFields a = run(1);

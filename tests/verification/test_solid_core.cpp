@@ -9,26 +9,26 @@
 #include "slideline/material/elastic.hpp"
 #include "slideline/scenarios/two_block.hpp"
 #include "slideline/solver/build.hpp"
+#include "test_support/staged_simulation.hpp"
 
 using namespace slideline;
 
 namespace {
 
 /// A bar along x of n cubic elements of side h (one element through y and z), elastic, nu = 0.
-struct Bar {
-  Simulation sim;
+struct Bar : test_support::StagedSimulation {
   Real h, length, rho = 1.0, e = 1.0e4;
   int n;
   Bar(int n_el, Real side) : h(side), length(n_el * side), n(n_el) {
     const Index nn = 4 * (n + 1);
-    sim.nodes.resize(nn);
+    setup.nodes.resize(nn);
     for (int i = 0; i <= n; ++i)
       for (int c = 0; c < 4; ++c) {
         const Index k = 4 * i + c;
         const Vec3 x(i * h, (c == 1 || c == 2) ? h : 0.0, c >= 2 ? h : 0.0);
-        sim.nodes.ids[k] = k + 1;
-        sim.nodes.x0.set(k, x);
-        sim.nodes.x.set(k, x);
+        setup.nodes.ids[k] = k + 1;
+        setup.nodes.x0.set(k, x);
+        setup.nodes.x.set(k, x);
       }
     // node c: 0 (y0,z0), 1 (y1,z0), 2 (y1,z1), 3 (y0,z1); element nodes ordered x-y-z as the unit hex
     std::vector<Index> conn;
@@ -38,7 +38,7 @@ struct Bar {
       conn.insert(conn.end(), {a + 0, b + 0, b + 1, a + 1, a + 3, b + 3, b + 2, a + 2});
       ids.push_back(i + 1);
     }
-    sim.blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
+    setup.blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
         1, ElasticSolid(rho, e, 0.0), HexHourglass{}, BulkViscosity{}, conn, ids));
   }
   std::vector<Index> end_nodes(int i) const { return {4 * i, 4 * i + 1, 4 * i + 2, 4 * i + 3}; }
@@ -64,14 +64,14 @@ TEST(SolidCore, StepLoadWaveArrivesWithinOneElementOfLOverC) {
   fix.axis = Axis::x;
   fix.nodes = bar.end_nodes(bar.n);
   right.supports.push_back(fix);
-  bar.sim.supports = {left, right};
+  bar.setup.supports = {left, right};
   const Real t_arrive = bar.length / c;
-  bar.sim.controls.end_time = 1.5 * t_arrive;
+  bar.setup.controls.end_time = 1.5 * t_arrive;
   // At rest (no bulk viscosity) the stable step is the element transit time h / c.
-  bar.sim.initialize();
-  EXPECT_NEAR(bar.sim.stable_dt(), bar.h / c, 1e-12 * bar.h / c);
+  bar.start();
+  EXPECT_NEAR(bar.sim().stable_dt(), bar.h / c, 1e-12 * bar.h / c);
   History h;
-  bar.sim.run({&h});
+  bar.sim().run({&h});
   const Real sigma_area = bar.rho * c * v0 * bar.h * bar.h;
   // Arrival: first time the fixed-end reaction reaches the incident force (it doubles on reflection).
   Real t_hit = -1.0;
@@ -92,15 +92,16 @@ TEST(SolidCore, UndampedFreeVibrationConservesEnergyWithinOnePercent) {
   fix.axis = Axis::x;
   fix.nodes = bar.end_nodes(bar.n);
   right.supports.push_back(fix);
-  bar.sim.supports = {right};
+  bar.setup.supports = {right};
   const Real pi = std::acos(-1.0);
-  for (Index k = 0; k < static_cast<Index>(bar.sim.nodes.size()); ++k)
-    bar.sim.nodes.v.x[k] = 0.05 * std::cos(pi * bar.sim.nodes.x0.x[k] / (2 * bar.length));
-  for (Index k : bar.end_nodes(bar.n)) bar.sim.nodes.v.x[k] = 0.0;
+  for (Index k = 0; k < static_cast<Index>(bar.setup.nodes.size()); ++k)
+    bar.setup.nodes.v.x[k] = 0.05 * std::cos(pi * bar.setup.nodes.x0.x[k] / (2 * bar.length));
+  for (Index k : bar.end_nodes(bar.n)) bar.setup.nodes.v.x[k] = 0.0;
   const Real period = 4 * bar.length / bar.wave_speed();
-  bar.sim.controls.end_time = 5 * period;
+  bar.setup.controls.end_time = 5 * period;
   History h;
-  bar.sim.run({&h});
+  bar.start();
+  bar.sim().run({&h});
   const auto err = h.series("energy/balance_error");
   const auto ke = h.series("energy/kinetic");
   const Real e0 = ke.front();

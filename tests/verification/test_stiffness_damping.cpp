@@ -11,6 +11,7 @@
 #include "slideline/material/elastic.hpp"
 #include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/staged_simulation.hpp"
 
 using namespace slideline;
 
@@ -19,19 +20,18 @@ namespace {
 /// A bar along x of n cubes of side h (one element through y and z), elastic with nu = 0 (so the
 /// axial motion is exactly a chain of springs E h between lumped masses rho h^3 / 4 per node),
 /// fixed in x at x = 0, free at x = L; no bulk viscosity; stiffness damping beta.
-struct DampedBar {
-  Simulation sim;
+struct DampedBar : test_support::StagedSimulation {
   int n;
   Real h, rho = 1.0, e = 1.0e4;
   DampedBar(int n_el, Real side, Real beta) : n(n_el), h(side) {
-    sim.nodes.resize(static_cast<std::size_t>(4 * (n + 1)));
+    setup.nodes.resize(static_cast<std::size_t>(4 * (n + 1)));
     for (int i = 0; i <= n; ++i)
       for (int c = 0; c < 4; ++c) {
         const Index k = 4 * i + c;
         const Vec3 x(i * h, (c == 1 || c == 2) ? h : 0.0, c >= 2 ? h : 0.0);
-        sim.nodes.ids[k] = k + 1;
-        sim.nodes.x0.set(k, x);
-        sim.nodes.x.set(k, x);
+        setup.nodes.ids[k] = k + 1;
+        setup.nodes.x0.set(k, x);
+        setup.nodes.x.set(k, x);
       }
     std::vector<Index> conn;
     std::vector<Id> ids;
@@ -40,7 +40,7 @@ struct DampedBar {
       conn.insert(conn.end(), {a + 0, b + 0, b + 1, a + 1, a + 3, b + 3, b + 2, a + 2});
       ids.push_back(i + 1);
     }
-    sim.blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
+    setup.blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
         1, ElasticSolid(rho, e, 0.0), HexHourglass{}, BulkViscosity{0.0, 0.0}, conn, ids,
         StiffnessDamping{beta}));
     SupportGroup fixed{"fixed", {}, Vec3::Zero()};
@@ -48,8 +48,8 @@ struct DampedBar {
     s.axis = Axis::x;
     s.nodes = {0, 1, 2, 3};
     fixed.supports.push_back(s);
-    sim.supports = {fixed};
-    sim.history_nodes = {4 * n};  // a tip node
+    setup.supports = {fixed};
+    setup.history_nodes = {4 * n};  // a tip node
   }
   Real wave_speed() const { return std::sqrt(e / rho); }
   /// First circular frequency of the discrete chain (lumped masses, half mass at the free end):
@@ -89,12 +89,13 @@ TEST(StiffnessDamping, BarFirstModeDecaysWithTheClosedFormDecrement) {
   DampedBar bar(n, h, beta);
   const Real theta = std::acos(-1.0) / (2.0 * n);
   for (int i = 0; i <= n; ++i)
-    for (int c = 0; c < 4; ++c) bar.sim.nodes.v.x[4 * i + c] = 0.01 * std::sin(i * theta);
+    for (int c = 0; c < 4; ++c) bar.setup.nodes.v.x[4 * i + c] = 0.01 * std::sin(i * theta);
   const Real period = 2.0 * std::acos(-1.0) / omega;
   const int periods = 8;
-  bar.sim.controls.end_time = (periods + 0.5) * period;
+  bar.setup.controls.end_time = (periods + 0.5) * period;
   History hist;
-  bar.sim.run({&hist});
+  bar.start();
+  bar.sim().run({&hist});
   const auto u = hist.series("nodes/" + std::to_string(4 * n + 1) + "/displacement", 0);
   const auto peaks = positive_peaks(u);
   ASSERT_GE(peaks.size(), static_cast<std::size_t>(periods));
@@ -123,16 +124,16 @@ TEST(StiffnessDamping, StableStepShrinksAsPredicted) {
   const int n = 20;
   const Real h = 0.05;
   DampedBar plain(n, h, 0.0);
-  plain.sim.controls.end_time = 1.0;
-  plain.sim.initialize();
+  plain.setup.controls.end_time = 1.0;
+  plain.start();
   const Real c = plain.wave_speed();
-  EXPECT_NEAR(plain.sim.stable_dt(), h / c, 1e-12 * h / c);
+  EXPECT_NEAR(plain.sim().stable_dt(), h / c, 1e-12 * h / c);
   const Real beta = 2.0 * 0.02 / plain.omega1();
   DampedBar bar(n, h, beta);
-  bar.sim.controls.end_time = 1.0;
-  bar.sim.initialize();
+  bar.setup.controls.end_time = 1.0;
+  bar.start();
   const Real xi = beta * c / h;
   const Real expected = (h / c) * (std::sqrt(1.0 + xi * xi) - xi);
-  EXPECT_NEAR(bar.sim.stable_dt(), expected, 1e-12 * expected);
-  EXPECT_LT(bar.sim.stable_dt(), 0.62 * h / c);
+  EXPECT_NEAR(bar.sim().stable_dt(), expected, 1e-12 * expected);
+  EXPECT_LT(bar.sim().stable_dt(), 0.62 * h / c);
 }

@@ -35,7 +35,7 @@ class MeshBlock {
 };
 
 /// A range the surface builders take as "the model's blocks": an indexable range of (smart)
-/// pointers to MeshBlock or a class derived from it, e.g. Simulation::blocks.
+/// pointers to MeshBlock or a class derived from it, e.g. Simulation::blocks().
 template <class R>
 concept MeshBlockRange = requires(const R& r, std::size_t i) {
   { r.size() } -> std::convertible_to<std::size_t>;

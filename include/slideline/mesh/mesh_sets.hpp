@@ -1,7 +1,7 @@
 #pragma once
 /// The deck's node, part and segment sets, resolved to internal node indices, kept in the runtime
 /// so that contact interfaces (and anything else built after the mesh) can look them up by the
-/// deck's set id. Filled by build_simulation; set ids are the deck's (each kind of set has its own
+/// deck's set id. Filled by build_setup; set ids are the deck's (each kind of set has its own
 /// id space, as in LS-DYNA).
 #include <array>
 #include <map>

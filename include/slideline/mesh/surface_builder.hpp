@@ -56,7 +56,7 @@ Surface build_surface_from_segments(MeshBlocks blocks, const NodalFields& nodes,
                                     std::span<const SegmentNodes> segments,
                                     const std::string& context);
 
-/// The two builders for any MeshBlockRange (Simulation::blocks, a vector of unique_ptr to blocks).
+/// The two builders for any MeshBlockRange (SimulationSetup::blocks, Simulation::blocks()).
 template <MeshBlockRange R>
 Surface build_surface_from_parts(const R& blocks, const NodalFields& nodes, std::span<const Id> parts,
                                  const std::string& context) {

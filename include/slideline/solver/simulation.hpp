@@ -31,32 +31,43 @@
 #include "slideline/solver/output_sink.hpp"
 #include "slideline/solver/part_energy_monitor.hpp"
 #include "slideline/solver/simulation_controls.hpp"
+#include "slideline/solver/simulation_setup.hpp"
 #include "slideline/solver/stability_monitor.hpp"
 
 namespace slideline {
 
 class Simulation {
  public:
-  Simulation() = default;
-  /// A simulation whose exchange points (exchange.hpp: the force gather, the dt reduction, the
-  /// energy sums) go through `exchange`, e.g. a distributed run's; null means one process.
-  explicit Simulation(std::unique_ptr<Exchange> exchange)
-      : exchange_(exchange ? std::move(exchange) : std::make_unique<SingleProcessExchange>()) {}
+  /// A simulation of `setup` (simulation_setup.hpp: the mesh, blocks, loads, supports, contact
+  /// interfaces and controls), which it owns from here on. Its exchange points (exchange.hpp: the
+  /// force gather, the dt reduction, the energy sums) go through `exchange`, e.g. a distributed
+  /// run's; null means one process. Nothing is computed here: initialize() starts the run.
+  explicit Simulation(SimulationSetup setup, std::unique_ptr<Exchange> exchange = nullptr);
 
-  NodalFields nodes;
-  std::vector<std::unique_ptr<ElementBlock>> blocks;
-  std::vector<std::unique_ptr<NodalConstraint>> constraints;  ///< rigid parts
-  ContactManager contacts;
-  std::vector<BodyLoad> body_loads;
-  std::vector<NodalLoad> nodal_loads;
-  std::vector<SupportGroup> supports;
-  std::vector<MassDamping> damping;
-  std::vector<Index> history_nodes;  ///< internal indices of nodes whose displacement is recorded
-  MeshSets sets;  ///< the deck's node, part and segment sets, resolved (for contact)
-  SimulationControls controls;
+  // What the simulation was set up with, as it is now (positions, velocities, reactions, contact
+  // state change as it runs). Read-only: the setup is changed before construction.
+  const NodalFields& nodes() const { return nodes_; }
+  const std::vector<std::unique_ptr<ElementBlock>>& blocks() const { return blocks_; }
+  const std::vector<std::unique_ptr<NodalConstraint>>& constraints() const { return constraints_; }  ///< rigid parts
+  const ContactManager& contacts() const { return contacts_; }
+  const std::vector<BodyLoad>& body_loads() const { return body_loads_; }
+  const std::vector<NodalLoad>& nodal_loads() const { return nodal_loads_; }
+  /// The support groups, with the reaction each carried at the last step.
+  const std::vector<SupportGroup>& supports() const { return supports_; }
+  const std::vector<MassDamping>& damping() const { return damping_; }
+  const std::vector<Index>& history_nodes() const { return history_nodes_; }  ///< recorded displacements
+  const MeshSets& sets() const { return sets_; }
+  const SimulationControls& controls() const { return controls_; }
+
+  // Steering between cycles, for a driver that decides from the stable step once the run has
+  // started (tests/verification/test_shell_stability.cpp lands every step on its output times).
+  // Everything else is set in the SimulationSetup before construction.
+  void set_end_time(Real t) { controls_.end_time = t; }
+  void set_dt_max(Real dt) { controls_.dt_max = dt; }  ///< 0 = no cap
+  void set_history_interval(Real dt) { controls_.history_interval = dt; }
 
   /// Computes masses, builds the corner gather lists, evaluates the forces at t = 0 and the first
-  /// stable step. Call once after filling the members above.
+  /// stable step. Call once after construction (step() and run() call it if it was not).
   void initialize();
 
   /// Where warnings go (build_simulation sets it from BuildOptions::diagnostics; null, the
@@ -100,7 +111,7 @@ class Simulation {
   Real energy_error_fraction() const { return monitor_.energy_error_fraction(ledger_.report()); }
   /// Effective translational mass (own + condensed tied slaves) used in the last cycle.
   std::span<const Real> effective_mass() const {
-    return contacts.condenses() ? std::span<const Real>(mass_eff_) : std::span<const Real>(nodes.mass);
+    return contacts_.condenses() ? std::span<const Real>(mass_eff_) : std::span<const Real>(nodes_.mass);
   }
 
  private:
@@ -143,10 +154,22 @@ class Simulation {
   /// x^{n+1}, t^{n+1}; rigid bodies and ties reset their nodes.
   void advance(const StepPlan& plan);
 
-  bool has_contact() const { return !contacts.empty(); }
+  bool has_contact() const { return !contacts_.empty(); }
 
+  // The setup (simulation_setup.hpp documents each), owned and advanced by the simulation.
+  NodalFields nodes_;
+  std::vector<std::unique_ptr<ElementBlock>> blocks_;
+  std::vector<std::unique_ptr<NodalConstraint>> constraints_;
+  ContactManager contacts_;
+  std::vector<BodyLoad> body_loads_;  // initialize() resolves their nodes and masses
+  std::vector<NodalLoad> nodal_loads_;
+  std::vector<SupportGroup> supports_;  // the run writes their reactions
+  std::vector<MassDamping> damping_;
+  std::vector<Index> history_nodes_;
+  MeshSets sets_;
+  SimulationControls controls_;
   /// Where a distributed run exchanges data (exchange.hpp); one process here.
-  std::unique_ptr<Exchange> exchange_ = std::make_unique<SingleProcessExchange>();
+  std::unique_ptr<Exchange> exchange_;
   NodeRoles roles_;
   OutputRecorder recorder_;
   StabilityMonitor monitor_;

@@ -30,7 +30,7 @@ LagrangeInterface<Kind>* add_interface(TwoBlocks& m, ExponentialCoulomb friction
   s.friction = friction;
   auto c = std::make_unique<LagrangeInterface<Kind>>(s, m.lower.face(1, true), m.upper.layer(0), m.upper.face(0, false));
   LagrangeInterface<Kind>* p = c.get();
-  m.sim.contacts.add(std::move(c));
+  m.setup.contacts.add(std::move(c));
   return p;
 }
 SlidingOnlyContact* add_sliding_only(TwoBlocks& m) { return add_interface<SlidingOnlyKind>(m); }
@@ -46,10 +46,10 @@ MassDamping damping(Real alpha) {
 
 /// Runs to the end; returns the largest |relative balance error| after t_from.
 Real run(TwoBlocks& m, Real t_from, const std::function<void()>& each = {}) {
-  m.sim.initialize();
+  m.start();
   Real worst = 0.0;
-  while (m.sim.step()) {
-    if (m.sim.time() > t_from) worst = std::max(worst, std::abs(m.sim.energy().relative_balance_error()));
+  while (m.sim().step()) {
+    if (m.sim().time() > t_from) worst = std::max(worst, std::abs(m.sim().energy().relative_balance_error()));
     if (each) each();
   }
   return worst;
@@ -60,14 +60,14 @@ Real run(TwoBlocks& m, Real t_from, const std::function<void()>& each = {}) {
 TEST(SlidingOnly, FrictionlessSlideFollowsConstantAcceleration) {
   TwoBlocks m;
   const Real a = 5.0;
-  m.sim.body_loads.push_back(ramped_body_load(Axis::x, a, 2, 0.0));
+  m.setup.body_loads.push_back(ramped_body_load(Axis::x, a, 2, 0.0));
   auto* c = add_sliding_only(m);
-  m.sim.controls.end_time = 0.3;
+  m.setup.controls.end_time = 0.3;
   Real worst_balance = 0.0;
   const Real energy = run(m, 0.05, [&] {
     worst_balance = std::max(worst_balance, (c->slave_force() + c->master_force()).norm());
   });
-  const Real t = m.sim.time();
+  const Real t = m.sim().time();
   const Vec3 u = m.upper_displacement();
   std::printf("sliding only: u_x %.9f vs a t^2/2 %.9f, max |gap| %.3e, balance %.3e, energy %.3e, sweeps max %d\n",
               u[0], 0.5 * a * t * t, c->max_penetration(), worst_balance, energy, c->solve_stats().max_sweeps);
@@ -83,10 +83,10 @@ TEST(SlidingOnly, HoldsTheSlaveInTension) {
   // Centred: frictionless, an off-centre block would drift down the slope of the deformed face.
   TwoBlocks m(nullptr, 0.5);
   const Real g = 20.0;  // pulls the upper block away from the lower one
-  m.sim.body_loads.push_back(ramped_body_load(Axis::y, g, 2, 0.05));
-  m.sim.damping = {damping(40.0)};
+  m.setup.body_loads.push_back(ramped_body_load(Axis::y, g, 2, 0.05));
+  m.setup.damping = {damping(40.0)};
   auto* c = add_sliding_only(m);
-  m.sim.controls.end_time = 0.8;
+  m.setup.controls.end_time = 0.8;
   const Real energy = run(m, 0.05);
   const Real load = m.upper_mass() * g;
   std::printf("sliding only in tension: F_y %.6f (load %.3f), max |gap| %.3e, energy %.3e\n", c->slave_force()[1],
@@ -100,15 +100,15 @@ TEST(LagrangeContact, BlockRestsWithoutInterpenetration) {
   // With friction, so that the block does not creep down the slope of the deformed face.
   TwoBlocks m;
   const Real g = 30.0;
-  m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
-  m.sim.damping = {damping(40.0)};
+  m.setup.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
+  m.setup.damping = {damping(40.0)};
   auto* c = add_contact(m, ExponentialCoulomb{0.3, 0.3, 0.0});
-  m.sim.controls.end_time = 0.8;
+  m.setup.controls.end_time = 0.8;
   const Real energy = run(m, 0.05);
   const Real load = m.upper_mass() * g;
   std::printf("Lagrange, resting block: F_y %.8f (load %.3f), R_y %.8f, max penetration %.3e, energy %.3e, "
               "sweeps %.1f per solve (max %d)\n",
-              c->slave_force()[1], load, m.sim.supports[0].reaction[1], c->max_penetration(), energy,
+              c->slave_force()[1], load, m.sim().supports()[0].reaction[1], c->max_penetration(), energy,
               static_cast<double>(c->solve_stats().sweeps) / static_cast<double>(c->solve_stats().solves),
               c->solve_stats().max_sweeps);
   EXPECT_NEAR(c->slave_force()[1], load, 1e-6 * load);
@@ -131,11 +131,11 @@ struct StickSlip {
 StickSlip run_stick_slip(const ExponentialCoulomb& f) {
   TwoBlocks m;
   const Real g = 30.0;
-  m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
-  m.sim.body_loads.push_back(ramped_body_load(Axis::x, 1.3 * f.mu_s * g, 2, 0.2, 0.1));
-  m.sim.damping = {damping(20.0)};
+  m.setup.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
+  m.setup.body_loads.push_back(ramped_body_load(Axis::x, 1.3 * f.mu_s * g, 2, 0.2, 0.1));
+  m.setup.damping = {damping(20.0)};
   auto* c = add_contact(m, f);
-  m.sim.controls.end_time = 0.45;
+  m.setup.controls.end_time = 0.45;
   StickSlip r;
   r.energy = run(m, 0.05, [&] {
     if (std::abs(c->slave_force()[0]) > r.peak) {
@@ -146,9 +146,9 @@ StickSlip run_stick_slip(const ExponentialCoulomb& f) {
   r.final_fx = c->slave_force()[0];
   r.final_fy = c->slave_force()[1];
   r.penetration = c->max_penetration();
-  r.friction = m.sim.energy().friction;
+  r.friction = m.sim().energy().friction;
   r.u = m.upper_displacement();
-  r.x = m.sim.nodes.x.x;
+  r.x = m.sim().nodes().x.x;
   return r;
 }
 
@@ -188,10 +188,10 @@ TEST(LagrangeContact, RigidMasterCarriesTheLoad) {
   const std::array<int, 6> fixed{1, 1, 1, 1, 1, 1};
   TwoBlocks m(&fixed);
   const Real g = 30.0;
-  m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
-  m.sim.damping = {damping(40.0)};
+  m.setup.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
+  m.setup.damping = {damping(40.0)};
   auto* c = add_contact(m, {}, {1, 1, 1});
-  m.sim.controls.end_time = 0.4;
+  m.setup.controls.end_time = 0.4;
   const Real energy = run(m, 0.05);
   const Real load = m.upper_mass() * g;
   std::printf("rigid fixed master: F_y %.8f, rigid reaction %.8f (load %.3f), penetration %.3e, energy %.3e\n",
@@ -208,15 +208,15 @@ TEST(LagrangeContact, FreeRigidMasterIsPushedWithoutLag) {
   const std::array<int, 6> free{0, 0, 0, 0, 0, 0};
   TwoBlocks m(&free, 0.5);
   const Real g = 30.0;
-  m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.0));
+  m.setup.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.0));
   auto* c = add_contact(m);
-  m.sim.controls.end_time = 0.2;
+  m.setup.controls.end_time = 0.2;
   run(m, 0.0);
   // Only the body load acts on the pair: total momentum = its impulse; no interpenetration
   // although the rigid master moves within every step.
-  const Real t = m.sim.time() + 0.5 * m.sim.dt();
+  const Real t = m.sim().time() + 0.5 * m.sim().dt();
   Real p = 0.0;
-  for (std::size_t i = 0; i < m.sim.nodes.size(); ++i) p += m.sim.nodes.mass[i] * m.sim.nodes.v.y[i];
+  for (std::size_t i = 0; i < m.sim().nodes().size(); ++i) p += m.sim().nodes().mass[i] * m.sim().nodes().v.y[i];
   const Real impulse = -m.upper_mass() * g * t;
   std::printf("free rigid master: momentum %.8f vs impulse %.8f, rigid v_y %.5f, penetration %.3e\n", p, impulse,
               m.rigid->velocity()[1], c->max_penetration());
@@ -237,12 +237,12 @@ TEST(LagrangeContact, RotatingRigidMasterLagIsSecondOrderInTheStep) {
   const auto measure = [](Real dt_max) {
     const std::array<int, 6> free{0, 0, 0, 0, 0, 0};
     TwoBlocks m(&free, 0.0);
-    m.sim.controls.dt_max = dt_max;
-    m.sim.body_loads.push_back(ramped_body_load(Axis::y, -30.0, 2, 0.0));
+    m.setup.controls.dt_max = dt_max;
+    m.setup.body_loads.push_back(ramped_body_load(Axis::y, -30.0, 2, 0.0));
     auto* c = add_contact(m);
-    m.sim.controls.end_time = 0.2;
+    m.setup.controls.end_time = 0.2;
     run(m, 0.0);
-    return Lag{c->max_penetration(), m.rigid->angular_velocity().norm(), m.sim.dt()};
+    return Lag{c->max_penetration(), m.rigid->angular_velocity().norm(), m.sim().dt()};
   };
   const Lag coarse = measure(2e-4), fine = measure(1e-4);
   std::printf("rotating rigid master: dt %.3g: penetration %.3e, |omega| %.4f; dt %.3g: penetration %.3e, |omega| %.4f\n",
@@ -266,7 +266,7 @@ TEST(LagrangeContact, SingleSurfaceKeepsOneConstraintPerMutualPair) {
   auto sim = build_simulation(problem.model);
   sim->run({});
   const LagrangeContact* c = nullptr;
-  for (const auto& a : sim->contacts)
+  for (const auto& a : sim->contacts())
     if (a->name() == "solid_on_solid") c = dynamic_cast<const LagrangeContact*>(a.get());
   ASSERT_NE(c, nullptr);
   const auto cs = c->constraints();

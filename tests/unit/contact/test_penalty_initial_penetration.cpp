@@ -38,7 +38,7 @@ const PenaltyPasses* add_type3(TwoBlocks& m) {
                                     std::make_unique<FclBroadPhase>(), o),
       ExponentialCoulomb{0.3, 0.3, 0.0});
   const PenaltyPasses* p = &c->passes();
-  m.sim.contacts.add(std::move(c));
+  m.setup.contacts.add(std::move(c));
   return p;
 }
 
@@ -55,15 +55,15 @@ TEST(PenaltyInitialPenetration, SlaveBlockMovedOutThenRunsStable) {
   // Start the upper block 0.01 inside the lower one (both configurations: an unstrained mesh).
   const Real depth = 0.01;
   for (Index n : m.upper.all()) {
-    m.sim.nodes.x.y[n] -= depth;
-    m.sim.nodes.x0.y[n] -= depth;
+    m.setup.nodes.x.y[n] -= depth;
+    m.setup.nodes.x0.y[n] -= depth;
   }
   const Real g = 30.0;
-  m.sim.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
-  m.sim.damping = {damping(40.0)};
-  m.sim.controls.end_time = 0.4;
+  m.setup.body_loads.push_back(ramped_body_load(Axis::y, -g, 2, 0.05));
+  m.setup.damping = {damping(40.0)};
+  m.setup.controls.end_time = 0.4;
   const PenaltyPasses* c = add_type3(m);
-  m.sim.initialize();
+  m.start();
 
   // Found: the 16 bottom nodes of the upper block below the lower top face (pass 1) and the 2
   // lower top nodes under the upper block above its bottom face (pass 2), 0.01 deep. Moving the
@@ -82,18 +82,18 @@ TEST(PenaltyInitialPenetration, SlaveBlockMovedOutThenRunsStable) {
   }
   EXPECT_GE(lowest, -1e-12);
   for (Index n : m.upper.layer(0)) {
-    EXPECT_NEAR(m.sim.nodes.x.y[n], 0.5, 1e-12);
-    EXPECT_EQ((m.sim.nodes.x.get(n) - m.sim.nodes.x0.get(n)).norm(), 0.0);
+    EXPECT_NEAR(m.sim().nodes().x.y[n], 0.5, 1e-12);
+    EXPECT_EQ((m.sim().nodes().x.get(n) - m.sim().nodes().x0.get(n)).norm(), 0.0);
   }
 
   // Runs: no force on the first step, the load carried at the end, energy balance within 1 %.
-  ASSERT_TRUE(m.sim.step());
-  const ContactAlgorithm& contact = m.sim.contacts[0];
+  ASSERT_TRUE(m.sim().step());
+  const ContactAlgorithm& contact = m.sim().contacts()[0];
   const Real first = contact.slave_force().norm();
   Real worst = 0.0, fmax = 0.0;
-  while (m.sim.step()) {
+  while (m.sim().step()) {
     fmax = std::max(fmax, contact.slave_force().norm());
-    if (m.sim.time() > 0.05) worst = std::max(worst, std::abs(m.sim.energy().relative_balance_error()));
+    if (m.sim().time() > 0.05) worst = std::max(worst, std::abs(m.sim().energy().relative_balance_error()));
   }
   const Real load = m.upper_mass() * g;
   std::printf("moved %ld node(s), largest move %.3e; first-step |F| %.3e, max |F| %.4f (load %.3f), "

@@ -18,8 +18,7 @@ namespace {
 /// whose nodes are all fixed (no shear lag: the tie alone decides the load sharing). The upper
 /// block is stiff next to the tie springs so that its own free-edge effect (no shear stress on its
 /// free faces) does not unload the edge segments.
-struct TiebreakBlocks {
-  Simulation sim;
+struct TiebreakBlocks : test_support::StagedSimulation {
   TieBox lower, upper;
   TiebreakContact* tie = nullptr;
   static constexpr Real kMass = 0.3;
@@ -28,19 +27,19 @@ struct TiebreakBlocks {
     TieMesh mesh;
     lower = mesh.add_box({0, 0, 0}, {1, 0.5, 1}, 2, 1, 2);
     upper = mesh.add_box({0, 0.5, 0}, {1, 0.3, 1}, nx, 1, nx);
-    mesh.fill(sim.nodes);
-    sim.blocks.push_back(elastic_hexes(1, lower, 1.0, 1000.0, 0.3));
-    sim.blocks.push_back(elastic_hexes(2, upper, 1.0, 1.0e4, 0.0));
-    Surface slave_surface = p.unit == TiebreakParameters::FailureUnit::segment ? part_surface(sim, 2) : Surface{};
+    mesh.fill(setup.nodes);
+    setup.blocks.push_back(elastic_hexes(1, lower, 1.0, 1000.0, 0.3));
+    setup.blocks.push_back(elastic_hexes(2, upper, 1.0, 1.0e4, 0.0));
+    Surface slave_surface = p.unit == TiebreakParameters::FailureUnit::segment ? part_surface(setup, 2) : Surface{};
     auto t = std::make_unique<TiebreakContact>("tiebreak", upper.layer(0), std::move(slave_surface),
-                                               part_surface(sim, 1), p);
+                                               part_surface(setup, 1), p);
     tie = t.get();
-    sim.contacts.add(std::move(t));
-    sim.supports.push_back(tie_support("lower", lower.all(), {1, 1, 1}));
+    setup.contacts.add(std::move(t));
+    setup.supports.push_back(tie_support("lower", lower.all(), {1, 1, 1}));
     MassDamping d;
     d.alpha = 5.0;  // ~10 % of critical for the block on the tie springs (~24 rad/s)
-    sim.damping = {d};
-    sim.controls.dt_scale = 0.8;
+    setup.damping = {d};
+    setup.controls.dt_scale = 0.8;
   }
 };
 
@@ -67,19 +66,19 @@ FailureRun run_to_failure(TiebreakParameters p, int nx, Axis axis, Real peak_loa
   TiebreakBlocks m(p, nx);
   const Real t0 = axis == Axis::x ? 0.3 : 0.0;
   const Real g = 2.0 * peak_load / TiebreakBlocks::kMass;  // reaches twice the failure load at t0 + 2
-  m.sim.body_loads.push_back(ramped_load(axis, g, 2, t0, t0 + 2.0));
-  if (axis == Axis::x) m.sim.body_loads.push_back(ramped_load(Axis::y, -10.0, 2, 0.0, 0.2));
-  m.sim.controls.end_time = t0 + 1.6;
-  m.sim.initialize();
+  m.setup.body_loads.push_back(ramped_load(axis, g, 2, t0, t0 + 2.0));
+  if (axis == Axis::x) m.setup.body_loads.push_back(ramped_load(Axis::y, -10.0, 2, 0.0, 0.2));
+  m.setup.controls.end_time = t0 + 1.6;
+  m.start();
   const int c = static_cast<int>(axis);
   FailureRun r;
   bool any = false;
-  while (m.sim.step()) {
+  while (m.sim().step()) {
     const Real f = std::abs(m.tie->slave_force()[c]);
     bool released = false;
     for (auto b : m.tie->released()) released = released || b;
-    if (!any && f > r.peak) r.peak = f, r.peak_time = m.sim.time();
-    if (!any && m.sim.time() > 0.1) r.energy = std::max(r.energy, std::abs(m.sim.energy().relative_balance_error()));
+    if (!any && f > r.peak) r.peak = f, r.peak_time = m.sim().time();
+    if (!any && m.sim().time() > 0.1) r.energy = std::max(r.energy, std::abs(m.sim().energy().relative_balance_error()));
     any = any || released;
   }
   r.after = std::abs(m.tie->slave_force()[c]);
@@ -91,10 +90,10 @@ FailureRun run_to_failure(TiebreakParameters p, int nx, Axis axis, Real peak_loa
 TEST(TiebreakSurface, UniformTractionGivesTheSameStressOnEverySegment) {
   TiebreakBlocks m(parameters(TiebreakParameters::FailureUnit::segment, 0.0, 0.0), 3);
   const Real g = 5.0;  // total 1.5 over the unit area
-  m.sim.body_loads.push_back(ramped_load(Axis::y, g, 2, 0.0, 0.3));
-  m.sim.controls.end_time = 2.0;
-  m.sim.initialize();
-  while (m.sim.step()) {
+  m.setup.body_loads.push_back(ramped_load(Axis::y, g, 2, 0.0, 0.3));
+  m.setup.controls.end_time = 2.0;
+  m.start();
+  while (m.sim().step()) {
   }
   const auto& fs = m.tie->segment_forces();
   const auto& failed = m.tie->failed_segments();
@@ -123,19 +122,19 @@ TEST(TiebreakSurface, CompressionUsesTheContactStiffnessSpreadByArea) {
   const Real expected = -1.5 / (16 * kappa * 0.25);
   for (const Mat3 r : {Mat3(Mat3::Identity()), Mat3(Eigen::AngleAxis<Real>(0.7, Vec3(1, 2, 3).normalized()))}) {
     TiebreakBlocks m(parameters(TiebreakParameters::FailureUnit::segment, 0.0, 0.0), 3);
-    for (std::size_t i = 0; i < m.sim.nodes.size(); ++i) {
-      m.sim.nodes.x0.set(static_cast<Index>(i), r * m.sim.nodes.x0.get(static_cast<Index>(i)));
-      m.sim.nodes.x.set(static_cast<Index>(i), r * m.sim.nodes.x.get(static_cast<Index>(i)));
+    for (std::size_t i = 0; i < m.setup.nodes.size(); ++i) {
+      m.setup.nodes.x0.set(static_cast<Index>(i), r * m.setup.nodes.x0.get(static_cast<Index>(i)));
+      m.setup.nodes.x.set(static_cast<Index>(i), r * m.setup.nodes.x.get(static_cast<Index>(i)));
     }
     const Vec3 up = r * Vec3(0, 1, 0), g = -5.0 * up;  // total 1.5 pressing the upper block down
-    for (int c = 0; c < 3; ++c) m.sim.body_loads.push_back(ramped_load(static_cast<Axis>(c), g[c], 2, 0.0, 0.3));
-    m.sim.controls.end_time = 2.0;
-    m.sim.initialize();
-    while (m.sim.step()) {
+    for (int c = 0; c < 3; ++c) m.setup.body_loads.push_back(ramped_load(static_cast<Axis>(c), g[c], 2, 0.0, 0.3));
+    m.setup.controls.end_time = 2.0;
+    m.start();
+    while (m.sim().step()) {
     }
     Real lo = 1e300, hi = -1e300;
     for (Index n : m.upper.layer(0)) {
-      const Real gap = m.sim.nodes.x.get(n).dot(up) - 0.5;
+      const Real gap = m.sim().nodes().x.get(n).dot(up) - 0.5;
       lo = std::min(lo, gap), hi = std::max(hi, gap);
     }
     const Real fn = m.tie->slave_force().dot(up);
@@ -194,8 +193,8 @@ TEST(TiebreakNodes, FailsInShearAtTheAnalyticalLoad) {
 
 TEST(TiebreakNodes, SpringsVoteTheirStableStep) {
   TiebreakBlocks m(parameters(TiebreakParameters::FailureUnit::node, 1.0, 1.0), 1);
-  m.sim.controls.end_time = 0.01;
-  m.sim.initialize();
+  m.setup.controls.end_time = 0.01;
+  m.start();
   // k = f K A / h of the master face (f = 0.1, K = 1000 / (3 (1 - 0.6)), A = 0.25, h = 0.5),
   // between a slave of mass 0.3 / 8 and the lightest master corner.
   const Real k = 0.1 * (1000.0 / 1.2) * 0.25 * 0.25 / (0.25 * 0.5);
@@ -204,8 +203,8 @@ TEST(TiebreakNodes, SpringsVoteTheirStableStep) {
   Real mm = 1e300;
   for (const TiePoint& t : m.tie->links())
     for (int a = 0; a < 4; ++a)
-      if (t.shape[a] != 0.0) mm = std::min(mm, m.sim.nodes.mass[t.master[a]]);
-  const Real ms = m.sim.nodes.mass[m.tie->links()[0].slave];
+      if (t.shape[a] != 0.0) mm = std::min(mm, m.sim().nodes().mass[t.master[a]]);
+  const Real ms = m.sim().nodes().mass[m.tie->links()[0].slave];
   EXPECT_NEAR(m.tie->stable_dt(), 2.0 / std::sqrt(k * (1.0 / ms + 1.0 / mm)), 1e-9);
 }
 
@@ -215,12 +214,12 @@ TEST(TiebreakNodes, SpringsVoteTheirStableStep) {
 /// must behave as Type 3 with shell offsets: held by friction (mu 0.5 x 3 > the shear) at the same
 /// stand-off, the mid-surfaces (t_s + t_m) / 2 apart.
 TEST(TiebreakSurface, ShellsKeepTheirThicknessOffsetAfterFailure) {
-  Simulation sim;
+  SimulationSetup setup;
   TieMesh mesh;
   const TieBox master = mesh.add_box({-0.5, 0.5, -0.5}, {2, 0, 2}, 4, 0, 4);  // larger: room to slide
   const Real standoff = 0.5 * (0.1 + 0.1);
   const TieBox slave = mesh.add_box({0, 0.5 + standoff, 0}, {1, 0, 1}, 3, 0, 3);
-  mesh.fill(sim.nodes);
+  mesh.fill(setup.nodes);
   auto quads = [](const TieBox& b) {
     std::vector<Index> c;
     for (int k = 0; k < b.nz; ++k)
@@ -228,23 +227,24 @@ TEST(TiebreakSurface, ShellsKeepTheirThicknessOffsetAfterFailure) {
         c.insert(c.end(), {b.node(i, 0, k), b.node(i, 0, k + 1), b.node(i + 1, 0, k + 1), b.node(i + 1, 0, k)});
     return c;
   };
-  sim.blocks.push_back(elastic_shells(1, quads(master), 1.0, 1000.0, 0.1, 0.1));
-  sim.blocks.push_back(elastic_shells(2, quads(slave), 1.0, 1000.0, 0.1, 0.1));
+  setup.blocks.push_back(elastic_shells(1, quads(master), 1.0, 1000.0, 0.1, 0.1));
+  setup.blocks.push_back(elastic_shells(2, quads(slave), 1.0, 1000.0, 0.1, 0.1));
   TiebreakParameters p = parameters(TiebreakParameters::FailureUnit::segment, 1e4, 1.0);
   p.penalty_factor = 2.0;
   p.friction.mu_s = p.friction.mu_k = 0.5;
-  auto t = std::make_unique<TiebreakContact>("tiebreak", slave.layer(0), part_surface(sim, 2), part_surface(sim, 1), p);
+  auto t = std::make_unique<TiebreakContact>("tiebreak", slave.layer(0), part_surface(setup, 2), part_surface(setup, 1), p);
   TiebreakContact* tie = t.get();
-  sim.contacts.add(std::move(t));
-  sim.supports.push_back(tie_support("master", master.layer(0), {1, 1, 1}));
+  setup.contacts.add(std::move(t));
+  setup.supports.push_back(tie_support("master", master.layer(0), {1, 1, 1}));
   MassDamping d;
   d.alpha = 5.0;
-  sim.damping = {d};
-  sim.controls.dt_scale = 0.8;
+  setup.damping = {d};
+  setup.controls.dt_scale = 0.8;
   const Real mass = 1.0 * 0.1 * 1.0;
-  sim.body_loads.push_back(ramped_load(Axis::y, -3.0 / mass, 2, 0.0, 0.2));
-  sim.body_loads.push_back(ramped_load(Axis::x, 2.0 / mass, 2, 0.3, 2.3));  // 1.0 (the failure force) at t = 1.3
-  sim.controls.end_time = 1.6;
+  setup.body_loads.push_back(ramped_load(Axis::y, -3.0 / mass, 2, 0.0, 0.2));
+  setup.body_loads.push_back(ramped_load(Axis::x, 2.0 / mass, 2, 0.3, 2.3));  // 1.0 (the failure force) at t = 1.3
+  setup.controls.end_time = 1.6;
+  Simulation sim(std::move(setup));
   sim.initialize();
   ASSERT_EQ(tie->links().size(), slave.layer(0).size());
   Real failed_at = -1.0, x_at_failure = 0.0;
@@ -254,16 +254,16 @@ TEST(TiebreakSurface, ShellsKeepTheirThicknessOffsetAfterFailure) {
   while (sim.step()) {
     bool all = true;
     for (auto r : tie->released()) all = all && r;
-    if (all && failed_at < 0.0) failed_at = sim.time(), x_at_failure = sim.nodes.x.get(probe)[0];
+    if (all && failed_at < 0.0) failed_at = sim.time(), x_at_failure = sim.nodes().x.get(probe)[0];
     if (sim.time() >= 1.4) f_sum += tie->slave_force(), ++n_sum;  // after failure
   }
   Real lo = 1e300, hi = -1e300;
   for (Index n : slave.layer(0)) {
-    const Real gap = sim.nodes.x.get(n)[1] - 0.5;
+    const Real gap = sim.nodes().x.get(n)[1] - 0.5;
     lo = std::min(lo, gap), hi = std::max(hi, gap);
   }
   const Vec3 f = f_sum / std::max(n_sum, 1);
-  const Real slip = sim.nodes.x.get(probe)[0] - x_at_failure;
+  const Real slip = sim.nodes().x.get(probe)[0] - x_at_failure;
   std::printf("type 9 shells: released at t %.3f, stand-off after failure %.5f..%.5f (expected %.3f), mean F on "
               "[1.4, 1.6] (%.3f %.3f), slip after failure %.2e\n",
               failed_at, lo, hi, standoff, f[0], f[1], slip);
@@ -285,32 +285,33 @@ TEST(TiebreakSurface, ShellsKeepTheirThicknessOffsetAfterFailure) {
 /// the total normal force must not jump when segments fail (before the hand-over it dropped by the
 /// failed share until the node's last segment failed), and the failed area keeps carrying friction.
 TEST(TiebreakSurface, NormalForceIsContinuousThroughAProgressiveFailure) {
-  Simulation sim;
+  SimulationSetup setup;
   TieMesh mesh;
   const TieBox lower = mesh.add_box({0, 0, 0}, {1.5, 0.5, 1}, 3, 1, 2);
   const TieBox upper = mesh.add_box({0.02, 0.5, 0.01}, {1, 1, 0.98}, 3, 2, 3);
-  mesh.fill(sim.nodes);
-  sim.blocks.push_back(elastic_hexes(1, lower, 1.0, 1000.0, 0.1));
-  sim.blocks.push_back(elastic_hexes(2, upper, 1.0, 1000.0, 0.1));
+  mesh.fill(setup.nodes);
+  setup.blocks.push_back(elastic_hexes(1, lower, 1.0, 1000.0, 0.1));
+  setup.blocks.push_back(elastic_hexes(2, upper, 1.0, 1000.0, 0.1));
   TiebreakParameters p = parameters(TiebreakParameters::FailureUnit::segment, 1e4, 0.7);
   p.penalty_factor = 1.0;
   p.friction.mu_s = p.friction.mu_k = 0.2;
-  auto t = std::make_unique<TiebreakContact>("tiebreak", upper.layer(0), part_surface(sim, 2), part_surface(sim, 1), p);
+  auto t = std::make_unique<TiebreakContact>("tiebreak", upper.layer(0), part_surface(setup, 2), part_surface(setup, 1), p);
   TiebreakContact* tie = t.get();
-  sim.contacts.add(std::move(t));
-  sim.supports.push_back(tie_support("bottom", lower.layer(0), {0, 1, 1}));
+  setup.contacts.add(std::move(t));
+  setup.supports.push_back(tie_support("bottom", lower.layer(0), {0, 1, 1}));
   std::vector<Index> right;
   for (Index n : lower.all())
-    if (sim.nodes.x0.get(n)[0] > 1.5 - 1e-9) right.push_back(n);
-  sim.supports.push_back(tie_support("right", right, {1, 0, 0}));
+    if (setup.nodes.x0.get(n)[0] > 1.5 - 1e-9) right.push_back(n);
+  setup.supports.push_back(tie_support("right", right, {1, 0, 0}));
   MassDamping d;
   d.alpha = 20.0;
-  sim.damping = {d};
-  sim.controls.dt_scale = 0.8;
+  setup.damping = {d};
+  setup.controls.dt_scale = 0.8;
   const Real mass = 0.98;  // the upper block, rho = 1
-  sim.body_loads.push_back(ramped_load(Axis::y, -3.0 / mass, 2, 0.0, 0.5));
-  sim.body_loads.push_back(ramped_load(Axis::x, 1.0 / mass, 2, 1.0, 3.0));  // 1.0 at t = 3
-  sim.controls.end_time = 3.0;
+  setup.body_loads.push_back(ramped_load(Axis::y, -3.0 / mass, 2, 0.0, 0.5));
+  setup.body_loads.push_back(ramped_load(Axis::x, 1.0 / mass, 2, 1.0, 3.0));  // 1.0 at t = 3
+  setup.controls.end_time = 3.0;
+  Simulation sim(std::move(setup));
   sim.initialize();
   Real first = -1.0, last = -1.0, fy_lo = 1e300, fy_hi = -1e300, balance = 0.0, fx_partial = 0.0;
   while (sim.step()) {

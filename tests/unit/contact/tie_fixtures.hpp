@@ -13,6 +13,7 @@
 #include "slideline/mesh/surface_builder.hpp"
 #include "slideline/solver/simulation.hpp"
 #include "test_support/hex_grid.hpp"
+#include "test_support/staged_simulation.hpp"
 
 namespace slideline::test {
 
@@ -68,9 +69,9 @@ inline BodyLoad ramped_load(Axis axis, Real scale, Id part, Real t0, Real t1) {
 }
 
 /// The exterior surface of `part` with its adjacency.
-inline Surface part_surface(const Simulation& sim, Id part) {
+inline Surface part_surface(const SimulationSetup& setup, Id part) {
   const std::vector<Id> parts{part};
-  Surface s = build_surface_from_parts(sim.blocks, sim.nodes, parts, "test");
+  Surface s = build_surface_from_parts(setup.blocks, setup.nodes, parts, "test");
   build_surface_adjacency(s);
   return s;
 }

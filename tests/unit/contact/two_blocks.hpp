@@ -13,6 +13,7 @@
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/simulation.hpp"
 #include "test_support/hex_grid.hpp"
+#include "test_support/staged_simulation.hpp"
 
 namespace slideline::test {
 
@@ -35,8 +36,7 @@ struct BlockGrid : test_support::HexGrid {
   }
 };
 
-struct TwoBlocks {
-  Simulation sim;
+struct TwoBlocks : test_support::StagedSimulation {
   BlockGrid lower, upper;
   RigidBody* rigid = nullptr;
 
@@ -50,15 +50,15 @@ struct TwoBlocks {
     };
     lower = add({0, 0, 0}, {2, 0.5, 1}, 4, 1, 2);
     upper = add({upper_x0, 0.5, 0.2}, {1, 0.5, 0.6}, 3, 1, 3);
-    mesh.fill(sim.nodes);
+    mesh.fill(setup.nodes);
     if (rigid_fixed) {
-      sim.blocks.push_back(make_rigid_mass_block(1, kTwoBlockRho, kTwoBlockE, kTwoBlockNu, lower.conn(), {}, 0.0,
+      setup.blocks.push_back(make_rigid_mass_block(1, kTwoBlockRho, kTwoBlockE, kTwoBlockNu, lower.conn(), {}, 0.0,
                                                  {101, 102, 103, 104, 105, 106, 107, 108}));
       auto rb = make_rigid_body(1, lower.all(), *rigid_fixed);
       rigid = static_cast<RigidBody*>(rb.get());
-      sim.constraints.push_back(std::move(rb));
+      setup.constraints.push_back(std::move(rb));
     } else {
-      sim.blocks.push_back(elastic(1, lower));
+      setup.blocks.push_back(elastic(1, lower));
       SupportGroup g;
       g.name = "bottom";
       for (int c = 0; c < 3; ++c) {
@@ -67,13 +67,13 @@ struct TwoBlocks {
         s.nodes = lower.layer(0);
         g.supports.push_back(s);
       }
-      sim.supports.push_back(g);
+      setup.supports.push_back(g);
     }
-    sim.blocks.push_back(elastic(2, upper));
-    sim.sets.part_nodes[1] = lower.all();
-    sim.sets.part_nodes[2] = upper.all();
-    sim.controls.dt_scale = 0.8;
-    sim.controls.dt_max = 2e-4;  // fine steps: the trapezoidal energy balance error is O(dt)
+    setup.blocks.push_back(elastic(2, upper));
+    setup.sets.part_nodes[1] = lower.all();
+    setup.sets.part_nodes[2] = upper.all();
+    setup.controls.dt_scale = 0.8;
+    setup.controls.dt_max = 2e-4;  // fine steps: the trapezoidal energy balance error is O(dt)
   }
 
   static std::unique_ptr<ElementBlock> elastic(Id pid, const BlockGrid& b) {
@@ -94,7 +94,7 @@ struct TwoBlocks {
   /// Mean displacement of the upper block's nodes.
   Vec3 upper_displacement() const {
     Vec3 u = Vec3::Zero();
-    for (Index n : upper.all()) u += sim.nodes.x.get(n) - sim.nodes.x0.get(n);
+    for (Index n : upper.all()) u += sim().nodes().x.get(n) - sim().nodes().x0.get(n);
     return u / static_cast<Real>(upper.node_count());
   }
 };

@@ -107,7 +107,7 @@ TEST(KeywordZeroDefaults, ZeroGivesTheManualDefaults) {
 Real first_segment_stiffness(const std::string& text) {
   auto sim = build_simulation(read_keyword_string(text, "slsfac.k"));
   sim->initialize();
-  const PenaltyPasses* passes = penalty_passes_of(sim->contacts[0]);
+  const PenaltyPasses* passes = penalty_passes_of(sim->contacts()[0]);
   if (!passes) throw std::runtime_error("not a penalty contact");
   return passes->pass(0).segment_stiffness(0);
 }

@@ -33,7 +33,7 @@ TEST(MeshSets, FilledFromADeck) {
   model::Model m = read_keyword_file(deck_path("solid_on_solid_type3.k"));
   m.contacts.clear();  // contact is not built yet; the sets are
   auto sim = build_simulation(m);
-  const MeshSets& s = sim->sets;
+  const MeshSets& s = sim->sets();
   // Node ids 1-16 are internal 0-15.
   EXPECT_EQ(s.node_sets.at(1), (std::vector<Index>{8, 9, 10, 11}));
   EXPECT_EQ(s.node_sets.at(2), (std::vector<Index>{9, 10, 13, 14}));
@@ -55,15 +55,15 @@ TEST(MeshSets, FilledFromADeck) {
   // out of the upper block (-y); 13-14-15-16 is written pointing into the lower block, so it
   // is reversed to +y. (Both elements of this deck have 1-4 clockwise seen from 5-8, i.e. a
   // negative volume; the builder orients by the volume sign, so the normals are still outward.)
-  const Surface up = build_surface_from_segments(sim->blocks, sim->nodes, s.segment_set(1, "t"), "ss1");
-  const Surface lo = build_surface_from_segments(sim->blocks, sim->nodes, s.segment_set(2, "t"), "ss2");
-  EXPECT_NEAR((segment_normal(up, 0, sim->nodes.x0) - Vec3(0, -1, 0)).norm(), 0.0, 1e-15);
-  EXPECT_NEAR((segment_normal(lo, 0, sim->nodes.x0) - Vec3(0, 1, 0)).norm(), 0.0, 1e-15);
+  const Surface up = build_surface_from_segments(sim->blocks(), sim->nodes(), s.segment_set(1, "t"), "ss1");
+  const Surface lo = build_surface_from_segments(sim->blocks(), sim->nodes(), s.segment_set(2, "t"), "ss2");
+  EXPECT_NEAR((segment_normal(up, 0, sim->nodes().x0) - Vec3(0, -1, 0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((segment_normal(lo, 0, sim->nodes().x0) - Vec3(0, 1, 0)).norm(), 0.0, 1e-15);
   EXPECT_EQ(lo.conn, (std::vector<Index>{12, 15, 14, 13}));
   EXPECT_EQ(up.part, (std::vector<Id>{1}));
   EXPECT_EQ(lo.part, (std::vector<Id>{2}));
   // The part set gives the whole upper block, whose bottom is the segment set's face.
-  const Surface ps = build_surface_from_parts(sim->blocks, sim->nodes, s.part_set(1, "t"), "ps1");
+  const Surface ps = build_surface_from_parts(sim->blocks(), sim->nodes(), s.part_set(1, "t"), "ps1");
   EXPECT_EQ(ps.segment_count(), 6);
 }
 
@@ -104,26 +104,26 @@ TEST(MeshSets, ShellDeckSetsResolve) {
   model::Model m = read_keyword_file(deck_path("shells_all_contacts.k"));
   m.contacts.clear();            // not built yet
   auto sim = build_simulation(m);
-  const MeshSets& s = sim->sets;
+  const MeshSets& s = sim->sets();
   EXPECT_EQ(s.node_sets.at(1).size(), 9u);
   EXPECT_EQ(s.part_sets.at(2), (std::vector<Id>{2, 3}));
   // Its two prescribed motions on node set 1: "pull" (DOF 2, VAD 2) and a velocity (DOF 1, VAD 0).
-  ASSERT_EQ(sim->supports.size(), 2u);
-  EXPECT_EQ(sim->supports[0].name, "pull");
-  EXPECT_EQ(sim->supports[0].supports.at(0).kind, Prescribed::displacement);
-  EXPECT_EQ(sim->supports[1].supports.at(0).kind, Prescribed::velocity);
-  EXPECT_EQ(sim->supports[1].supports.at(0).axis, Axis::x);
-  EXPECT_EQ(sim->supports[1].supports.at(0).nodes.size(), 9u);
+  ASSERT_EQ(sim->supports().size(), 2u);
+  EXPECT_EQ(sim->supports()[0].name, "pull");
+  EXPECT_EQ(sim->supports()[0].supports.at(0).kind, Prescribed::displacement);
+  EXPECT_EQ(sim->supports()[1].supports.at(0).kind, Prescribed::velocity);
+  EXPECT_EQ(sim->supports()[1].supports.at(0).axis, Axis::x);
+  EXPECT_EQ(sim->supports()[1].supports.at(0).nodes.size(), 9u);
   ASSERT_EQ(s.segment_sets.size(), 2u);
   // Segment set 1 (nodes 11 12 13 14) is shell 5 of part 2.
-  const Surface ss1 = build_surface_from_segments(sim->blocks, sim->nodes, s.segment_set(1, "t"), "ss1");
+  const Surface ss1 = build_surface_from_segments(sim->blocks(), sim->nodes(), s.segment_set(1, "t"), "ss1");
   EXPECT_EQ(ss1.kind[0], SegmentKind::shell);
   EXPECT_EQ(ss1.part[0], 2);
   EXPECT_EQ(ss1.thickness[0], 0.1);
   // This seed deck's segment set 2 (nodes 1 2 3 4, three of them on one line) is no element's
   // face, and part set 2 names part 3, which has no elements: both are reported, not skipped.
-  EXPECT_THROW(build_surface_from_segments(sim->blocks, sim->nodes, s.segment_set(2, "t"), "ss2"),
+  EXPECT_THROW(build_surface_from_segments(sim->blocks(), sim->nodes(), s.segment_set(2, "t"), "ss2"),
                InputError);
-  EXPECT_THROW(build_surface_from_parts(sim->blocks, sim->nodes, s.part_set(2, "t"), "ps2"),
+  EXPECT_THROW(build_surface_from_parts(sim->blocks(), sim->nodes(), s.part_set(2, "t"), "ps2"),
                InputError);
 }

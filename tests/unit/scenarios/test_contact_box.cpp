@@ -43,9 +43,9 @@ BoxRun run(Id sboxid) {
   sim->initialize();
   BoxRun r;
   while (sim->step())
-    for (const auto& c : sim->contacts) r.max_force = std::max(r.max_force, c->slave_force().norm());
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i)
-    if (upper.count(sim->nodes.ids[i])) r.lowest_upper_y = std::min(r.lowest_upper_y, sim->nodes.x.get(static_cast<Index>(i))[1]);
+    for (const auto& c : sim->contacts()) r.max_force = std::max(r.max_force, c->slave_force().norm());
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i)
+    if (upper.count(sim->nodes().ids[i])) r.lowest_upper_y = std::min(r.lowest_upper_y, sim->nodes().x.get(static_cast<Index>(i))[1]);
   return r;
 }
 

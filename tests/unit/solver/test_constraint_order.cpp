@@ -15,6 +15,7 @@
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/simulation.hpp"
 #include "test_support/hex_grid.hpp"
+#include "test_support/staged_simulation.hpp"
 
 using namespace slideline;
 
@@ -125,8 +126,7 @@ std::array<Real, 4> bilinear(Real s, Real t) {
 
 /// The upper 1-hex block [0.2, 0.7] x [1, 1.5] x [0.3, 0.8] tied by its bottom nodes to the top
 /// face of the lower 2x1x2 block [0, 1] x [0, 1] x [0, 1].
-struct TiedBlocks {
-  Simulation sim;
+struct TiedBlocks : test_support::StagedSimulation {
   Box lower, upper;
   StandInTie* tie = nullptr;
 
@@ -134,19 +134,19 @@ struct TiedBlocks {
     Mesh mesh;
     lower = mesh.add_box({0, 0, 0}, {1, 1, 1}, 2, 1, 2);
     upper = mesh.add_box({0.2, 1.0, 0.3}, {0.5, 0.5, 0.5}, 1, 1, 1);
-    mesh.fill(sim.nodes);
+    mesh.fill(setup.nodes);
     if (rigid_lower) {
-      sim.blocks.push_back(make_rigid_mass_block(1, kRho, kE, kNu, lower.conn(), {}, 0.0, {101, 102, 103, 104}));
+      setup.blocks.push_back(make_rigid_mass_block(1, kRho, kE, kNu, lower.conn(), {}, 0.0, {101, 102, 103, 104}));
       std::vector<Index> all;
       for (Index i = lower.first; i < upper.first; ++i) all.push_back(i);
-      sim.constraints.push_back(make_rigid_body(1, all, {0, 0, 0, 0, 0, 0}));
+      setup.constraints.push_back(make_rigid_body(1, all, {0, 0, 0, 0, 0, 0}));
     } else {
-      sim.blocks.push_back(elastic_block(1, lower));
+      setup.blocks.push_back(elastic_block(1, lower));
     }
-    sim.blocks.push_back(elastic_block(2, upper));
+    setup.blocks.push_back(elastic_block(2, upper));
     std::vector<StandInTie::Link> links;
     for (Index s : upper.layer(0)) {
-      const Vec3 x = sim.nodes.x.get(s);
+      const Vec3 x = setup.nodes.x.get(s);
       // The master segment of the lower top face (cells of 0.5) under the slave.
       const int i = std::min(1, static_cast<int>(x[0] / 0.5)), k = std::min(1, static_cast<int>(x[2] / 0.5));
       const Real u = (x[0] - 0.5 * i) / 0.5, w = (x[2] - 0.5 * k) / 0.5;
@@ -157,10 +157,10 @@ struct TiedBlocks {
     }
     auto t = std::make_unique<StandInTie>(links);
     tie = t.get();
-    sim.contacts.add(std::move(t));
-    sim.controls.end_time = 0.4;
-    sim.controls.dt_scale = 0.8;
-    sim.controls.dt_max = 2e-4;  // fine steps: the trapezoidal balance error is O(dt^2)
+    setup.contacts.add(std::move(t));
+    setup.controls.end_time = 0.4;
+    setup.controls.dt_scale = 0.8;
+    setup.controls.dt_max = 2e-4;  // fine steps: the trapezoidal balance error is O(dt^2)
   }
   std::vector<Index> upper_nodes() const {
     std::vector<Index> out;
@@ -205,27 +205,27 @@ Real run_driven_tie(bool with_drive, Real& worst_energy, Vec3& slave_displacemen
   }
   s.curve = LoadCurve(pts, "drive");
   drive.supports.push_back(s);
-  m.sim.supports.push_back(fixed_group("bottom", m.lower.layer(0), {1, 1, 1}));
-  if (with_drive) m.sim.supports.push_back(drive);
+  m.setup.supports.push_back(fixed_group("bottom", m.lower.layer(0), {1, 1, 1}));
+  if (with_drive) m.setup.supports.push_back(drive);
   MassDamping d1;
   d1.alpha = 2.0;
   for (Index i = m.lower.first; i < m.upper.first; ++i) d1.nodes.push_back(i);
   MassDamping d2;
   d2.alpha = 40.0;
   d2.nodes = m.upper_nodes();
-  m.sim.damping = {d1, d2};
-  m.sim.body_loads.push_back(body_load(Axis::y, 50.0, 2, 0.05));
-  m.sim.body_loads.push_back(body_load(Axis::z, -20.0, 2, 0.05));
-  m.sim.initialize();
+  m.setup.damping = {d1, d2};
+  m.setup.body_loads.push_back(body_load(Axis::y, 50.0, 2, 0.05));
+  m.setup.body_loads.push_back(body_load(Axis::z, -20.0, 2, 0.05));
+  m.start();
   Real worst = 0.0;
   worst_energy = 0.0;
-  while (m.sim.step()) {
-    worst = std::max(worst, m.tie->drift(m.sim.nodes));
+  while (m.sim().step()) {
+    worst = std::max(worst, m.tie->drift(m.sim().nodes()));
     // After the load ramp (before it the energies are round-off and their ratio means nothing).
-    if (m.sim.time() > 0.05)
-      worst_energy = std::max(worst_energy, std::abs(m.sim.energy().relative_balance_error()));
+    if (m.sim().time() > 0.05)
+      worst_energy = std::max(worst_energy, std::abs(m.sim().energy().relative_balance_error()));
   }
-  slave_displacement = m.sim.nodes.displacement(m.upper.layer(0)[0]);
+  slave_displacement = m.sim().nodes().displacement(m.upper.layer(0)[0]);
   return worst;
 }
 }  // namespace
@@ -253,46 +253,46 @@ TEST(ConstraintOrder, SupportReactionCarriesTheLoadOfTiedSlaves) {
   TiedBlocks m;
   // The master face itself is supported in y: the slave block's weight reaches that support only
   // through the tie.
-  m.sim.supports.push_back(fixed_group("bottom", m.lower.layer(0), {1, 1, 1}));
-  m.sim.supports.push_back(fixed_group("top", m.lower.layer(1), {0, 1, 0}));
+  m.setup.supports.push_back(fixed_group("bottom", m.lower.layer(0), {1, 1, 1}));
+  m.setup.supports.push_back(fixed_group("top", m.lower.layer(1), {0, 1, 0}));
   MassDamping d;
   d.alpha = 60.0;
-  m.sim.damping = {d};
+  m.setup.damping = {d};
   const Real g = 40.0;
-  m.sim.body_loads.push_back(body_load(Axis::y, -g, 2, 0.05));
-  m.sim.initialize();
-  while (m.sim.step()) {
+  m.setup.body_loads.push_back(body_load(Axis::y, -g, 2, 0.05));
+  m.start();
+  while (m.sim().step()) {
   }
   const Real load = kRho * 0.125 * g;  // mass of the upper block x acceleration
-  const Vec3 r_top = m.sim.supports[1].reaction;
+  const Vec3 r_top = m.sim().supports()[1].reaction;
   EXPECT_NEAR(r_top[1], -load, 1e-3 * load);
-  EXPECT_NEAR(m.sim.supports[0].reaction[1], 0.0, 1e-3 * load);
-  EXPECT_LT(m.tie->drift(m.sim.nodes), 1e-13);
+  EXPECT_NEAR(m.sim().supports()[0].reaction[1], 0.0, 1e-3 * load);
+  EXPECT_LT(m.tie->drift(m.sim().nodes()), 1e-13);
 }
 
 TEST(ConstraintOrder, TiedSlaveFollowsARigidMaster) {
   TiedBlocks m(/*rigid_lower=*/true);
   // The rigid lower body spins and translates freely; the slave block is tied to it.
   for (Index i = m.lower.first; i < m.upper.first; ++i)
-    m.sim.nodes.v.set(i, Vec3(0.3, 0.0, 0.0) + Vec3(0.0, 0.5, 0.0).cross(m.sim.nodes.x.get(i) - Vec3(0.5, 0.5, 0.5)));
+    m.setup.nodes.v.set(i, Vec3(0.3, 0.0, 0.0) + Vec3(0.0, 0.5, 0.0).cross(m.setup.nodes.x.get(i) - Vec3(0.5, 0.5, 0.5)));
   for (Index i : m.upper_nodes())
-    m.sim.nodes.v.set(i, Vec3(0.3, 0.0, 0.0) + Vec3(0.0, 0.5, 0.0).cross(m.sim.nodes.x.get(i) - Vec3(0.5, 0.5, 0.5)));
-  m.sim.body_loads.push_back(body_load(Axis::y, 10.0, 2, 0.0));
-  m.sim.controls.end_time = 0.2;
-  m.sim.initialize();
+    m.setup.nodes.v.set(i, Vec3(0.3, 0.0, 0.0) + Vec3(0.0, 0.5, 0.0).cross(m.setup.nodes.x.get(i) - Vec3(0.5, 0.5, 0.5)));
+  m.setup.body_loads.push_back(body_load(Axis::y, 10.0, 2, 0.0));
+  m.setup.controls.end_time = 0.2;
+  m.start();
   auto momentum = [&] {
     Vec3 p = Vec3::Zero();
-    for (std::size_t i = 0; i < m.sim.nodes.size(); ++i)
-      p += m.sim.nodes.mass[i] * m.sim.nodes.v.get(static_cast<Index>(i));
+    for (std::size_t i = 0; i < m.sim().nodes().size(); ++i)
+      p += m.sim().nodes().mass[i] * m.sim().nodes().v.get(static_cast<Index>(i));
     return p;
   };
   const Vec3 p0 = momentum();
   Real worst = 0.0;
-  while (m.sim.step()) worst = std::max(worst, m.tie->drift(m.sim.nodes));
+  while (m.sim().step()) worst = std::max(worst, m.tie->drift(m.sim().nodes()));
   EXPECT_LT(worst, 1e-12);
   // The rigid body carries the tied block's mass and load: the momentum of body + block grows by
   // the impulse of the load alone (v is at t + dt/2 after the last update).
-  const Real t = m.sim.time() + 0.5 * m.sim.dt();
+  const Real t = m.sim().time() + 0.5 * m.sim().dt();
   const Real impulse = kRho * 0.125 * 10.0 * t;
   const Vec3 dp = momentum() - p0;
   EXPECT_NEAR(dp[1], impulse, 1e-6 * impulse);
@@ -347,26 +347,25 @@ class StandInLagrange final : public ContactAlgorithm, public ContactConstraint 
   Vec3 slave_ = Vec3::Zero();
 };
 
-struct BlockOnRigidPlate {
-  Simulation sim;
+struct BlockOnRigidPlate : test_support::StagedSimulation {
   Box plate, block;
   RigidBody* body = nullptr;
   explicit BlockOnRigidPlate(std::array<int, 6> plate_fixed) {
     Mesh mesh;
     plate = mesh.add_box({-0.5, -0.5, -0.5}, {2, 0.5, 2}, 1, 1, 1);
     block = mesh.add_box({0, 0, 0}, {1, 1, 1}, 2, 2, 2);
-    mesh.fill(sim.nodes);
-    sim.blocks.push_back(make_rigid_mass_block(1, kRho, kE, kNu, plate.conn(), {}, 0.0, {1}));
+    mesh.fill(setup.nodes);
+    setup.blocks.push_back(make_rigid_mass_block(1, kRho, kE, kNu, plate.conn(), {}, 0.0, {1}));
     std::vector<Index> pn;
     for (Index i = 0; i < block.first; ++i) pn.push_back(i);
     auto rb = make_rigid_body(1, pn, plate_fixed);
     body = static_cast<RigidBody*>(rb.get());
-    sim.constraints.push_back(std::move(rb));
-    sim.blocks.push_back(elastic_block(2, block));
-    sim.contacts.add(std::make_unique<StandInLagrange>(block.layer(0), plate.layer(1), plate.node(0, 1, 0)));
-    sim.controls.end_time = 0.3;
-    sim.controls.dt_scale = 0.8;
-    sim.controls.dt_max = 1e-4;  // fine steps: the trapezoidal balance error shrinks with dt
+    setup.constraints.push_back(std::move(rb));
+    setup.blocks.push_back(elastic_block(2, block));
+    setup.contacts.add(std::make_unique<StandInLagrange>(block.layer(0), plate.layer(1), plate.node(0, 1, 0)));
+    setup.controls.end_time = 0.3;
+    setup.controls.dt_scale = 0.8;
+    setup.controls.dt_max = 1e-4;  // fine steps: the trapezoidal balance error shrinks with dt
   }
 };
 
@@ -376,41 +375,41 @@ TEST(ConstraintOrder, LagrangeContactWithAFixedRigidMaster) {
   BlockOnRigidPlate m({1, 1, 1, 1, 1, 1});
   MassDamping d;
   d.alpha = 40.0;
-  m.sim.damping = {d};
+  m.setup.damping = {d};
   const Real g = 30.0;
-  m.sim.body_loads.push_back(body_load(Axis::y, -g, 2, 0.05));
-  m.sim.initialize();
+  m.setup.body_loads.push_back(body_load(Axis::y, -g, 2, 0.05));
+  m.start();
   Real lowest = 0.0, worst_energy = 0.0;
-  while (m.sim.step()) {
-    for (Index s : m.block.layer(0)) lowest = std::min(lowest, m.sim.nodes.x.y[s]);
-    if (m.sim.time() > 0.05)
-      worst_energy = std::max(worst_energy, std::abs(m.sim.energy().relative_balance_error()));
+  while (m.sim().step()) {
+    for (Index s : m.block.layer(0)) lowest = std::min(lowest, m.sim().nodes().x.y[s]);
+    if (m.sim().time() > 0.05)
+      worst_energy = std::max(worst_energy, std::abs(m.sim().energy().relative_balance_error()));
   }
   const Real load = kRho * 1.0 * g;
   EXPECT_GT(lowest, -1e-12);                                       // no interpenetration
   EXPECT_NEAR(m.body->reaction_force()[1], -load, 2e-3 * load);    // the plate's support carries it
-  EXPECT_NEAR(m.sim.contacts[0].slave_force()[1], load, 2e-3 * load);
+  EXPECT_NEAR(m.sim().contacts()[0].slave_force()[1], load, 2e-3 * load);
   std::printf("Lagrange on a fixed rigid master: max relative balance error %.3e, energy in contact %.3e\n",
-              worst_energy, m.sim.energy().contact);
+              worst_energy, m.sim().energy().contact);
   EXPECT_LT(worst_energy, 1e-3);
 }
 
 TEST(ConstraintOrder, LagrangeContactPushesAFreeRigidMaster) {
   BlockOnRigidPlate m({0, 0, 0, 0, 0, 0});
   const Real g = 30.0;
-  m.sim.body_loads.push_back(body_load(Axis::y, -g, 2, 0.0));
-  m.sim.initialize();
+  m.setup.body_loads.push_back(body_load(Axis::y, -g, 2, 0.0));
+  m.start();
   Real lowest = 0.0;
-  while (m.sim.step()) {
-    const Real plane = m.sim.nodes.x.y[m.plate.node(0, 1, 0)];
-    for (Index s : m.block.layer(0)) lowest = std::min(lowest, m.sim.nodes.x.y[s] - plane);
+  while (m.sim().step()) {
+    const Real plane = m.sim().nodes().x.y[m.plate.node(0, 1, 0)];
+    for (Index s : m.block.layer(0)) lowest = std::min(lowest, m.sim().nodes().x.y[s] - plane);
   }
   // Momentum: only the body load acts on the pair, so P_y = impulse of the load.
-  const Real t = m.sim.time() + 0.5 * m.sim.dt();  // v is at t + dt/2 after the last update
+  const Real t = m.sim().time() + 0.5 * m.sim().dt();  // v is at t + dt/2 after the last update
   const Real impulse = -kRho * g * t;
   Real p = 0.0;
-  for (std::size_t i = 0; i < m.sim.nodes.size(); ++i)
-    p += m.sim.nodes.mass[i] * m.sim.nodes.v.y[static_cast<Index>(i)];
+  for (std::size_t i = 0; i < m.sim().nodes().size(); ++i)
+    p += m.sim().nodes().mass[i] * m.sim().nodes().v.y[static_cast<Index>(i)];
   EXPECT_NEAR(p, impulse, 1e-6 * std::abs(impulse));
   EXPECT_LT(m.body->velocity()[1], -0.1);  // the plate was pushed down
   EXPECT_GT(lowest, -1e-4);                // rigid masters move within the step: a small lag
@@ -455,22 +454,23 @@ class StandInPenalty final : public ContactAlgorithm, public ContactForces {
 }  // namespace
 
 TEST(EnergyLedger, PenaltySpringClosesTheBalance) {
-  Simulation sim;
+  SimulationSetup setup;
   Mesh mesh;
   const Box lower = mesh.add_box({0, 0, 0}, {1, 1, 1}, 1, 1, 1);
   const Box upper = mesh.add_box({0, 1.01, 0}, {1, 1, 1}, 1, 1, 1);
-  mesh.fill(sim.nodes);
-  sim.blocks.push_back(elastic_block(1, lower));
-  sim.blocks.push_back(elastic_block(2, upper));
-  sim.supports.push_back(fixed_group("bottom", lower.layer(0), {1, 1, 1}));
+  mesh.fill(setup.nodes);
+  setup.blocks.push_back(elastic_block(1, lower));
+  setup.blocks.push_back(elastic_block(2, upper));
+  setup.supports.push_back(fixed_group("bottom", lower.layer(0), {1, 1, 1}));
   std::vector<std::pair<Index, Index>> pairs;
   const auto top = lower.layer(1), bottom = upper.layer(0);
   for (std::size_t k = 0; k < top.size(); ++k) pairs.emplace_back(bottom[k], top[k]);
-  sim.contacts.add(std::make_unique<StandInPenalty>(pairs, 2e4));
-  for (Index i = upper.first; i < upper.first + 8; ++i) sim.nodes.v.set(i, Vec3(0.0, -2.0, 0.0));
-  sim.controls.end_time = 0.15;
-  sim.controls.dt_scale = 0.5;
-  sim.controls.dt_max = 1e-5;
+  setup.contacts.add(std::make_unique<StandInPenalty>(pairs, 2e4));
+  for (Index i = upper.first; i < upper.first + 8; ++i) setup.nodes.v.set(i, Vec3(0.0, -2.0, 0.0));
+  setup.controls.end_time = 0.15;
+  setup.controls.dt_scale = 0.5;
+  setup.controls.dt_max = 1e-5;
+  Simulation sim(std::move(setup));
   sim.initialize();
   ASSERT_TRUE(sim.step());
   const Real k0 = sim.energy().kinetic0;
@@ -479,7 +479,7 @@ TEST(EnergyLedger, PenaltySpringClosesTheBalance) {
   while (sim.step()) {
     worst = std::max(worst, std::abs(sim.energy().relative_balance_error()));
     max_contact = std::max(max_contact, sim.energy().contact);
-    const Vec3 fs = sim.contacts[0].slave_force(), fm = sim.contacts[0].master_force();
+    const Vec3 fs = sim.contacts()[0].slave_force(), fm = sim.contacts()[0].master_force();
     EXPECT_EQ((fs + fm).norm(), 0.0);
     min_slave_force = std::min(min_slave_force, fs[1]);
   }

@@ -41,8 +41,9 @@ std::unique_ptr<Run> run(const model::Model& m, Real end, Real energy_limit = -1
   BuildOptions o;
   o.end_time = end;
   auto r = std::make_unique<Run>();
-  r->sim = build_simulation(m, o);
-  if (energy_limit >= 0.0) r->sim->controls.energy_error_limit = energy_limit;
+  SimulationSetup setup = build_setup(m, o);
+  if (energy_limit >= 0.0) setup.controls.energy_error_limit = energy_limit;
+  r->sim = std::make_unique<Simulation>(std::move(setup));
   r->sim->run({&r->history});
   return r;
 }
@@ -63,11 +64,11 @@ TEST_P(ContactBirthDeath, BornAfterTheEndRunsAsWithoutTheContact) {
   const Real end = 0.03;
   const auto a = run(late, end), b = run(none, end);
   ASSERT_EQ(a->sim->cycle(), b->sim->cycle());
-  const NodalFields &xa = a->sim->nodes, &xb = b->sim->nodes;
+  const NodalFields &xa = a->sim->nodes(), &xb = b->sim->nodes();
   ASSERT_EQ(xa.size(), xb.size());
   for (std::size_t i = 0; i < xa.size(); ++i)
     for (int c = 0; c < 3; ++c) ASSERT_EQ(xa.x[c][i], xb.x[c][i]) << "node " << xa.ids[i] << " component " << c;
-  for (std::size_t k = 0; k < a->sim->contacts.size(); ++k) EXPECT_FALSE(a->sim->contacts.active(k));
+  for (std::size_t k = 0; k < a->sim->contacts().size(); ++k) EXPECT_FALSE(a->sim->contacts().active(k));
   for (const auto& pair : p.pairings)
     for (Real f : a->history.series("interfaces/" + pair.contact_title + "/slave_force", 1)) ASSERT_EQ(f, 0.0);
 }

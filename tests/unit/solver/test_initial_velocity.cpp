@@ -66,7 +66,7 @@ std::string refusal(const std::string& deck) {
 
 Vec3 momentum(const Simulation& s) {
   Vec3 p = Vec3::Zero();
-  for (std::size_t i = 0; i < s.nodes.size(); ++i) p += s.nodes.mass[i] * s.nodes.v.get(static_cast<Index>(i));
+  for (std::size_t i = 0; i < s.nodes().size(); ++i) p += s.nodes().mass[i] * s.nodes().v.get(static_cast<Index>(i));
   return p;
 }
 
@@ -81,9 +81,9 @@ TEST(InitialVelocity, FreeBlockTranslatesUniformlyWithConstantKineticEnergy) {
   }
   ASSERT_NEAR(sim->time(), t_end, 1e-12);
   const Real mass = kRho * 1.0;
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) {
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) {
     const Index q = static_cast<Index>(i);
-    EXPECT_LT((sim->nodes.x.get(q) - sim->nodes.x0.get(q) - v * t_end).norm(), 1e-12) << "node " << i;
+    EXPECT_LT((sim->nodes().x.get(q) - sim->nodes().x0.get(q) - v * t_end).norm(), 1e-12) << "node " << i;
   }
   const auto& e = sim->energy();
   EXPECT_NEAR(e.kinetic0, 0.5 * mass * v.squaredNorm(), 1e-12);
@@ -95,8 +95,8 @@ TEST(InitialVelocity, FreeBlockTranslatesUniformlyWithConstantKineticEnergy) {
 TEST(InitialVelocity, GenerationWithIdZeroMovesEveryNode) {
   auto sim = build(header(0.1) + part(1, 1) + block(1, {0, 0, 0}, {1, 1, 1}, 1, 0, 0) + part(2, 1) +
                    block(2, {3, 0, 0}, {1, 1, 1}, 1, 10, 10) + "*INITIAL_VELOCITY_GENERATION\n0,0,0,1,2,3\n\n*END\n");
-  ASSERT_EQ(sim->nodes.size(), 16u);
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) EXPECT_EQ(sim->nodes.v.get(static_cast<Index>(i)), Vec3(1, 2, 3));
+  ASSERT_EQ(sim->nodes().size(), 16u);
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) EXPECT_EQ(sim->nodes().v.get(static_cast<Index>(i)), Vec3(1, 2, 3));
 }
 
 TEST(InitialVelocity, ExemptedNodesBoxAndNodeCards) {
@@ -124,8 +124,8 @@ TEST(InitialVelocity, ExemptedNodesBoxAndNodeCards) {
                          "*INITIAL_VELOCITY_NODE\n17,0,0,-3\n*END\n";
   auto sim = build(ok);
   const auto v = [&](Id nid) {
-    for (std::size_t i = 0; i < sim->nodes.size(); ++i)
-      if (sim->nodes.ids[i] == nid) return sim->nodes.v.get(static_cast<Index>(i));
+    for (std::size_t i = 0; i < sim->nodes().size(); ++i)
+      if (sim->nodes().ids[i] == nid) return sim->nodes().v.get(static_cast<Index>(i));
     return Vec3(NAN, NAN, NAN);
   };
   EXPECT_EQ(v(1), Vec3(-1, 0, 0));
@@ -149,17 +149,17 @@ TEST(InitialVelocity, GenerationGivesOmegaCrossR) {
   // v(0) = V + omega n x (x - xc) at every node (STYP 3, elastic).
   auto sim = build(spinning(1, 0.1, "7,3"));
   const Vec3 w = 3.0 * Vec3(0, 0.6, 0.8), v0(0.1, -0.2, 0.3), xc(0.5, 0.5, 0);
-  ASSERT_EQ(sim->nodes.size(), 27u);
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) {
+  ASSERT_EQ(sim->nodes().size(), 27u);
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) {
     const Index q = static_cast<Index>(i);
-    EXPECT_LT((sim->nodes.v.get(q) - v0 - w.cross(sim->nodes.x0.get(q) - xc)).norm(), 1e-14) << i;
+    EXPECT_LT((sim->nodes().v.get(q) - v0 - w.cross(sim->nodes().x0.get(q) - xc)).norm(), 1e-14) << i;
   }
   // The first cycle starts from v(0) and books its kinetic energy.
   sim->step();
   Real k0 = 0.0;
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) {
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) {
     const Index q = static_cast<Index>(i);
-    k0 += 0.5 * sim->nodes.mass[i] * (v0 + w.cross(sim->nodes.x0.get(q) - xc)).squaredNorm();
+    k0 += 0.5 * sim->nodes().mass[i] * (v0 + w.cross(sim->nodes().x0.get(q) - xc)).squaredNorm();
   }
   EXPECT_NEAR(sim->energy().kinetic0, k0, 1e-13 * k0);
 }
@@ -169,7 +169,7 @@ TEST(InitialVelocity, RigidPartRotatesKeepingItsRadius) {
   // V + omega x (c - xc), and every node keeps its distance from the (moving) axis.
   const Real t_end = 0.5;  // 1.5 rad of rotation
   auto sim = build(spinning(2, t_end, "1,2"));
-  auto* body = dynamic_cast<RigidBody*>(sim->constraints.at(0).get());
+  auto* body = dynamic_cast<RigidBody*>(sim->constraints().at(0).get());
   ASSERT_NE(body, nullptr);
   sim->initialize();
   const Vec3 n(0, 0.6, 0.8), w = 3.0 * n, v0(0.1, -0.2, 0.3), xc(0.5, 0.5, 0);
@@ -178,10 +178,10 @@ TEST(InitialVelocity, RigidPartRotatesKeepingItsRadius) {
   EXPECT_LT((body->angular_velocity() - w).norm(), 1e-12);
   EXPECT_LT((body->velocity() - vc).norm(), 1e-12);
   const auto radius = [&](Index q, const Vec3& axis_point) {
-    const Vec3 r = sim->nodes.x.get(q) - axis_point;
+    const Vec3 r = sim->nodes().x.get(q) - axis_point;
     return (r - r.dot(n) * n).norm();
   };
-  std::vector<Real> r0(sim->nodes.size());
+  std::vector<Real> r0(sim->nodes().size());
   for (std::size_t i = 0; i < r0.size(); ++i) r0[i] = radius(static_cast<Index>(i), c0);
   while (sim->step()) {
   }
@@ -231,9 +231,9 @@ TEST(InitialVelocity, SupportedComponentsStartAtRest) {
   auto sim = build(header(0.1) + part(1, 1) + block(1, {0, 0, 0}, {1, 1, 1}, 1, 0, 0) +
                    "*SET_NODE_LIST\n1\n1,2,3,4\n*BOUNDARY_SPC_SET\n1,0,0,1,0\n"
                    "*INITIAL_VELOCITY\n0\n1,2,3\n*END\n");
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) {
-    const bool fixed = sim->nodes.ids[i] <= 4;
-    EXPECT_EQ(sim->nodes.v.get(static_cast<Index>(i)), Vec3(1, fixed ? 0 : 2, 3)) << i;
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) {
+    const bool fixed = sim->nodes().ids[i] <= 4;
+    EXPECT_EQ(sim->nodes().v.get(static_cast<Index>(i)), Vec3(1, fixed ? 0 : 2, 3)) << i;
   }
 }
 
@@ -250,23 +250,23 @@ std::string plate(Id mid, Real t_end) {
 TEST(InitialVelocity, ShellNodesTakeRotationalVelocities) {
   // VXR..VZR set the rotational dofs of shell nodes, and their rotary kinetic energy is booked.
   auto sim = build(plate(1, 0.01) + "*INITIAL_VELOCITY\n0\n0,0,1,2,-1,0\n*END\n");
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) {
-    EXPECT_EQ(sim->nodes.v.get(static_cast<Index>(i)), Vec3(0, 0, 1));
-    EXPECT_EQ(sim->nodes.omega.get(static_cast<Index>(i)), Vec3(2, -1, 0));
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) {
+    EXPECT_EQ(sim->nodes().v.get(static_cast<Index>(i)), Vec3(0, 0, 1));
+    EXPECT_EQ(sim->nodes().omega.get(static_cast<Index>(i)), Vec3(2, -1, 0));
   }
   sim->step();
   Real k0 = 0.0;
-  for (std::size_t i = 0; i < sim->nodes.size(); ++i) k0 += 0.5 * sim->nodes.mass[i] + 0.5 * sim->nodes.rot_inertia[i] * 5.0;
-  EXPECT_GT(sim->nodes.rot_inertia[0], 0.0);
+  for (std::size_t i = 0; i < sim->nodes().size(); ++i) k0 += 0.5 * sim->nodes().mass[i] + 0.5 * sim->nodes().rot_inertia[i] * 5.0;
+  EXPECT_GT(sim->nodes().rot_inertia[0], 0.0);
   EXPECT_NEAR(sim->energy().kinetic0, k0, 1e-14 * k0);
 
   // A rigid plate spun by a generation: its shell nodes' omega is the spin, the body takes it.
   auto rigid = build(plate(2, 0.01) + "*INITIAL_VELOCITY_GENERATION\n1,2,4.0\n0.5,0.5,0,1,1,0\n*END\n");
   const Vec3 w = 4.0 * Vec3(1, 1, 0).normalized();
-  for (std::size_t i = 0; i < rigid->nodes.size(); ++i)
-    EXPECT_LT((rigid->nodes.omega.get(static_cast<Index>(i)) - w).norm(), 1e-15);
+  for (std::size_t i = 0; i < rigid->nodes().size(); ++i)
+    EXPECT_LT((rigid->nodes().omega.get(static_cast<Index>(i)) - w).norm(), 1e-15);
   rigid->initialize();
-  const auto* body = dynamic_cast<const RigidBody*>(rigid->constraints.at(0).get());
+  const auto* body = dynamic_cast<const RigidBody*>(rigid->constraints().at(0).get());
   ASSERT_NE(body, nullptr);
   EXPECT_LT((body->angular_velocity() - w).norm(), 1e-12);
   EXPECT_LT(body->velocity().norm(), 1e-12);  // the axis passes through the centre of mass
@@ -304,10 +304,10 @@ TEST(InitialVelocity, ImpactThroughContactConservesMomentum) {
     EXPECT_LT(p_err, 1e-9 * p0);
     Vec3 p2 = Vec3::Zero();
     Real x1max = -1e9, x2min = 1e9;
-    for (std::size_t i = 0; i < sim->nodes.size(); ++i) {
-      const bool target = sim->nodes.ids[i] > 100;
-      if (target) p2 += sim->nodes.mass[i] * sim->nodes.v.get(static_cast<Index>(i));
-      (target ? x2min : x1max) = target ? std::min(x2min, sim->nodes.x.x[i]) : std::max(x1max, sim->nodes.x.x[i]);
+    for (std::size_t i = 0; i < sim->nodes().size(); ++i) {
+      const bool target = sim->nodes().ids[i] > 100;
+      if (target) p2 += sim->nodes().mass[i] * sim->nodes().v.get(static_cast<Index>(i));
+      (target ? x2min : x1max) = target ? std::min(x2min, sim->nodes().x.x[i]) : std::max(x1max, sim->nodes().x.x[i]);
     }
     EXPECT_GT(x2min, x1max) << "the blocks have separated";
     EXPECT_GE(p2[0], m2 / (m1 + m2) * p0);

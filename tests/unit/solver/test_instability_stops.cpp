@@ -16,16 +16,16 @@ using namespace slideline;
 namespace {
 
 /// One elastic hexahedron [0,1]^3 (ids 1-8, element 7 of part 3), bottom face (z = 0) fixed.
-void unit_hex(Simulation& sim) {
-  sim.nodes.resize(8);
+void unit_hex(SimulationSetup& setup) {
+  setup.nodes.resize(8);
   const Real xs[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   for (Index i = 0; i < 8; ++i) {
-    sim.nodes.ids[i] = i + 1;
-    sim.nodes.x0.set(i, Vec3(xs[i][0], xs[i][1], xs[i][2]));
-    sim.nodes.x.set(i, Vec3(xs[i][0], xs[i][1], xs[i][2]));
+    setup.nodes.ids[i] = i + 1;
+    setup.nodes.x0.set(i, Vec3(xs[i][0], xs[i][1], xs[i][2]));
+    setup.nodes.x.set(i, Vec3(xs[i][0], xs[i][1], xs[i][2]));
   }
   HexHourglass hg;
-  sim.blocks.push_back(make_hex_block(3, ElasticSolid(1.0, 1000.0, 0.3), hg, BulkViscosity{1.5, 0.06},
+  setup.blocks.push_back(make_hex_block(3, ElasticSolid(1.0, 1000.0, 0.3), hg, BulkViscosity{1.5, 0.06},
                                       {0, 1, 2, 3, 4, 5, 6, 7}, {7}));
   SupportGroup g;
   g.name = "bottom";
@@ -35,9 +35,9 @@ void unit_hex(Simulation& sim) {
     s.nodes = {0, 1, 2, 3};
     g.supports.push_back(s);
   }
-  sim.supports.push_back(g);
-  sim.controls.end_time = 1.0;
-  sim.controls.dt_scale = 0.5;
+  setup.supports.push_back(g);
+  setup.controls.end_time = 1.0;
+  setup.controls.dt_scale = 0.5;
 }
 
 std::string run_until_error(Simulation& sim) {
@@ -82,12 +82,13 @@ class ShrinkingStep final : public ContactAlgorithm, public ContactForces {
 }  // namespace
 
 TEST(InstabilityStops, NonFiniteStateNamesTheNodeAndElement) {
-  Simulation sim;
-  unit_hex(sim);
+  SimulationSetup setup;
+  unit_hex(setup);
   BodyLoad b;
   b.axis = Axis::z;
   b.scale = std::numeric_limits<Real>::quiet_NaN();
-  sim.body_loads.push_back(b);
+  setup.body_loads.push_back(b);
+  Simulation sim(std::move(setup));
   const std::string msg = run_until_error(sim);
   EXPECT_NE(msg.find("non-finite"), std::string::npos) << msg;
   EXPECT_NE(msg.find("node 1"), std::string::npos) << msg;  // the first node (body loads act on all)
@@ -96,10 +97,11 @@ TEST(InstabilityStops, NonFiniteStateNamesTheNodeAndElement) {
 }
 
 TEST(InstabilityStops, EnergyBalanceBeyondTheLimitStopsTheRun) {
-  Simulation sim;
-  unit_hex(sim);
-  sim.constraints.push_back(std::make_unique<HiddenPush>());
-  sim.controls.end_time = 10.0;  // several hundred cycles: the check starts at cycle 100
+  SimulationSetup setup;
+  unit_hex(setup);
+  setup.constraints.push_back(std::make_unique<HiddenPush>());
+  setup.controls.end_time = 10.0;  // several hundred cycles: the check starts at cycle 100
+  Simulation sim(std::move(setup));
   const std::string msg = run_until_error(sim);
   EXPECT_NE(msg.find("energy balance error"), std::string::npos) << msg;
   EXPECT_NE(msg.find("exceeds the limit of 5.0"), std::string::npos) << msg;
@@ -110,19 +112,21 @@ TEST(InstabilityStops, EnergyBalanceBeyondTheLimitStopsTheRun) {
 }
 
 TEST(InstabilityStops, TheSameRunWithTheCheckOffRunsToTheEnd) {
-  Simulation sim;
-  unit_hex(sim);
-  sim.constraints.push_back(std::make_unique<HiddenPush>());
-  sim.controls.energy_error_limit = 0.0;
-  sim.controls.end_time = 10.0;
+  SimulationSetup setup;
+  unit_hex(setup);
+  setup.constraints.push_back(std::make_unique<HiddenPush>());
+  setup.controls.energy_error_limit = 0.0;
+  setup.controls.end_time = 10.0;
+  Simulation sim(std::move(setup));
   EXPECT_EQ(run_until_error(sim), "");
   EXPECT_GT(sim.energy_error_fraction(), 0.05);  // it did blow up: the limit was what stopped it
 }
 
 TEST(InstabilityStops, CollapsingStepStopsAndNamesWhatSetsIt) {
-  Simulation sim;
-  unit_hex(sim);
-  sim.contacts.add(std::make_unique<ShrinkingStep>());
+  SimulationSetup setup;
+  unit_hex(setup);
+  setup.contacts.add(std::make_unique<ShrinkingStep>());
+  Simulation sim(std::move(setup));
   const std::string msg = run_until_error(sim);
   EXPECT_NE(msg.find("fell below 0.0001"), std::string::npos) << msg;
   EXPECT_NE(msg.find("contact interface '"), std::string::npos) << msg;
@@ -130,8 +134,8 @@ TEST(InstabilityStops, CollapsingStepStopsAndNamesWhatSetsIt) {
 }
 
 TEST(InstabilityStops, CrushedElementStopsTheRunAndIsNamed) {
-  Simulation sim;
-  unit_hex(sim);
+  SimulationSetup setup;
+  unit_hex(setup);
   // The top face driven down through the whole height in unit time: the element's step shrinks
   // geometrically with its height until it falls below DTMIN x the first step.
   SupportGroup g;
@@ -142,7 +146,8 @@ TEST(InstabilityStops, CrushedElementStopsTheRunAndIsNamed) {
   s.has_curve = true;
   s.curve = LoadCurve({{0.0, 0.0}, {1.0, -1.0}});
   g.supports.push_back(s);
-  sim.supports.push_back(g);
+  setup.supports.push_back(g);
+  Simulation sim(std::move(setup));
   const std::string msg = run_until_error(sim);
   EXPECT_NE(msg.find("fell below 0.0001"), std::string::npos) << msg;
   EXPECT_NE(msg.find("hex8 element 7 of part 3"), std::string::npos) << msg;
@@ -150,8 +155,8 @@ TEST(InstabilityStops, CrushedElementStopsTheRunAndIsNamed) {
 }
 
 TEST(SupportWindow, PrescribedMotionActsBetweenBirthAndDeath) {
-  Simulation sim;
-  unit_hex(sim);
+  SimulationSetup setup;
+  unit_hex(setup);
   SupportGroup g;
   g.name = "push";
   Support s;
@@ -163,19 +168,20 @@ TEST(SupportWindow, PrescribedMotionActsBetweenBirthAndDeath) {
   s.birth = 0.1;
   s.death = 0.2;
   g.supports.push_back(s);
-  sim.supports.push_back(g);
-  sim.controls.end_time = 0.3;
-  sim.controls.history_interval = 0.01;
+  setup.supports.push_back(g);
+  setup.controls.end_time = 0.3;
+  setup.controls.history_interval = 0.01;
   MassDamping d;
   d.alpha = 20.0;
-  sim.damping = {d};
+  setup.damping = {d};
+  Simulation sim(std::move(setup));
   sim.initialize();
   Real max_before = 0.0, max_after_reaction = 0.0;
   Real u_inside = 0.0;
   while (sim.step()) {
     const Real t = sim.time();
-    const Real u = sim.nodes.displacement(6)[0];
-    const Real r = sim.supports[1].reaction.norm();
+    const Real u = sim.nodes().displacement(6)[0];
+    const Real r = sim.supports()[1].reaction.norm();
     if (t < 0.1 - 1e-9) max_before = std::max(max_before, std::abs(u) + r);
     if (std::abs(t - 0.15) < 1e-9) u_inside = u;
     if (t > 0.2 + 0.01) max_after_reaction = std::max(max_after_reaction, r);
@@ -183,5 +189,5 @@ TEST(SupportWindow, PrescribedMotionActsBetweenBirthAndDeath) {
   EXPECT_EQ(max_before, 0.0);               // nothing before birth
   EXPECT_NEAR(u_inside, 0.01, 1e-12);       // the curve inside the window
   EXPECT_EQ(max_after_reaction, 0.0);       // no reaction after death
-  EXPECT_LT(std::abs(sim.nodes.displacement(6)[0] - 0.01), 0.01);  // released, springing back
+  EXPECT_LT(std::abs(sim.nodes().displacement(6)[0] - 0.01), 0.01);  // released, springing back
 }

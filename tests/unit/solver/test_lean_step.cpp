@@ -158,30 +158,30 @@ class DoublingExchange final : public Exchange {
 };
 
 /// One free elastic hexahedron [0,1]^3 moving at unit speed in x, for `cycles` cycles.
-void free_hex(Simulation& sim, long cycles) {
-  sim.nodes.resize(8);
+SimulationSetup free_hex(long cycles) {
+  SimulationSetup setup;
+  setup.nodes.resize(8);
   for (Index i = 0; i < 8; ++i) {
     const Vec3 x(Real(i & 1), Real((i >> 1) & 1), Real((i >> 2) & 1));
-    sim.nodes.ids[i] = i + 1;
-    sim.nodes.x0.set(i, x);
-    sim.nodes.x.set(i, x);
-    sim.nodes.v.set(i, Vec3(1.0, 0.0, 0.0));
+    setup.nodes.ids[i] = i + 1;
+    setup.nodes.x0.set(i, x);
+    setup.nodes.x.set(i, x);
+    setup.nodes.v.set(i, Vec3(1.0, 0.0, 0.0));
   }
-  sim.blocks.push_back(make_hex_block(1, ElasticSolid(1.0, 1000.0, 0.3), HexHourglass{}, BulkViscosity{1.5, 0.06},
-                                      {0, 1, 3, 2, 4, 5, 7, 6}, {1}));
-  sim.controls.end_time = 1.0;
-  sim.controls.max_cycles = cycles;
+  setup.blocks.push_back(make_hex_block(1, ElasticSolid(1.0, 1000.0, 0.3), HexHourglass{}, BulkViscosity{1.5, 0.06},
+                                        {0, 1, 3, 2, 4, 5, 7, 6}, {1}));
+  setup.controls.end_time = 1.0;
+  setup.controls.max_cycles = cycles;
+  return setup;
 }
 
 }  // namespace
 
 TEST(Exchange, TheStepCallsItsThreePointsAndTakesTheReducedStep) {
-  Simulation plain;
-  free_hex(plain, 10);
+  Simulation plain(free_hex(10));
   plain.initialize();
   CountingExchange::Counts counts;
-  Simulation sim(std::make_unique<CountingExchange>(counts));
-  free_hex(sim, 10);
+  Simulation sim(free_hex(10), std::make_unique<CountingExchange>(counts));
   sim.initialize();
   EXPECT_EQ(counts.forces, 1);  // the forces at t = 0
   EXPECT_EQ(counts.dt, 1);
@@ -198,28 +198,27 @@ TEST(Exchange, TheStepCallsItsThreePointsAndTakesTheReducedStep) {
   EXPECT_EQ(counts.block_energies, 11);
   // A rigid translation at unit speed: the centre moved by the time elapsed.
   Real mean_ux = 0.0;
-  for (Index i = 0; i < 8; ++i) mean_ux += sim.nodes.displacement(i)[0] / 8.0;
+  for (Index i = 0; i < 8; ++i) mean_ux += sim.nodes().displacement(i)[0] / 8.0;
   EXPECT_NEAR(mean_ux, sim.time(), 1e-12);
 }
 
 TEST(Exchange, ElementEnergiesPerPartAndInTotalComeFromTheReducedPowers) {
   // A stretch in x with a small hourglass mode on it: hourglass, bulk-viscosity and stored
   // energies all nonzero.
-  const auto hourglassing_hex = [](Simulation& sim) {
-    free_hex(sim, 3);  // a few cycles: a free element so set going stops with "inverted" by cycle 10
+  const auto hourglassing_hex = [] {
+    SimulationSetup setup = free_hex(3);  // a few cycles: a free element so set going stops with "inverted" by cycle 10
     for (Index i = 0; i < 8; ++i) {
       const Real hg = (((i & 1) + ((i >> 1) & 1) + ((i >> 2) & 1)) % 2) ? 1e-4 : -1e-4;
-      sim.nodes.v.set(i, Vec3((i & 1 ? 1e-3 : -1e-3) + hg, 0.0, 0.0));
+      setup.nodes.v.set(i, Vec3((i & 1 ? 1e-3 : -1e-3) + hg, 0.0, 0.0));
     }
     // Doubled element energies against one process's nodal work: not a balance to stop on.
-    sim.controls.energy_error_limit = 1e30;
-    sim.controls.energy_error_warning = 1e30;
+    setup.controls.energy_error_limit = 1e30;
+    setup.controls.energy_error_warning = 1e30;
+    return setup;
   };
-  Simulation plain;
-  hourglassing_hex(plain);
+  Simulation plain(hourglassing_hex());
   plain.run({});
-  Simulation twice(std::make_unique<DoublingExchange>());
-  hourglassing_hex(twice);
+  Simulation twice(hourglassing_hex(), std::make_unique<DoublingExchange>());
   twice.run({});
   ASSERT_EQ(twice.cycle(), plain.cycle());
   ASSERT_GT(plain.energy().hourglass, 0.0);

@@ -53,8 +53,8 @@ model::PrescribedMotion motion(Id nsid, int dof, int vad, Real sf) {
 
 /// Internal index of the node with id `id`.
 Index index_of(const Simulation& sim, Id id) {
-  for (Index i = 0; i < static_cast<Index>(sim.nodes.size()); ++i)
-    if (sim.nodes.ids[i] == id) return i;
+  for (Index i = 0; i < static_cast<Index>(sim.nodes().size()); ++i)
+    if (sim.nodes().ids[i] == id) return i;
   return -1;
 }
 
@@ -82,14 +82,14 @@ TEST(PrescribedMotion, ConstantVelocityGivesXEqualsVt) {
   while (sim->step()) {
     ++cycles;
     const Real exact = 0.05 * sim->time();
-    worst = std::max(worst, std::abs(sim->nodes.displacement(corner)[1] - exact));
+    worst = std::max(worst, std::abs(sim->nodes().displacement(corner)[1] - exact));
   }
   EXPECT_GT(cycles, 20);
   // Round-off only: each step adds dt v to coordinates up to 2 (an ulp 4.4e-16).
   EXPECT_LT(worst, cycles * 4.4e-16);
   EXPECT_NEAR(sim->time(), 1.0, 1e-15);
   // The top face is free and behind the drive.
-  EXPECT_LT(sim->nodes.displacement(index_of(*sim, grid_node(0, 0, kNz, kNx, kNy)))[1], 0.05 * 1.0);
+  EXPECT_LT(sim->nodes().displacement(index_of(*sim, grid_node(0, 0, kNz, kNx, kNy)))[1], 0.05 * 1.0);
 }
 
 TEST(PrescribedMotion, ConstantAccelerationGivesXEqualsHalfAtSquared) {
@@ -103,7 +103,7 @@ TEST(PrescribedMotion, ConstantAccelerationGivesXEqualsHalfAtSquared) {
   Real worst = 0.0, scale = 0.0;
   while (sim->step()) {
     const Real exact = 0.5 * 0.3 * sim->time() * sim->time();
-    worst = std::max(worst, std::abs(sim->nodes.displacement(corner)[0] - exact));
+    worst = std::max(worst, std::abs(sim->nodes().displacement(corner)[0] - exact));
     scale = std::max(scale, exact);
   }
   EXPECT_LT(worst, 1e-13 * scale);
@@ -120,13 +120,13 @@ TEST(PrescribedMotion, ReactionOnADrivenFreeMassIsMinusMassTimesAcceleration) {
     auto sim = build_simulation(m);
     sim->initialize();
     while (sim->step()) {
-      const Vec3 r = sim->supports.at(0).reaction;
+      const Vec3 r = sim->supports().at(0).reaction;
       EXPECT_NEAR(r[2], -mass * a, 1e-11 * mass * a) << "VAD " << vad << " at t = " << sim->time();
       EXPECT_EQ(r[0], 0.0);
       EXPECT_EQ(r[1], 0.0);
     }
     const Real t = sim->time();
-    EXPECT_NEAR(sim->nodes.displacement(0)[2], 0.5 * a * t * t, 1e-13) << "VAD " << vad;
+    EXPECT_NEAR(sim->nodes().displacement(0)[2], 0.5 * a * t * t, 1e-13) << "VAD " << vad;
   }
 }
 
@@ -188,14 +188,14 @@ TEST(PrescribedMotion, BirthAndDeathBoundAVelocityDrive) {
   sim->initialize();
   while (sim->step()) {
     const Real t = sim->time();
-    const Real u = sim->nodes.displacement(0)[0];
+    const Real u = sim->nodes().displacement(0)[0];
     if (t <= 0.25) EXPECT_EQ(u, 0.0) << t;
   }
   // Coasting: the block is unstrained up to the round-off of its coordinates (E eps ~ 1e-13 of
   // stress), which is all that changes its velocity after the death.
-  EXPECT_NEAR(sim->nodes.v.x[0], 0.1, 1e-12);
-  EXPECT_GT(sim->nodes.displacement(0)[0], 0.1 * 0.25);  // moved for longer than the window
-  EXPECT_LT(sim->nodes.displacement(0)[0], 0.1 * 0.75);  // not before the birth
+  EXPECT_NEAR(sim->nodes().v.x[0], 0.1, 1e-12);
+  EXPECT_GT(sim->nodes().displacement(0)[0], 0.1 * 0.25);  // moved for longer than the window
+  EXPECT_LT(sim->nodes().displacement(0)[0], 0.1 * 0.75);  // not before the birth
 }
 
 TEST(PrescribedMotion, SingleNodeForm) {
@@ -209,8 +209,8 @@ TEST(PrescribedMotion, SingleNodeForm) {
   while (sim->step()) {
   }
   const Index i = index_of(*sim, grid_node(1, 1, 0, kNx, kNy));
-  EXPECT_NEAR(sim->nodes.displacement(i)[2], -0.05 * sim->time(), 1e-15);
-  EXPECT_EQ(sim->supports.at(0).name, "motion_" + std::to_string(grid_node(1, 1, 0, kNx, kNy)));
+  EXPECT_NEAR(sim->nodes().displacement(i)[2], -0.05 * sim->time(), 1e-15);
+  EXPECT_EQ(sim->supports().at(0).name, "motion_" + std::to_string(grid_node(1, 1, 0, kNx, kNy)));
   // A node the deck does not define is named with the card's location.
   m.prescribed_motions.back().nsid = 999;
   EXPECT_EQ(build_error(m), "motion.k:40: NID refers to node 999, which the deck does not define");
@@ -287,7 +287,7 @@ model::PrescribedMotion rigid_motion(Id pid, int dof, int vad, Real sf) {
   return p;
 }
 
-const RigidBody& body(const Simulation& sim) { return dynamic_cast<const RigidBody&>(*sim.constraints.at(0)); }
+const RigidBody& body(const Simulation& sim) { return dynamic_cast<const RigidBody&>(*sim.constraints().at(0)); }
 
 }  // namespace
 
@@ -309,13 +309,13 @@ TEST(PrescribedMotionRigid, PunchAtConstantVelocityMovesExactlyAndItsReactionIsT
   Vec3 contact_before = Vec3::Zero();
   long cycles = 0;
   Index node101 = -1;
-  for (Index i = 0; i < static_cast<Index>(sim->nodes.size()); ++i)
-    if (sim->nodes.ids[i] == 101) node101 = i;
+  for (Index i = 0; i < static_cast<Index>(sim->nodes().size()); ++i)
+    if (sim->nodes().ids[i] == 101) node101 = i;
   while (sim->step()) {
     ++cycles;
     const Real t = sim->time();
     worst_x = std::max({worst_x, std::abs(punch.center_of_mass()[2] - (com0[2] - v * t)),
-                        std::abs(sim->nodes.displacement(node101)[2] + v * t)});
+                        std::abs(sim->nodes().displacement(node101)[2] + v * t)});
     EXPECT_NEAR(punch.center_of_mass()[0], com0[0], 1e-12);  // symmetric: no net sideways load
     // step() ends with the forces of t^{n+1}; the reaction is the drive's over the step, from the
     // loads at t^n: compare it with the contact force of the previous step.
@@ -326,7 +326,7 @@ TEST(PrescribedMotionRigid, PunchAtConstantVelocityMovesExactlyAndItsReactionIsT
       worst_r = std::max(worst_r, std::abs(r[2] - contact_before[2]));
       peak = std::max(peak, std::abs(contact_before[2]));
     }
-    contact_before = sim->contacts[0].slave_force();
+    contact_before = sim->contacts()[0].slave_force();
   }
   EXPECT_LT(worst_x, 1e-14);
   EXPECT_GT(peak, 10.0);  // the punch pressed into the block
@@ -450,9 +450,9 @@ namespace {
 
 /// Position of node `id` of the punch if it turned by `angle` about z through `com`.
 Vec3 turned(const Simulation& sim, Id id, const Vec3& com, Real angle) {
-  for (Index i = 0; i < static_cast<Index>(sim.nodes.size()); ++i)
-    if (sim.nodes.ids[i] == id) {
-      const Vec3 r = sim.nodes.x0.get(i) - com;
+  for (Index i = 0; i < static_cast<Index>(sim.nodes().size()); ++i)
+    if (sim.nodes().ids[i] == id) {
+      const Vec3 r = sim.nodes().x0.get(i) - com;
       return com + Vec3(std::cos(angle) * r[0] - std::sin(angle) * r[1],
                         std::sin(angle) * r[0] + std::cos(angle) * r[1], r[2]);
     }
@@ -460,8 +460,8 @@ Vec3 turned(const Simulation& sim, Id id, const Vec3& com, Real angle) {
 }
 
 Vec3 position(const Simulation& sim, Id id) {
-  for (Index i = 0; i < static_cast<Index>(sim.nodes.size()); ++i)
-    if (sim.nodes.ids[i] == id) return sim.nodes.x.get(i);
+  for (Index i = 0; i < static_cast<Index>(sim.nodes().size()); ++i)
+    if (sim.nodes().ids[i] == id) return sim.nodes().x.get(i);
   return Vec3::Constant(std::nan(""));
 }
 
@@ -523,8 +523,8 @@ TEST(PrescribedMotionRigid, SpinUpReactionMomentAndBalance) {
   const RigidBody& punch = body(*sim);
   Real izz = 0.0;
   for (Index i : punch.nodes()) {
-    const Vec3 r = sim->nodes.x0.get(i) - punch.center_of_mass();
-    izz += sim->nodes.mass[i] * (r[0] * r[0] + r[1] * r[1]);
+    const Vec3 r = sim->nodes().x0.get(i) - punch.center_of_mass();
+    izz += sim->nodes().mass[i] * (r[0] * r[0] + r[1] * r[1]);
   }
   EXPECT_NEAR(izz, punch.inertia()(2, 2), 1e-15);
   Real worst = 0.0;

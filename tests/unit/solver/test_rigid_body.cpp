@@ -5,6 +5,7 @@
 #include "slideline/element/rigid_mass_block.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/staged_simulation.hpp"
 
 using namespace slideline;
 
@@ -17,14 +18,13 @@ constexpr Real kE = 1000.0;
 constexpr Real kNu = 0.3;
 
 /// A rigid box [0,a] x [0,b] x [0,c] of n x n x n hexahedra (principal axes along x, y, z).
-struct RigidBox {
-  Simulation sim;
+struct RigidBox : test_support::StagedSimulation {
   RigidBody* body = nullptr;
   Real mass = 0.0;
 };
 
 void make_box(RigidBox& r, Real a, Real b, Real c, int n, std::array<int, 6> fixed = {0, 0, 0, 0, 0, 0}) {
-  NodalFields& nodes = r.sim.nodes;
+  NodalFields& nodes = r.setup.nodes;
   const int np = n + 1;
   nodes.resize(static_cast<std::size_t>(np * np * np));
   auto id = [&](int i, int j, int k) { return static_cast<Index>(i + np * (j + np * k)); };
@@ -51,13 +51,13 @@ void make_box(RigidBox& r, Real a, Real b, Real c, int n, std::array<int, 6> fix
                                        id(i, j + 1, k + 1)});
         ids[p].push_back(static_cast<Id>(ids[0].size() + ids[1].size() + 1));
       }
-  r.sim.blocks.push_back(make_rigid_mass_block(3, kRho, kE, kNu, conn[0], {}, 0.0, ids[0]));
-  r.sim.blocks.push_back(make_rigid_mass_block(4, kRho, kE, kNu, conn[1], {}, 0.0, ids[1]));
+  r.setup.blocks.push_back(make_rigid_mass_block(3, kRho, kE, kNu, conn[0], {}, 0.0, ids[0]));
+  r.setup.blocks.push_back(make_rigid_mass_block(4, kRho, kE, kNu, conn[1], {}, 0.0, ids[1]));
   std::vector<Index> all(nodes.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<Index>(i);
   auto body = make_rigid_body(3, all, fixed);
   r.body = static_cast<RigidBody*>(body.get());
-  r.sim.constraints.push_back(std::move(body));
+  r.setup.constraints.push_back(std::move(body));
   r.mass = kRho * a * b * c;
 }
 
@@ -90,9 +90,9 @@ Momenta momenta(const NodalFields& n) {
 TEST(RigidBody, MassCentreAndInertiaFromNodalMasses) {
   RigidBox r;
   make_box(r, 1.0, 2.0, 3.0, 2);
-  r.sim.controls.end_time = 1.0;
-  r.sim.controls.dt_max = 1e-3;
-  r.sim.initialize();
+  r.setup.controls.end_time = 1.0;
+  r.setup.controls.dt_max = 1e-3;
+  r.start();
   EXPECT_NEAR(r.body->mass(), r.mass, 1e-12 * r.mass);
   EXPECT_NEAR((r.body->center_of_mass() - Vec3(0.8, 0.8, 2.0)).norm(), 0.0, 1e-12);
   // Lumped point masses of a 2x2x2 mesh: per axis, sum m_i s_i^2 = M (a/2)^2 (1/4 * 2 ... ) — the
@@ -111,26 +111,26 @@ TEST(RigidBody, FreeFlightConservesMomentum) {
   RigidBox r;
   make_box(r, 1.0, 2.0, 3.0, 2);
   const Vec3 v0(0.4, -0.3, 0.2), w0(1.0, 0.5, 2.0);
-  set_rigid_velocity(r.sim.nodes, v0, w0, Vec3(0.8, 0.8, 2.0));
-  r.sim.controls.end_time = 3.0;
-  r.sim.controls.dt_max = 2e-3;
-  r.sim.initialize();
-  const Momenta m0 = momenta(r.sim.nodes);
+  set_rigid_velocity(r.setup.nodes, v0, w0, Vec3(0.8, 0.8, 2.0));
+  r.setup.controls.end_time = 3.0;
+  r.setup.controls.dt_max = 2e-3;
+  r.start();
+  const Momenta m0 = momenta(r.sim().nodes());
   const Real e0 = 0.5 * r.body->angular_velocity().dot(r.body->angular_momentum()) +
                   0.5 * r.body->mass() * r.body->velocity().squaredNorm();
-  const Real d01 = (r.sim.nodes.x.get(0) - r.sim.nodes.x.get(26)).norm();
+  const Real d01 = (r.sim().nodes().x.get(0) - r.sim().nodes().x.get(26)).norm();
   Real dp = 0.0, dl = 0.0, de = 0.0, dd = 0.0;
-  while (r.sim.step()) {
-    const Momenta m = momenta(r.sim.nodes);
+  while (r.sim().step()) {
+    const Momenta m = momenta(r.sim().nodes());
     dp = std::max(dp, (m.p - m0.p).norm() / m0.p.norm());
     dl = std::max(dl, (m.l - m0.l).norm() / m0.l.norm());
     const Real e = 0.5 * r.body->angular_velocity().dot(r.body->angular_momentum()) +
                    0.5 * r.body->mass() * r.body->velocity().squaredNorm();
     de = std::max(de, std::abs(e - e0) / e0);
-    dd = std::max(dd, std::abs((r.sim.nodes.x.get(0) - r.sim.nodes.x.get(26)).norm() - d01));
+    dd = std::max(dd, std::abs((r.sim().nodes().x.get(0) - r.sim().nodes().x.get(26)).norm() - d01));
   }
   // Round-off accumulates over the cycles (each projection adds sum m_i w x r_i ~ eps |w| |r| M).
-  const Real steps = static_cast<Real>(r.sim.cycle());
+  const Real steps = static_cast<Real>(r.sim().cycle());
   RecordProperty("momentum_drift", std::to_string(dp));
   RecordProperty("angular_momentum_drift", std::to_string(dl));
   RecordProperty("energy_drift", std::to_string(de));
@@ -150,22 +150,22 @@ TEST(RigidBody, ConstantForceGivesUniformAcceleration) {
   RigidBox r;
   make_box(r, 1.0, 2.0, 3.0, 2);
   const Vec3 v0(0.4, -0.3, 0.2), w0(0.3, -1.0, 0.7), c0(0.8, 0.8, 2.0);
-  set_rigid_velocity(r.sim.nodes, v0, w0, c0);
+  set_rigid_velocity(r.setup.nodes, v0, w0, c0);
   const Vec3 g(1.5, -2.0, 0.25);
   for (int c = 0; c < 3; ++c) {
     BodyLoad bl;
     bl.axis = static_cast<Axis>(c);
     bl.scale = g[c];  // no parts listed: every block's mass
-    r.sim.body_loads.push_back(bl);
+    r.setup.body_loads.push_back(bl);
   }
-  r.sim.controls.end_time = 2.0;
-  r.sim.controls.dt_max = 1e-3;
-  r.sim.initialize();
+  r.setup.controls.end_time = 2.0;
+  r.setup.controls.dt_max = 1e-3;
+  r.start();
   Real err = 0.0;
-  while (r.sim.step()) {
-    const Real t = r.sim.time();
+  while (r.sim().step()) {
+    const Real t = r.sim().time();
     const Vec3 exact = c0 + v0 * t + 0.5 * g * t * t;
-    err = std::max(err, (momenta(r.sim.nodes).com - exact).norm() / exact.norm());
+    err = std::max(err, (momenta(r.sim().nodes()).com - exact).norm() / exact.norm());
   }
   std::printf("rigid constant force: max rel. error of the centre of mass %.3e\n", err);
   EXPECT_LT(err, 1e-12);
@@ -180,33 +180,33 @@ TEST(RigidBody, SupportsHoldAndRecordReactions) {
   bl.axis = Axis::y;
   bl.scale = -3.0;
   bl.parts = {4};  // the last layer in x: a torque about z (and x) about the centre of mass
-  r.sim.body_loads.push_back(bl);
+  r.setup.body_loads.push_back(bl);
   BodyLoad bx;
   bx.axis = Axis::x;
   bx.scale = 1.0;
-  r.sim.body_loads.push_back(bx);
-  r.sim.controls.end_time = 0.5;
-  r.sim.controls.dt_max = 1e-3;
-  r.sim.initialize();
-  const auto x0 = r.sim.nodes.x;
-  const BodyLoad& loaded = r.sim.body_loads[0];
+  r.setup.body_loads.push_back(bx);
+  r.setup.controls.end_time = 0.5;
+  r.setup.controls.dt_max = 1e-3;
+  r.start();
+  const auto x0 = r.sim().nodes().x;
+  const BodyLoad& loaded = r.sim().body_loads()[0];
   Real fy = 0.0;
   Vec3 moment = Vec3::Zero();
   const Vec3 c = r.body->center_of_mass();
   for (std::size_t k = 0; k < loaded.nodes.size(); ++k) {
     const Index i = loaded.nodes[k];
     fy += loaded.mass[k] * bl.scale;
-    moment += (r.sim.nodes.x.get(i) - c).cross(Vec3(0.0, loaded.mass[k] * bl.scale, 0.0));
+    moment += (r.sim().nodes().x.get(i) - c).cross(Vec3(0.0, loaded.mass[k] * bl.scale, 0.0));
   }
   const Real fx = r.mass * bx.scale;
   EXPECT_NEAR(fy, -3.0 * 0.5 * r.mass, 1e-12 * r.mass);
-  while (r.sim.step()) {
+  while (r.sim().step()) {
   }
-  const Real t = r.sim.time();
-  for (std::size_t i = 0; i < r.sim.nodes.size(); ++i) {
-    EXPECT_NEAR(r.sim.nodes.x.y[i], x0.y[i], 1e-14);
-    EXPECT_NEAR(r.sim.nodes.x.z[i], x0.z[i], 1e-14);
-    EXPECT_NEAR(r.sim.nodes.x.x[i] - x0.x[i], 0.5 * fx / r.mass * t * t, 1e-12);
+  const Real t = r.sim().time();
+  for (std::size_t i = 0; i < r.sim().nodes().size(); ++i) {
+    EXPECT_NEAR(r.sim().nodes().x.y[i], x0.y[i], 1e-14);
+    EXPECT_NEAR(r.sim().nodes().x.z[i], x0.z[i], 1e-14);
+    EXPECT_NEAR(r.sim().nodes().x.x[i] - x0.x[i], 0.5 * fx / r.mass * t * t, 1e-12);
   }
   EXPECT_NEAR(r.body->reaction_force()[1], fy, 1e-12 * std::abs(fy));
   EXPECT_EQ(r.body->reaction_force()[0], 0.0);
@@ -220,20 +220,20 @@ TEST(RigidBody, SupportsHoldAndRecordReactions) {
 TEST(RigidBody, EnergyBalancesInFreeFlightUnderLoad) {
   RigidBox r;
   make_box(r, 1.0, 2.0, 3.0, 2);
-  set_rigid_velocity(r.sim.nodes, Vec3(0.4, -0.3, 0.2), Vec3(1.0, 0.5, 2.0), Vec3(0.8, 0.8, 2.0));
+  set_rigid_velocity(r.setup.nodes, Vec3(0.4, -0.3, 0.2), Vec3(1.0, 0.5, 2.0), Vec3(0.8, 0.8, 2.0));
   BodyLoad bl;
   bl.axis = Axis::y;
   bl.scale = -3.0;
   bl.parts = {4};  // off the centre of mass: a torque as well
-  r.sim.body_loads.push_back(bl);
-  r.sim.controls.end_time = 2.0;
-  r.sim.controls.dt_max = 2e-3;
-  r.sim.initialize();
+  r.setup.body_loads.push_back(bl);
+  r.setup.controls.end_time = 2.0;
+  r.setup.controls.dt_max = 2e-3;
+  r.start();
   Real worst = 0.0;
-  while (r.sim.step()) worst = std::max(worst, std::abs(r.sim.energy().relative_balance_error()));
-  const EnergyReport& e = r.sim.energy();
+  while (r.sim().step()) worst = std::max(worst, std::abs(r.sim().energy().relative_balance_error()));
+  const EnergyReport& e = r.sim().energy();
   std::printf("rigid free flight under load: %ld cycles, K0 %.6e K %.6e W_ext %.6e W_con %.3e, max |rel. error| %.3e\n",
-              r.sim.cycle(), e.kinetic0, e.kinetic, e.external, e.constraint, worst);
+              r.sim().cycle(), e.kinetic0, e.kinetic, e.external, e.constraint, worst);
   EXPECT_LT(worst, 1e-6);
 }
 
@@ -241,24 +241,24 @@ TEST(RigidBody, EnergyBalancesInFreeFlightUnderLoad) {
 TEST(RigidBody, EnergyBalancesAgainstFixedDofs) {
   RigidBox r;
   make_box(r, 1.0, 2.0, 3.0, 2, {0, 1, 1, 1, 1, 0});
-  set_rigid_velocity(r.sim.nodes, Vec3(0.4, 0.0, 0.0), Vec3(0.0, 0.0, 1.5), Vec3(0.8, 0.8, 2.0));
+  set_rigid_velocity(r.setup.nodes, Vec3(0.4, 0.0, 0.0), Vec3(0.0, 0.0, 1.5), Vec3(0.8, 0.8, 2.0));
   BodyLoad by;
   by.axis = Axis::y;
   by.scale = -3.0;
   by.parts = {4};
-  r.sim.body_loads.push_back(by);
+  r.setup.body_loads.push_back(by);
   BodyLoad bx;
   bx.axis = Axis::x;
   bx.scale = 1.0;
-  r.sim.body_loads.push_back(bx);
-  r.sim.controls.end_time = 2.0;
-  r.sim.controls.dt_max = 2e-3;
-  r.sim.initialize();
+  r.setup.body_loads.push_back(bx);
+  r.setup.controls.end_time = 2.0;
+  r.setup.controls.dt_max = 2e-3;
+  r.start();
   Real worst = 0.0;
-  while (r.sim.step()) worst = std::max(worst, std::abs(r.sim.energy().relative_balance_error()));
-  const EnergyReport& e = r.sim.energy();
+  while (r.sim().step()) worst = std::max(worst, std::abs(r.sim().energy().relative_balance_error()));
+  const EnergyReport& e = r.sim().energy();
   std::printf("rigid body against fixed dofs: %ld cycles, K0 %.6e K %.6e W_ext %.6e W_con %.3e, max |rel. error| %.3e\n",
-              r.sim.cycle(), e.kinetic0, e.kinetic, e.external, e.constraint, worst);
+              r.sim().cycle(), e.kinetic0, e.kinetic, e.external, e.constraint, worst);
   EXPECT_LT(worst, 1e-6);
 }
 
@@ -273,28 +273,28 @@ TEST(RigidBody, ReactionsAreHistoryChannels) {
   by.axis = Axis::y;
   by.scale = -3.0;
   by.parts = {4};
-  r.sim.body_loads.push_back(by);
+  r.setup.body_loads.push_back(by);
   BodyLoad bx;
   bx.axis = Axis::x;
   bx.scale = 1.0;
-  r.sim.body_loads.push_back(bx);
-  r.sim.controls.end_time = 0.1;
-  r.sim.controls.dt_max = 1e-3;
-  r.sim.controls.history_interval = 0.01;
-  r.sim.initialize();
+  r.setup.body_loads.push_back(bx);
+  r.setup.controls.end_time = 0.1;
+  r.setup.controls.dt_max = 1e-3;
+  r.setup.controls.history_interval = 0.01;
+  r.start();
   // The expected reaction from the loaded masses (body loads act on the parts' lumped masses).
-  const BodyLoad& loaded = r.sim.body_loads[0];
+  const BodyLoad& loaded = r.sim().body_loads()[0];
   Vec3 force(r.mass * bx.scale, 0.0, 0.0), moment = Vec3::Zero();
   const Vec3 c = r.body->center_of_mass();
   for (std::size_t k = 0; k < loaded.nodes.size(); ++k) {
     const Vec3 f(0.0, loaded.mass[k] * by.scale, 0.0);
     force += f;
-    moment += (r.sim.nodes.x.get(loaded.nodes[k]) - c).cross(f);
+    moment += (r.sim().nodes().x.get(loaded.nodes[k]) - c).cross(f);
   }
   ASSERT_LT(force[1], 0.0);  // downward load: the reaction points down as well
   ASSERT_GT(moment.norm(), 0.0);
   History h;
-  r.sim.run({&h});
+  r.sim().run({&h});
   ASSERT_GE(h.find("supports/rigid_3/reaction"), 0);
   ASSERT_GE(h.find("supports/rigid_3/reaction_moment"), 0);
   ASSERT_EQ(h.records(), 11u);
@@ -312,9 +312,9 @@ TEST(RigidBody, ReactionsAreHistoryChannels) {
 
   RigidBox free;
   make_box(free, 1.0, 2.0, 3.0, 1);
-  free.sim.controls.end_time = 0.01;
-  free.sim.initialize();
-  for (const auto& ch : free.sim.channels()) EXPECT_EQ(ch.path.find("supports/"), std::string::npos) << ch.path;
+  free.setup.controls.end_time = 0.01;
+  free.start();
+  for (const auto& ch : free.sim().channels()) EXPECT_EQ(ch.path.find("supports/"), std::string::npos) << ch.path;
 }
 // Torque-free spin about a non-principal axis: no force does work, but the kinetic energy of the
 // nodes changes by O((omega dt)^2) as the body's velocity is reset from L each cycle. That change
@@ -323,14 +323,14 @@ TEST(RigidBody, ReactionsAreHistoryChannels) {
 TEST(RigidBody, ConstraintWorkClosesTheBalanceOfAFreeSpin) {
   RigidBox r;
   make_box(r, 1.0, 2.0, 3.0, 2);
-  set_rigid_velocity(r.sim.nodes, Vec3(0.4, -0.3, 0.2), Vec3(1.0, 0.5, 2.0), Vec3(0.8, 0.8, 2.0));
-  r.sim.controls.end_time = 2.0;
-  r.sim.controls.dt_max = 2e-3;
-  r.sim.initialize();
+  set_rigid_velocity(r.setup.nodes, Vec3(0.4, -0.3, 0.2), Vec3(1.0, 0.5, 2.0), Vec3(0.8, 0.8, 2.0));
+  r.setup.controls.end_time = 2.0;
+  r.setup.controls.dt_max = 2e-3;
+  r.start();
   Real worst = 0.0, constraint = 0.0;
-  while (r.sim.step()) {
-    worst = std::max(worst, std::abs(r.sim.energy().relative_balance_error()));
-    constraint = std::max(constraint, std::abs(r.sim.energy().constraint) / r.sim.energy().kinetic0);
+  while (r.sim().step()) {
+    worst = std::max(worst, std::abs(r.sim().energy().relative_balance_error()));
+    constraint = std::max(constraint, std::abs(r.sim().energy().constraint) / r.sim().energy().kinetic0);
   }
   std::printf("rigid free spin: max |W_con| / K0 %.3e, max |rel. balance error| %.3e\n", constraint, worst);
   EXPECT_GT(constraint, 1e-8);

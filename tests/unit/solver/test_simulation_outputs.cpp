@@ -9,6 +9,7 @@
 #include "slideline/element/hex_block.hpp"
 #include "slideline/material/elastic.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/staged_simulation.hpp"
 
 using namespace slideline;
 
@@ -16,17 +17,16 @@ namespace {
 
 /// One hexahedron, a cube of side `h`, elastic, its bottom face (z = 0) fixed in x, y and z, under
 /// a base acceleration `g` along -z; TSSFAC 0.5.
-struct OneHex {
-  Simulation sim;
+struct OneHex : test_support::StagedSimulation {
   OneHex(Real h, Real rho, Real e, Real nu, Real g) {
     const Vec3 c[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-    sim.nodes.resize(8);
+    setup.nodes.resize(8);
     for (Index i = 0; i < 8; ++i) {
-      sim.nodes.ids[i] = i + 1;
-      sim.nodes.x0.set(i, h * c[i]);
-      sim.nodes.x.set(i, h * c[i]);
+      setup.nodes.ids[i] = i + 1;
+      setup.nodes.x0.set(i, h * c[i]);
+      setup.nodes.x.set(i, h * c[i]);
     }
-    sim.blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
+    setup.blocks.push_back(std::make_unique<HexBlock<ElasticSolid>>(
         1, ElasticSolid(rho, e, nu), HexHourglass{}, BulkViscosity{},
         std::vector<Index>{0, 1, 2, 3, 4, 5, 6, 7}, std::vector<Id>{1}));
     SupportGroup bottom{"bottom", {}, Vec3::Zero()};
@@ -36,29 +36,31 @@ struct OneHex {
       s.nodes = {0, 1, 2, 3};
       bottom.supports.push_back(s);
     }
-    sim.supports.push_back(bottom);
+    setup.supports.push_back(bottom);
     BodyLoad bl;
     bl.axis = Axis::z;
     bl.scale = -g;
-    sim.body_loads.push_back(bl);
-    sim.history_nodes = {6};
-    sim.controls.dt_scale = 0.5;
+    setup.body_loads.push_back(bl);
+    setup.history_nodes = {6};
+    setup.controls.dt_scale = 0.5;
   }
 };
 
-/// Runs `sim` to `end` with history interval `interval` and checks the record times: record k at
+/// Starts `m` and runs it to `end` with history interval `interval` and checks the record times: record k at
 /// exactly k * interval (the product as the solver forms it) while that is before the end, and a
 /// last record at exactly `end`.
-void expect_exact_output_times(Simulation& sim, Real end, Real interval, const char* label) {
-  sim.controls.end_time = end;
-  sim.controls.history_interval = interval;
+void expect_exact_output_times(OneHex& m, Real end, Real interval, const char* label) {
+  m.setup.controls.end_time = end;
+  m.setup.controls.history_interval = interval;
+  m.start();
+  Simulation& sim = m.sim();
   History h;
   Real dt_min = std::numeric_limits<Real>::max();  // the smallest scaled stable step of the run
-  sim.run({&h}, [&](const Simulation& s) { dt_min = std::min(dt_min, s.controls.dt_scale * s.stable_dt()); }, 1);
+  sim.run({&h}, [&](const Simulation& s) { dt_min = std::min(dt_min, s.controls().dt_scale * s.stable_dt()); }, 1);
   // Multiples k * interval before the end (one that rounds onto the end is the end record).
   const long n = static_cast<long>(std::ceil(end / interval - 1e-9));
   std::printf("%s: dt %.4e, %ld cycles, %zu records, last at %.17g (end %.17g)\n", label,
-              sim.controls.dt_scale * sim.stable_dt(), sim.cycle(), h.records(), h.time().back(), end);
+              sim.controls().dt_scale * sim.stable_dt(), sim.cycle(), h.records(), h.time().back(), end);
   ASSERT_EQ(h.records(), static_cast<std::size_t>(n + 1)) << label;
   for (long k = 0; k < n; ++k) EXPECT_EQ(h.time()[k], static_cast<Real>(k) * interval) << label << " record " << k;
   EXPECT_EQ(h.time().back(), end) << label;
@@ -73,7 +75,7 @@ void expect_exact_output_times(Simulation& sim, Real end, Real interval, const c
 TEST(SimulationOutputs, TinyScaleRecordsAtExactMultiplesAndEndsAtTheEndTime) {
   for (Real interval : {1e-5, 2e-6, 1e-6, 3e-6}) {
     OneHex m(1.0, 7.85e-9, 2.1e5, 0.3, 9810.0);
-    expect_exact_output_times(m.sim, 1e-4, interval, "mm-t-s steel");
+    expect_exact_output_times(m, 1e-4, interval, "mm-t-s steel");
   }
 }
 
@@ -81,6 +83,6 @@ TEST(SimulationOutputs, TinyScaleRecordsAtExactMultiplesAndEndsAtTheEndTime) {
 TEST(SimulationOutputs, UnitlessRecordsAtExactMultiplesAndEndsAtTheEndTime) {
   for (auto [end, interval] : {std::pair<Real, Real>{1.0, 0.1}, {0.7, 0.1}, {0.3, 0.1}, {2.0, 0.03}}) {
     OneHex m(1.0, 1.0, 1000.0, 0.3, 1.0);
-    expect_exact_output_times(m.sim, end, interval, "unitless");
+    expect_exact_output_times(m, end, interval, "unitless");
   }
 }
