@@ -92,12 +92,7 @@ void apply_set_cards(const InitialVelocityInputs& in, const NodalFields& nodes, 
   const model::Model& m = in.model;
   for (const auto& iv : m.initial_velocities) {
     const std::string where = place(m, iv, "*INITIAL_VELOCITY");
-    if (iv.icid != 0)
-      throw NotImplementedError(where + ": field ICID (velocities in local coordinate system " +
-                                std::to_string(iv.icid) +
-                                ") is not implemented; give global components with ICID = 0");
-    if (iv.nsid < 0 || iv.nsidex < 0 || iv.boxid < 0)
-      throw InputError(where + ": fields NSID, NSIDEX and BOXID must be 0 or a set/box id");
+    // validate_model refused ICID != 0 and negative NSID, NSIDEX, BOXID.
     std::vector<Index> targets =
         iv.nsid == 0 ? all_nodes(nodes.size()) : in.sets.node_set(iv.nsid, where + ": NSID");
     std::vector<Index> exempt;
@@ -127,14 +122,7 @@ void apply_generation_cards(const InitialVelocityInputs& in, const NodalFields& 
   const model::Model& m = in.model;
   for (const auto& g : m.initial_velocity_generations) {
     const std::string where = place(m, g, "*INITIAL_VELOCITY_GENERATION");
-    const auto refuse = [&](bool bad, const std::string& what) {
-      if (bad) throw NotImplementedError(where + ": " + what + " is not implemented");
-    };
-    refuse(g.icid != 0, "field ICID (a local coordinate system)");
-    refuse(g.ivatn != 0, "field IVATN = " + std::to_string(g.ivatn) +
-                             " (velocities of slave parts and nodes of constrained rigid bodies)");
-    refuse(g.phase != 0, "field PHASE = " + std::to_string(g.phase) +
-                             " (initialisation after dynamic relaxation; give PHASE = 0)");
+    // validate_model refused ICID, IVATN, PHASE != 0, an STYP out of 1-3 and OMEGA without an axis.
     std::vector<Index> targets;
     if (g.id == 0) {
       // ID = 0: every node, STYP ignored (our reading of the LS-DYNA manual: "if zero, STYP is
@@ -153,18 +141,8 @@ void apply_generation_cards(const InitialVelocityInputs& in, const NodalFields& 
       targets = in.sets.nodes_of_part(g.id, where + ": ID (STYP = 2)");
     } else if (g.styp == 3) {
       targets = in.sets.node_set(g.id, where + ": ID (STYP = 3)");
-    } else {
-      throw InputError(where + ": field STYP must be 1 (part set), 2 (part) or 3 (node set) (got " +
-                       std::to_string(g.styp) + ")");
     }
-    Vec3 axis = Vec3::Zero();
-    if (g.omega != 0.0) {
-      const Real len = g.n.norm();
-      if (!(len > 0.0) || !std::isfinite(len))
-        throw InputError(where + ": OMEGA = " + num(g.omega) +
-                         " needs a rotation axis: fields NX NY NZ are all zero");
-      axis = g.n / len;
-    }
+    const Vec3 axis = g.omega != 0.0 ? Vec3(g.n / g.n.norm()) : Vec3::Zero();
     const Vec3 spin = g.omega * axis;  // angular velocity vector
     a.begin_card(where, false);        // the spin reaches rotational dofs only where they exist
     for (Index i : targets) a.set(i, g.v + spin.cross(nodes.x0.get(i) - g.xc), spin);

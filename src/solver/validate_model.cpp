@@ -227,6 +227,7 @@ void validate_model(const model::Model& m, const BuildOptions& options) {
   check_elements(m, p);
   validation::check_parts(m, p);
   validation::check_loads(m, p);
+  validation::check_initial_velocities(m, p);
   if (!p.empty()) p.raise();
 }
 

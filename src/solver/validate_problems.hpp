@@ -52,4 +52,8 @@ void check_parts(const model::Model& m, Problems& p);
 /// contact titles (validate_loads.cpp).
 void check_loads(const model::Model& m, Problems& p);
 
+/// The fields of the initial-velocity cards that are not run or out of range
+/// (validate_initial.cpp).
+void check_initial_velocities(const model::Model& m, Problems& p);
+
 }  // namespace slideline::validation

@@ -9,7 +9,10 @@
 ///   and prescribed-motion fields that are read but not run (validate_model.cpp); what each part
 ///   asks of its section, hourglass card and material, *MAT_RIGID constraints, nodal TC/RC and
 ///   _RIGID motions (validate_parts.cpp); supports, loads, damping, curves, the other controls
-///   and contact titles (validate_loads.cpp). The builder then builds from a validated model.
+///   and contact titles (validate_loads.cpp); the fields of the initial-velocity cards
+///   (validate_initial.cpp). The builder then builds from a validated model; it keeps only its id
+///   lookups and the checks that need the built mesh (two initial-velocity cards on one node, a
+///   velocity that is not one rigid motion of a rigid part).
 ///
 /// The reader checks only the syntax of each field (io/keyword_reader.hpp). See docs/keywords.md.
 #include <vector>

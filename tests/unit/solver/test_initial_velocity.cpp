@@ -226,6 +226,23 @@ TEST(InitialVelocity, UnsupportedFieldsAreRefusedWithTheirLine) {
   check("*INITIAL_VELOCITY_NODE\n99,1,0,0\n", "node 99");
 }
 
+TEST(InitialVelocity, TheValidationLayerListsEveryBadCardAtOnce) {
+  // validate_model (validate_initial.cpp) finds them before anything is built: both cards, each
+  // with its line, in one error, and the bad input (STYP) makes it an InputError.
+  const std::string deck = header(0.1) + part(1, 1) + block(1, {0, 0, 0}, {1, 1, 1}, 1, 0, 0) +
+                           "*INITIAL_VELOCITY_GENERATION\n1,2,1,0,0,0,1\n0,0,0,0,0,1\n"
+                           "*INITIAL_VELOCITY_GENERATION\n1,4,1\n0,0,0,0,0,1\n*END\n";
+  try {
+    build(deck);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("IVATN"), std::string::npos) << what;
+    EXPECT_NE(what.find("STYP"), std::string::npos) << what;
+    EXPECT_NE(what.find('\n'), std::string::npos) << what;
+  }
+}
+
 TEST(InitialVelocity, SupportedComponentsStartAtRest) {
   // A support active at t = 0 wins: the fixed component starts at zero, the free ones move.
   auto sim = build(header(0.1) + part(1, 1) + block(1, {0, 0, 0}, {1, 1, 1}, 1, 0, 0) +
