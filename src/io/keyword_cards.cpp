@@ -166,69 +166,66 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
   });
 }
 
-void read_mat_elastic(const Context& ctx, Block& b, Model& m, bool titled) {
+/// One *MAT_... card group: the title (when titled), card 1 read by `fields` (its Card, with the
+/// block to take further cards from), then the title, source and model entry every material
+/// shares. Adding a material = a model struct and one call of this with its fields.
+template <class Mat, class Fields>
+void read_material(const Context& ctx, Block& b, Model& m, bool titled, Fields&& fields) {
   std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
   const Line& l = require(ctx, b, "MID");
-  Card c = card_of(ctx, l, b);
-  model::MatElastic mat;
-  c.get(0, "MID", mat.mid);
-  c.get(1, "RO", mat.ro);
-  c.get(2, "E", mat.e);
-  c.get(3, "PR", mat.pr);
-  mat.title = title;
+  Mat mat;
+  fields(card_of(ctx, l, b), mat);
+  mat.title = std::move(title);
   mat.src = ctx.source(l.number);
-  m.materials.emplace_back(mat);
+  m.materials.emplace_back(std::move(mat));
   warn_extra_cards(ctx, b);
+}
+
+void read_mat_elastic(const Context& ctx, Block& b, Model& m, bool titled) {
+  read_material<model::MatElastic>(ctx, b, m, titled, [](const Card& c, model::MatElastic& mat) {
+    c.get(0, "MID", mat.mid);
+    c.get(1, "RO", mat.ro);
+    c.get(2, "E", mat.e);
+    c.get(3, "PR", mat.pr);
+  });
 }
 
 void read_mat_mooney_rivlin(const Context& ctx, Block& b, Model& m, bool titled) {
-  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
-  const Line& l = require(ctx, b, "MID");
-  Card c = card_of(ctx, l, b);
-  model::MatMooneyRivlin mat;
-  c.get(0, "MID", mat.mid);
-  c.get(1, "RO", mat.ro);
-  c.get(2, "PR", mat.pr);
-  c.get(3, "A", mat.a);
-  c.get(4, "B", mat.b);
-  // Card 2 (SGL SW ST LCID) fits A and B to test data. LS-DYNA then computes A and B from the
-  // curve (the card's own A and B are not used), so running with the given A and B would be
-  // another material: refused.
-  if (const Line* l2 = b.take()) {
-    Card c2 = card_of(ctx, *l2, b);
-    Id lcid = 0;
-    c2.get(3, "LCID", lcid);
-    if (lcid != 0)
-      throw NotImplementedError(ctx.where(l2->number) + b.keyword +
-                                ": fitting A and B to the force-extension curve LCID is not implemented; "
-                                "give A and B and leave LCID blank");
-  }
-  mat.title = title;
-  mat.src = ctx.source(l.number);
-  m.materials.emplace_back(mat);
-  warn_extra_cards(ctx, b);
+  read_material<model::MatMooneyRivlin>(ctx, b, m, titled, [&](const Card& c, model::MatMooneyRivlin& mat) {
+    c.get(0, "MID", mat.mid);
+    c.get(1, "RO", mat.ro);
+    c.get(2, "PR", mat.pr);
+    c.get(3, "A", mat.a);
+    c.get(4, "B", mat.b);
+    // Card 2 (SGL SW ST LCID) fits A and B to test data. LS-DYNA then computes A and B from the
+    // curve (the card's own A and B are not used), so running with the given A and B would be
+    // another material: refused.
+    if (const Line* l2 = b.take()) {
+      Card c2 = card_of(ctx, *l2, b);
+      Id lcid = 0;
+      c2.get(3, "LCID", lcid);
+      if (lcid != 0)
+        throw NotImplementedError(ctx.where(l2->number) + b.keyword +
+                                  ": fitting A and B to the force-extension curve LCID is not implemented; "
+                                  "give A and B and leave LCID blank");
+    }
+  });
 }
 
 void read_mat_rigid(const Context& ctx, Block& b, Model& m, bool titled) {
-  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
-  const Line& l = require(ctx, b, "MID");
-  Card c = card_of(ctx, l, b);
-  model::MatRigid mat;
-  c.get(0, "MID", mat.mid);
-  c.get(1, "RO", mat.ro);
-  c.get(2, "E", mat.e);
-  c.get(3, "PR", mat.pr);
-  if (const Line* l2 = b.take()) {
-    Card c2 = card_of(ctx, *l2, b);
-    c2.get(0, "CMO", mat.cmo);
-    c2.get(1, "CON1", mat.con1);
-    c2.get(2, "CON2", mat.con2);
-  }
-  b.take();  // card 3 (LCO or A1..V3, alignment for output) has no effect here
-  mat.title = title;
-  mat.src = ctx.source(l.number);
-  m.materials.emplace_back(mat);
-  warn_extra_cards(ctx, b);
+  read_material<model::MatRigid>(ctx, b, m, titled, [&](const Card& c, model::MatRigid& mat) {
+    c.get(0, "MID", mat.mid);
+    c.get(1, "RO", mat.ro);
+    c.get(2, "E", mat.e);
+    c.get(3, "PR", mat.pr);
+    if (const Line* l2 = b.take()) {
+      Card c2 = card_of(ctx, *l2, b);
+      c2.get(0, "CMO", mat.cmo);
+      c2.get(1, "CON1", mat.con1);
+      c2.get(2, "CON2", mat.con2);
+    }
+    b.take();  // card 3 (LCO or A1..V3, alignment for output) has no effect here
+  });
 }
 
 void read_hourglass(const Context& ctx, Block& b, Model& m, bool titled) {
