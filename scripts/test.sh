@@ -18,7 +18,7 @@ if [ "${SLIDELINE_SKIP_SANITIZERS:-0}" != "1" ]; then
   # leak detection on; libgomp's thread pool is the only suppressed leak (scripts/lsan_suppressions.txt).
   cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLIDELINE_SANITIZE=ON \
         -DSLIDELINE_BUILD_BENCHMARKS=OFF
-  cmake --build build-sanitize -j"$jobs" --target unit_tests verification_tests blockcontact cli_interrupt_tests check_layers
+  cmake --build build-sanitize -j"$jobs" --target unit_tests verification_tests blockcontact cli_interrupt_tests cli_keywords_tests check_layers
   ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions="$PWD/scripts/lsan_suppressions.txt" \
   UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize -L "unit|verification" -LE "package|slow" -j"$jobs" --output-on-failure --timeout 900
