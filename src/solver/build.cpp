@@ -296,6 +296,7 @@ struct Builder {
       }
       setup.supports.push_back(std::move(g));
     }
+    build_node_constraint_codes();
     for (const auto& pm : m.prescribed_motions) {
       // validate_model let through only the VAD (0-2) and DOF values run here, on no rigid node.
       if (pm.target == model::PrescribedMotion::Target::rigid) {
@@ -317,6 +318,31 @@ struct Builder {
       s.birth = pm.birth;
       s.death = pm.death;
       g.supports.push_back(std::move(s));
+      setup.supports.push_back(std::move(g));
+    }
+  }
+
+  /// *NODE TC/RC: a support group per distinct pair of codes, `node_tc<TC>_rc<RC>`, fixing the
+  /// components the codes name (as a *BOUNDARY_SPC_SET of those nodes would) and reporting their
+  /// summed reaction. Codes 0-7 as *MAT_RIGID's CON1/CON2 (validate_model refuses the others).
+  void build_node_constraint_codes() {
+    std::map<std::pair<int, int>, std::vector<Index>> by_code;  // deck order of *NODE within a code
+    for (std::size_t i = 0; i < m.nodes.size(); ++i)
+      if (m.nodes[i].tc != 0 || m.nodes[i].rc != 0)
+        by_code[{m.nodes[i].tc, m.nodes[i].rc}].push_back(static_cast<Index>(i));
+    for (const auto& [code, nodes] : by_code) {
+      SupportGroup g;
+      g.name = "node_tc" + std::to_string(code.first) + "_rc" + std::to_string(code.second);
+      const auto t = rigid_constraint_code(code.first).value();
+      const auto r = rigid_constraint_code(code.second).value();
+      for (int d = 0; d < 6; ++d) {
+        if ((d < 3 ? t[d] : r[d - 3]) == 0) continue;
+        Support s;
+        s.axis = static_cast<Axis>(d % 3);
+        s.rotational = d >= 3;
+        s.nodes = nodes;
+        g.supports.push_back(std::move(s));
+      }
       setup.supports.push_back(std::move(g));
     }
   }

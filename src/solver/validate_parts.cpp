@@ -163,9 +163,23 @@ class RigidNodes {
   std::unordered_map<Id, Id> part_;  // node id -> the first rigid part (build order) it belongs to
 };
 
+/// *NODE TC/RC: codes 0-7 (as *MAT_RIGID's CON1/CON2); the first bad node of each field.
+void check_node_codes(const model::Model& m, Problems& p) {
+  for (const char* field : {"TC", "RC"})
+    for (const auto& nd : m.nodes) {
+      const int code = field[0] == 'T' ? nd.tc : nd.rc;
+      if (rigid_constraint_code(code)) continue;
+      p.bad("*NODE " + std::to_string(nd.id) + ": field " + field + " must be 0-7 (0 free, 1 x, 2 y, 3 z, 4 xy, " +
+            "5 yz, 6 zx, 7 xyz), got " + std::to_string(code));
+      break;
+    }
+}
+
 void check_rigid_nodes(const model::Model& m, const std::set<Id>& rigid, Problems& p) {
   if (rigid.empty()) return;
   const RigidNodes nodes(m, rigid);
+  for (const auto& nd : m.nodes)
+    if (nd.tc != 0 || nd.rc != 0) nodes.check(true, nd.id, {"*NODE " + std::to_string(nd.id), 0}, "field TC/RC", p);
   for (const auto& spc : m.spcs)
     nodes.check(spc.node, spc.nsid, spc.src, spc.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET", p);
   for (const auto& pm : m.prescribed_motions)
@@ -176,12 +190,7 @@ void check_rigid_nodes(const model::Model& m, const std::set<Id>& rigid, Problem
 }  // namespace
 
 void check_parts(const model::Model& m, Problems& p) {
-  for (const auto& nd : m.nodes)
-    if (nd.tc != 0 || nd.rc != 0) {  // the first such node, as the builder named it
-      p.todo("*NODE " + std::to_string(nd.id) +
-             ": nodal constraint codes TC/RC are not supported yet; use *BOUNDARY_SPC_SET");
-      break;
-    }
+  check_node_codes(m, p);
   const auto parts = by_id(m.parts, [](const model::Part& x) { return x.pid; });
   const auto ssec = by_id(m.solid_sections, [](const model::SectionSolid& x) { return x.secid; });
   const auto shsec = by_id(m.shell_sections, [](const model::SectionShell& x) { return x.secid; });
