@@ -1,9 +1,12 @@
 // blockcontact check <deck>: read and validate a deck, report counts and every problem.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "slideline/io/keyword_reader.hpp"
@@ -21,9 +24,7 @@ std::string contact_type_name(const slideline::model::Contact& c) {
   return k ? fmt::format("type {} {}", k->dyna3d_type, k->name) : std::string("?");
 }
 
-int run_check(const std::string& deck, bool ignore_unsupported) {
-  std::size_t warnings = 0;
-  const auto m = read_deck(deck, ignore_unsupported, warnings);
+void print_counts(const std::string& deck, const slideline::model::Model& m) {
   fmt::print("{}\n", deck);
   if (!m.title.empty()) fmt::print("  title     {}\n", m.title);
   fmt::print("  nodes     {}\n", m.nodes.size());
@@ -41,11 +42,64 @@ int run_check(const std::string& deck, bool ignore_unsupported) {
     fmt::print("    {:<28} {:<20} {} ({})\n", c.title.empty() ? fmt::format("#{}", c.cid) : c.title,
                contact_type_name(c), slideline::model::enforcement_name(c.enforcement), c.keyword);
   fmt::print("  end time  {:g}\n", m.termination.endtim);
-  const auto problems = slideline::check_references(m);
-  for (const auto& p : problems) fmt::print(stderr, "error: {}\n", slideline::to_string(p));
-  if (!problems.empty()) {
-    fmt::print(stderr, "{}: {} problem(s)\n", deck, problems.size());
-    return kBadInput;
+}
+
+/// Prints one stage's blockers ("error: " bad input, "not implemented: " the rest), each message
+/// once over all stages (`seen`: a dropped card's users are named by the reference check and the
+/// validation layer alike), and counts them into `total`; returns whether any was bad input.
+bool print_blockers(const slideline::Blockers& b, std::set<std::string>& seen, std::size_t& total) {
+  const auto print = [&](const std::vector<slideline::Diagnostic>& list, const char* kind) {
+    for (const auto& d : list) {
+      const std::string text = slideline::to_string(d);
+      if (!seen.insert(text).second) continue;
+      fmt::print(stderr, "{}: {}\n", kind, text);
+      ++total;
+    }
+  };
+  print(b.input, "error");
+  print(b.unimplemented, "not implemented");
+  return !b.input.empty();
+}
+
+/// A reference to a card the reader listed as unsupported is that feature missing, as the
+/// validation layer says (its not-implemented list holds the same line), not bad input; with
+/// --ignore-unsupported it stays an error, as in `run`.
+void move_dropped_references(slideline::Blockers& refs, const slideline::Blockers& validation) {
+  auto& in = refs.input;
+  for (auto it = in.begin(); it != in.end();) {
+    const std::string text = slideline::to_string(*it);
+    const bool missing = std::any_of(validation.unimplemented.begin(), validation.unimplemented.end(),
+                                     [&](const slideline::Diagnostic& d) { return slideline::to_string(d) == text; });
+    if (!missing) {
+      ++it;
+      continue;
+    }
+    refs.unimplemented.push_back(*it);
+    it = in.erase(it);
+  }
+}
+
+int run_check(const std::string& deck, bool ignore_unsupported) {
+  std::size_t warnings = 0;
+  // Every blocker at once, stage by stage: what the reader skipped (malformed or refused cards,
+  // unsupported keywords), dangling ids, and what the validation layer refuses (element forms,
+  // material constants, fields not implemented).
+  slideline::Blockers reader;
+  const auto m = read_deck(deck, ignore_unsupported, warnings, &reader);
+  print_counts(deck, m);
+  slideline::Blockers refs;
+  refs.input = slideline::check_references(m);
+  slideline::Blockers validation;
+  if (!m.nodes.empty() && (!m.solids.empty() || !m.shells.empty()))  // else the references said so
+    validation = slideline::find_model_problems(m);
+  if (!ignore_unsupported) move_dropped_references(refs, validation);
+  std::size_t total = 0;
+  std::set<std::string> seen;
+  bool bad = false;
+  for (const auto* stage : {&reader, &refs, &validation}) bad = print_blockers(*stage, seen, total) || bad;
+  if (total > 0) {
+    fmt::print(stderr, "{}: {} problem(s); the deck cannot be run as written\n", deck, total);
+    return bad ? kBadInput : kNotImplemented;
   }
   print_dropped(m);
   // Everything `run` checks before its first step: the build (element kinds, volumes and node

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "slideline/core/blockers.hpp"
 #include "slideline/core/diagnostics.hpp"
 #include "slideline/model/model.hpp"
 
@@ -32,7 +33,8 @@ void register_keywords(CLI::App& app, int& exit_code);
 
 /// Reads a deck, printing the reader's warnings to stderr (also when it then throws).
 /// `ignore_unsupported` drops unsupported physics cards instead of failing (deck_input.cpp).
-slideline::model::Model read_deck(const std::string& deck, bool ignore_unsupported, std::size_t& warning_count);
+slideline::model::Model read_deck(const std::string& deck, bool ignore_unsupported, std::size_t& warning_count,
+                                  slideline::Blockers* blockers = nullptr);
 /// Prints the cards --ignore-unsupported dropped, one line each, to stdout (the run log).
 void print_dropped(const slideline::model::Model& model);
 

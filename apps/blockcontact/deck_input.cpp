@@ -7,10 +7,12 @@
 
 namespace blockcontact {
 
-slideline::model::Model read_deck(const std::string& deck, bool ignore_unsupported, std::size_t& warning_count) {
+slideline::model::Model read_deck(const std::string& deck, bool ignore_unsupported, std::size_t& warning_count,
+                                  slideline::Blockers* blockers) {
   std::vector<slideline::Diagnostic> warnings;
   slideline::ReadOptions options;
   options.ignore_unsupported = ignore_unsupported;
+  options.blockers = blockers;
   const auto print = [&] {
     for (const auto& w : warnings) fmt::print(stderr, "warning: {}\n", slideline::to_string(w));
     warning_count = warnings.size();

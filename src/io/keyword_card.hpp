@@ -46,10 +46,26 @@ struct Parameter {
   Real value = 0.0;  // for R and I
 };
 
+/// One line of a *SET_NODE_GENERAL (OPTION E1..E7) or one range of *SET_NODE_LIST_GENERATE
+/// (option "RANGE", ids {BEG, END}), resolved once the whole deck is read (keyword_sets.cpp).
+struct NodeSetRule {
+  std::string option;
+  std::vector<Id> ids;
+  std::string file;
+  int line = 0;
+};
+
+/// A node set whose nodes depend on cards that may come later (nodes, elements, boxes).
+struct PendingNodeSet {
+  std::size_t index = 0;  // into model::Model::node_sets
+  std::vector<NodeSetRule> rules;
+};
+
 /// Reading state shared by the card handlers of every file of a deck (the main file and its
 /// *INCLUDEs). Each file has its own Context pointing at it.
 struct DeckState {
   std::map<std::string, Parameter, std::less<>> parameters;  // upper-case names
+  std::vector<PendingNodeSet> node_sets;                      // generated sets, resolved at the end
 };
 
 /// Reading state of one file.
@@ -206,12 +222,23 @@ void read_database_history_node(const Context& ctx, Block& block, model::Model& 
 /// *DATABASE_...: one card, DT the output interval, into `dt`.
 void read_database_dt(const Context& ctx, Block& block, Real& dt);
 
+// keyword_sets.cpp: *KEYWORD_ID, *SET_NODE_LIST_GENERATE and *SET_NODE_GENERAL (`titled`: _TITLE).
+void read_keyword_id(const Context& ctx, Block& block, model::Model& model);
+void read_set_node_generate(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_set_node_general(const Context& ctx, Block& block, model::Model& model, bool titled);
+/// Fills the node lists of the generated sets once every file of the deck is read (their nodes,
+/// parts and boxes may come after them). Throws InputError naming the card's file, line and field
+/// for a part or box the deck does not define.
+void resolve_node_sets(const DeckState& deck, model::Model& model);
+
 // keyword_controls.cpp: *CONTROL_HOURGLASS, _BULK_VISCOSITY, _TERMINATION, _TIMESTEP, _CONTACT.
 void read_control_hourglass(const Context& ctx, Block& block, model::Model& model);
 void read_control_bulk_viscosity(const Context& ctx, Block& block, model::Model& model);
 void read_control_termination(const Context& ctx, Block& block, model::Model& model);
 void read_control_timestep(const Context& ctx, Block& block, model::Model& model);
 void read_control_contact(const Context& ctx, Block& block, model::Model& model);
+/// *CONTROL_SHELL, *CONTROL_ACCURACY, *CONTROL_SOLID: nothing to store; every field checked.
+void read_control_fields(const Context& ctx, Block& block, model::Model& model);
 
 // keyword_contact_fields.cpp: the fields of *CONTACT_... and *CONTROL_CONTACT that the solver does
 // not act on. Each is at its default, refused (NotImplementedError naming file, line and field) or,
@@ -227,6 +254,10 @@ void check_section_fields(const Context& ctx, const Line& card1, const Line* car
                           bool shell);
 /// Refuses *HOURGLASS QB / QW other than 0 or QM (the shell hourglass takes QM for every mode).
 void check_hourglass_fields(const Context& ctx, const Line& card, std::string_view keyword, Real qm);
+/// Checks every card left in a *CONTROL_SHELL, *CONTROL_ACCURACY, *CONTROL_SOLID or
+/// *CONTROL_BULK_VISCOSITY block (its Q1 Q2 are read by its handler): a field that changes the
+/// physics and is not at its default is refused; a card beyond the manual's is refused.
+void check_control_fields(const Context& ctx, Block& block);
 /// Reads the optional cards A-E of a *CONTACT_... keyword (what is left in the block).
 void read_contact_optional_cards(const Context& ctx, Block& block);
 /// Reads cards 2-6 of *CONTROL_CONTACT (what is left in the block) and checks card 1's fields

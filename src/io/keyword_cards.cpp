@@ -1,6 +1,7 @@
 // Card handlers of the keyword reader (but *CONTACT_..., *CONTROL_..., *INITIAL_..., *PARAMETER); the
 // keyword table that dispatches to them is keyword_table.cpp.
 // Field orders follow the LS-DYNA keyword manual (docs/keywords.md lists them with sources).
+#include <cstdlib>
 #include <string>
 
 #include "keyword_card.hpp"
@@ -132,6 +133,16 @@ void each_titled(const Context& ctx, Block& b, bool titled, F&& record) {
   }
 }
 
+/// ELFORM 101-105 (user-defined elements) take cards of their own (NIP NXDOF ... then LMC
+/// properties) that are not read: refused here, before they could be read as the next section.
+/// The rest of the keyword is skipped with it.
+void refuse_user_element(const Context& ctx, const Line& l, const Block& b, int elform) {
+  if (elform >= 101 && elform <= 105)
+    throw NotImplementedError(ctx.where(l.number) + "field ELFORM of " + b.keyword + ": " + std::to_string(elform) +
+                              " (a user-defined element) is not supported; its extra cards are not read, so the "
+                              "keyword is skipped whole");
+}
+
 }  // namespace
 
 void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
@@ -140,6 +151,7 @@ void read_section_solid(const Context& ctx, Block& b, Model& m, bool titled) {
     model::SectionSolid s;
     c.get(0, "SECID", s.secid);
     c.get_or_default(1, "ELFORM", s.elform);
+    refuse_user_element(ctx, l, b, s.elform);
     check_section_fields(ctx, l, nullptr, b.keyword, false);
     s.src = ctx.source(l.number);
     m.solid_sections.push_back(s);
@@ -152,6 +164,7 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
     model::SectionShell s;
     c.get(0, "SECID", s.secid);
     c.get_or_default(1, "ELFORM", s.elform);
+    refuse_user_element(ctx, l, b, s.elform);
     c.get_or_default(2, "SHRF", s.shrf);
     c.get_or_default(3, "NIP", s.nip);
     c.get_or_default(4, "PROPT", s.propt);
@@ -337,6 +350,12 @@ void read_prescribed(const Context& ctx, Block& b, Model& m, bool with_id,
     Card c = card_of(ctx, *l, b);
     c.get(0, first_field, p.nsid);
     c.get(1, "DOF", p.dof);
+    // DOF 9-11 (rotation about a line) adds a card (OFFSET1 OFFSET2 LRB NODE1 NODE2) that is not
+    // read: refused here, before it could be read as the next motion; the rest of the keyword is skipped.
+    if (std::abs(p.dof) >= 9 && std::abs(p.dof) <= 11)
+      throw NotImplementedError(ctx.where(l->number) + "field DOF of " + b.keyword + ": " + std::to_string(p.dof) +
+                                " (rotation about a line) is not supported; its extra card is not read, so the "
+                                "keyword is skipped whole");
     c.get(2, "VAD", p.vad);
     c.get(3, "LCID", p.lcid);
     c.get_or_default(4, "SF", p.sf);

@@ -20,11 +20,15 @@ void read_control_hourglass(const Context& ctx, Block& b, Model& m) {
 }
 
 void read_control_bulk_viscosity(const Context& ctx, Block& b, Model& m) {
-  single_card(ctx, b, [&](const Card& k, const Line&) {
+  if (!b.done()) {
+    const Card k(ctx, b.cards[b.next], b.keyword, kStandard);
     k.get_or_default(0, "Q1", m.bulk_viscosity.q1);
     k.get_or_default(1, "Q2", m.bulk_viscosity.q2);
-  });
+  }
+  check_control_fields(ctx, b);  // TYPE, BTYPE (keyword_contact_fields.cpp); a further card is refused
 }
+
+void read_control_fields(const Context& ctx, Block& b, Model&) { check_control_fields(ctx, b); }
 
 void read_control_termination(const Context& ctx, Block& b, Model& m) {
   m.termination.src = ctx.source(b.line);

@@ -318,8 +318,9 @@ constexpr int kMaxIncludeDepth = 32;
 /// Reads one file (or string) of a deck into the model, recursing into its *INCLUDEs.
 class DeckReader {
  public:
-  DeckReader(model::Model& model, DeckState& deck, UnsupportedLog& log, std::vector<Diagnostic>* warnings)
-      : model_(model), deck_(deck), log_(log), warnings_(warnings) {}
+  DeckReader(model::Model& model, DeckState& deck, UnsupportedLog& log, std::vector<Diagnostic>* warnings,
+             Blockers* blockers)
+      : model_(model), deck_(deck), log_(log), warnings_(warnings), blockers_(blockers) {}
 
   /// Returns the number of keywords read.
   int read(std::streambuf& buf, const std::string& name, Format format, int depth) {
@@ -398,7 +399,7 @@ class DeckReader {
                        " is not a keyword (non-text bytes): the file is not a keyword deck, or it is "
                        "corrupted");
     }
-    if (kw == "*KEYWORD") {
+    if (kw == "*KEYWORD" || kw == "*KEYWORD_ID") {
       // "*KEYWORD [memory] LONG=Y I10=Y": the format of the rest of this file.
       if (rest.find("LONG=Y") != std::string::npos) file_format = Format::wide;
       else if (rest.find("I10=Y") != std::string::npos) file_format = Format::i10;
@@ -429,8 +430,19 @@ class DeckReader {
       include(ctx, block, depth);
       return;
     }
-    if (read_block(ctx, block, model_)) return;
-    log_.add(ctx, block, pending.cards);
+    bool read = false;
+    try {
+      read = read_block(ctx, block, model_);
+    } catch (const NotImplementedError& e) {
+      if (!blockers_) throw;
+      blockers_->unimplemented.push_back({std::string(), 0, e.what()});
+      return;
+    } catch (const InputError& e) {
+      if (!blockers_) throw;
+      blockers_->input.push_back({std::string(), 0, e.what()});
+      return;
+    }
+    if (!read) log_.add(ctx, block, pending.cards);
   }
 
   void include(const Context& ctx, Block& block, int depth) {
@@ -471,6 +483,7 @@ class DeckReader {
   DeckState& deck_;
   UnsupportedLog& log_;
   std::vector<Diagnostic>* warnings_;
+  Blockers* blockers_;
 };
 
 model::Model read_deck(std::streambuf& buf, const std::string& name, std::vector<Diagnostic>* warnings,
@@ -478,7 +491,7 @@ model::Model read_deck(std::streambuf& buf, const std::string& name, std::vector
   model::Model model;
   DeckState deck;
   UnsupportedLog log;
-  DeckReader reader(model, deck, log, warnings);
+  DeckReader reader(model, deck, log, warnings, options.blockers);
   std::error_code ec;
   const auto canonical = std::filesystem::weakly_canonical(name, ec);
   reader.enter(ec ? name : canonical.string());
@@ -487,7 +500,16 @@ model::Model read_deck(std::streambuf& buf, const std::string& name, std::vector
     throw InputError(name +
                      ": no keyword cards: this is not an LS-DYNA keyword deck (its cards start with "
                      "'*', e.g. *KEYWORD, *NODE)");
-  log.finish(model, warnings, options.ignore_unsupported);
+  log.finish(model, warnings, options.ignore_unsupported, options.blockers);
+  if (!options.blockers) {
+    resolve_node_sets(deck, model);
+    return model;
+  }
+  try {
+    resolve_node_sets(deck, model);
+  } catch (const Error& e) {
+    options.blockers->input.push_back({std::string(), 0, e.what()});
+  }
   return model;
 }
 

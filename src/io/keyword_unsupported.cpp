@@ -116,7 +116,7 @@ void UnsupportedLog::add(const Context& ctx, Block& block, int cards) {
   physics_.push_back({block.keyword, first_id(ctx, block), cards, ctx.source(block.line)});
 }
 
-void UnsupportedLog::finish(model::Model& model, std::vector<Diagnostic>* warnings, bool ignore) {
+void UnsupportedLog::finish(model::Model& model, std::vector<Diagnostic>* warnings, bool ignore, Blockers* blockers) {
   if (warnings)
     for (const auto& s : output_) {
       std::string msg = s.keyword + " skipped: " + std::string(classify(s.keyword).what) +
@@ -159,11 +159,18 @@ void UnsupportedLog::finish(model::Model& model, std::vector<Diagnostic>* warnin
     model.unsupported = std::move(physics_);
     return;
   }
+  const std::string summary = std::to_string(physics_.size()) +
+                              " unsupported card(s) that carry physics: the deck cannot be run as written "
+                              "(blockcontact --ignore-unsupported drops them and lists what it dropped)";
+  if (blockers) {
+    blockers->unimplemented.insert(blockers->unimplemented.end(), lines.begin(), lines.end());
+    blockers->unimplemented.push_back({std::string(), 0, summary});
+    model.unsupported = std::move(physics_);
+    return;
+  }
   std::string what;
   for (const auto& d : lines) what += to_string(d) + "\n";
-  what += std::to_string(physics_.size()) + " unsupported card(s) that carry physics: the deck cannot be run " +
-          "as written (blockcontact --ignore-unsupported drops them and lists what it dropped)";
-  throw NotImplementedError(what);
+  throw NotImplementedError(what + summary);
 }
 
 }  // namespace slideline::keyword

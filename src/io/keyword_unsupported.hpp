@@ -29,8 +29,9 @@ class UnsupportedLog {
   void add(const Context& ctx, Block& block, int cards);
   /// Emits one warning per output/tuning keyword; then throws NotImplementedError listing the
   /// physics cards (one line per keyword), or with `ignore` moves them to model.unsupported and
-  /// warns about each.
-  void finish(model::Model& model, std::vector<Diagnostic>* warnings, bool ignore);
+  /// warns about each, or with `blockers` (and not `ignore`) moves them to model.unsupported and
+  /// lists the lines it would throw in blockers->unimplemented.
+  void finish(model::Model& model, std::vector<Diagnostic>* warnings, bool ignore, Blockers* blockers = nullptr);
 
  private:
   struct Skipped {

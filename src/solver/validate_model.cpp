@@ -218,6 +218,12 @@ void check_dropped_references(const model::Model& m, Problems& p) {
 }  // namespace
 
 void validate_model(const model::Model& m, const BuildOptions& options) {
+  Blockers b = find_model_problems(m, options);
+  Problems p{std::move(b.input), std::move(b.unimplemented)};
+  if (!p.empty()) p.raise();
+}
+
+Blockers find_model_problems(const model::Model& m, const BuildOptions& options) {
   Problems p;
   add_empty_model_problems(m, "the model has no", p.input);
   check_dropped_references(m, p);
@@ -228,7 +234,7 @@ void validate_model(const model::Model& m, const BuildOptions& options) {
   validation::check_parts(m, p);
   validation::check_loads(m, p);
   validation::check_initial_velocities(m, p);
-  if (!p.empty()) p.raise();
+  return {std::move(p.input), std::move(p.unimplemented)};
 }
 
 }  // namespace slideline

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "slideline/core/blockers.hpp"
 #include "slideline/core/diagnostics.hpp"
 #include "slideline/model/model.hpp"
 
@@ -27,6 +28,13 @@ struct ReadOptions {
   /// Drop unsupported physics cards (listing each in Model::unsupported and in the warnings)
   /// instead of throwing NotImplementedError.
   bool ignore_unsupported = false;
+  /// When given, the reader goes on past what stops a deck and lists it here instead of throwing:
+  /// a card that is malformed or refused (InputError, NotImplementedError) is skipped whole, with
+  /// the rest of its keyword block, and reading goes on at the next keyword; the unsupported
+  /// physics cards (unless ignore_unsupported) are listed one line per keyword and dropped into
+  /// Model::unsupported. A model read with blockers is for reporting (`blockcontact check`), not
+  /// for running. Files that cannot be opened and non-text input still throw.
+  Blockers* blockers = nullptr;
 };
 
 /// Reads a keyword deck from a file (and the files it *INCLUDEs, relative to the including file).

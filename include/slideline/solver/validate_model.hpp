@@ -17,6 +17,7 @@
 /// The reader checks only the syntax of each field (io/keyword_reader.hpp). See docs/keywords.md.
 #include <vector>
 
+#include "slideline/core/blockers.hpp"
 #include "slideline/core/diagnostics.hpp"
 #include "slideline/model/model.hpp"
 #include "slideline/solver/build.hpp"
@@ -33,5 +34,9 @@ std::vector<Diagnostic> check_references(const model::Model& model);
 /// Throws InputError listing every bad input (one line each, collapsed over elements), or
 /// NotImplementedError when every problem is a feature not implemented yet. Returns when clean.
 void validate_model(const model::Model& model, const BuildOptions& options = {});
+
+/// The problems validate_model throws, returned instead (bad input and features not implemented
+/// apart, each line as it would be thrown); empty when clean.
+Blockers find_model_problems(const model::Model& model, const BuildOptions& options = {});
 
 }  // namespace slideline

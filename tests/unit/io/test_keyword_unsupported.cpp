@@ -35,7 +35,7 @@ TEST(KeywordUnsupported, PhysicsPrefixesAreErrorsOutputCardsAreNot) {
     const std::string what = refusal(std::string("*KEYWORD\n") + kw + "\n         1\n*END\n");
     EXPECT_EQ(what.rfind(std::string("u.k:2: ") + kw + " (", 0), 0u) << kw << ": " << what;
   }
-  for (const char* kw : {"*CONTROL_ENERGY", "*CONTROL_OUTPUT", "*CONTROL_SHELL", "*DATABASE_MATSUM",
+  for (const char* kw : {"*CONTROL_ENERGY", "*CONTROL_OUTPUT", "*CONTROL_CPU", "*DATABASE_MATSUM",
                          "*DATABASE_EXTENT_BINARY", "*DATABASE_BINARY_D3THDT"}) {
     std::vector<Diagnostic> warnings;
     EXPECT_NO_THROW(read_keyword_string(std::string("*KEYWORD\n") + kw + "\n         1\n*END\n", "u.k", &warnings))

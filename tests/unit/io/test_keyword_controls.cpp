@@ -1,0 +1,66 @@
+// The control cards whose fields change the physics (*CONTROL_SHELL, *CONTROL_ACCURACY,
+// *CONTROL_SOLID, *CONTROL_BULK_VISCOSITY): each field at its default passes silently, one that
+// would change the answer is refused naming file, line and field, never warned about as tuning.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/keyword_reader.hpp"
+
+namespace slideline {
+namespace {
+
+std::string refusal(const std::string& cards) {
+  try {
+    read_keyword_string("*KEYWORD\n" + cards + "*END\n", "c.k");
+  } catch (const NotImplementedError& e) {
+    return e.what();
+  }
+  return "(not refused)";
+}
+
+TEST(KeywordControls, DefaultsAndZerosReadSilently) {
+  const std::string zeros = "0,0,0,0,0,0,0,0\n";
+  const std::vector<std::string> decks = {
+      "*CONTROL_SHELL\n" + zeros + zeros + zeros + zeros, "*CONTROL_SHELL\n20,0,-1,0,2,2,1,0\n1,0,0,1,0\n",
+      "*CONTROL_ACCURACY\n0,1,0,0,0\n", "*CONTROL_ACCURACY\n\n", "*CONTROL_SOLID\n" + zeros + zeros,
+      "*CONTROL_SOLID\n0,0,4,1\n", "*CONTROL_BULK_VISCOSITY\n1.5,0.06,1,0\n", "*CONTROL_SHELL\n"};
+  for (const std::string& cards : decks) {
+    std::vector<Diagnostic> warnings;
+    EXPECT_NO_THROW(read_keyword_string("*KEYWORD\n" + cards + "*END\n", "c.k", &warnings)) << cards;
+    EXPECT_TRUE(warnings.empty()) << cards << (warnings.empty() ? "" : to_string(warnings[0]));
+  }
+  const auto m = read_keyword_string("*KEYWORD\n*CONTROL_BULK_VISCOSITY\n1.2,0.05,1\n*END\n", "c.k");
+  EXPECT_EQ(m.bulk_viscosity.q1, 1.2);
+  EXPECT_EQ(m.bulk_viscosity.q2, 0.05);
+}
+
+TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"*CONTROL_SHELL\n0,0,0,1\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = 1 (shell thickness change"},
+      {"*CONTROL_SHELL\n0,0,0,0,16\n", "c.k:3: *CONTROL_SHELL card 1: field THEORY = 16"},
+      {"*CONTROL_SHELL\n\n0,1\n", "c.k:4: *CONTROL_SHELL card 2: field INTGRD = 1"},
+      {"*CONTROL_ACCURACY\n1\n", "c.k:3: *CONTROL_ACCURACY card 1: field OSU = 1 (objective stress update"},
+      {"*CONTROL_ACCURACY\n0,2\n", "c.k:3: *CONTROL_ACCURACY card 1: field INN = 2 (invariant node numbering"},
+      {"*CONTROL_SOLID\n0,1\n", "c.k:3: *CONTROL_SOLID card 1: field FMATRX = 1"},
+      {"*CONTROL_BULK_VISCOSITY\n1.5,0.06,-2\n", "c.k:3: *CONTROL_BULK_VISCOSITY card 1: field TYPE = -2"},
+      {"*CONTROL_ACCURACY\n0\n1\n", "c.k:4: *CONTROL_ACCURACY: a card after card 1 is not read"},
+  };
+  for (const auto& [cards, expected] : cases) {
+    const std::string what = refusal(cards);
+    EXPECT_EQ(what.rfind(expected, 0), 0u) << cards << "\n" << what;
+  }
+}
+
+TEST(KeywordControls, TuningFieldsWarnNamingTheField) {
+  std::vector<Diagnostic> warnings;
+  read_keyword_string("*KEYWORD\n*CONTROL_SHELL\n15\n*CONTROL_SOLID\n1\n*END\n", "c.k", &warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(to_string(warnings[0]).find("c.k:3: *CONTROL_SHELL card 1: field WRPANG = 15"), std::string::npos);
+  EXPECT_NE(to_string(warnings[1]).find("c.k:5: *CONTROL_SOLID card 1: field ESORT = 1"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace slideline
