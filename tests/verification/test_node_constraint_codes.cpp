@@ -123,4 +123,18 @@ TEST(NodeConstraintCodes, BadCodeIsAnErrorNamingTheNodeAndField) {
   }
 }
 
+TEST(NodeConstraintCodes, CodesOnARigidPartAreRefusedNamingTheNode) {
+  std::string deck = plate_deck(Hold::codes, false);
+  const std::string elastic = "*MAT_ELASTIC\n1,0.1,1000,0.1\n";
+  ASSERT_NE(deck.find(elastic), std::string::npos);
+  deck.replace(deck.find(elastic), elastic.size(), "*MAT_RIGID\n1,0.1,1000,0.1\n");
+  try {
+    build_simulation(read_keyword_string(deck, "p.k"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("*NODE 1: field TC/RC constrains node 1 of rigid part 1"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
