@@ -86,11 +86,12 @@ def main():
     bar.Title = a.field
     bar.ComponentTitle = ""
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+    bar.WindowLocation = "Upper Right Corner"
     view.CameraPosition = [1.0, 1.0, 3.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.ResetCamera()
-    GetActiveCamera().Dolly(1.5)
+    GetActiveCamera().Dolly(1.35)
     SaveScreenshot(a.png, view, ImageResolution=a.size)
     print(f"{a.png}: state {a.state} of {len(times)} (t = {t}), coloured by {a.field}")
     if a.check:
