@@ -8,19 +8,35 @@
 
 namespace slideline {
 
+namespace {
+
+/// `name`, or when `used` holds it already name_2, name_3, ...; the result is added to `used`.
+/// A deck may give two interfaces or supports one name (two *BOUNDARY_PRESCRIBED_MOTION cards
+/// without _ID on one node set are both "motion_<nsid>"), and every channel path must be unique.
+std::string unique_name(std::vector<std::string>& used, const std::string& name) {
+  std::string n = name;
+  for (int k = 2; std::find(used.begin(), used.end(), n) != used.end(); ++k) n = name + "_" + std::to_string(k);
+  used.push_back(n);
+  return n;
+}
+
+}  // namespace
+
 void OutputRecorder::build_channels(const OutputSources& src) {
   channels_.clear();
   contact_outputs_.clear();
-  std::vector<std::string> names;
+  std::vector<std::string> names, used;
   for (const auto& c : src.contacts) {
-    channels_.push_back({"interfaces/" + c->name() + "/slave_force", 3});
-    channels_.push_back({"interfaces/" + c->name() + "/master_force", 3});
+    const std::string title = unique_name(used, c->name());
+    channels_.push_back({"interfaces/" + title + "/slave_force", 3});
+    channels_.push_back({"interfaces/" + title + "/master_force", 3});
     names.clear();
     c->append_output_names(names);
-    for (auto& s : names) channels_.push_back({"interfaces/" + c->name() + "/" + s, 3});
+    for (auto& s : names) channels_.push_back({"interfaces/" + title + "/" + s, 3});
     contact_outputs_.push_back(3 * names.size());
   }
-  for (const auto& g : src.supports) channels_.push_back({"supports/" + g.name + "/reaction", 3});
+  used.clear();
+  for (const auto& g : src.supports) channels_.push_back({"supports/" + unique_name(used, g.name) + "/reaction", 3});
   constraint_outputs_.clear();
   for (const auto& c : src.constraints) {
     names.clear();

@@ -277,6 +277,28 @@ TEST(StateOutput, NodalContactForcesAddUpToTheInterfaceForce) {
   }
 }
 
+TEST(StateOutput, RepeatedSupportNamesGetUniqueChannels) {
+  // Two *BOUNDARY_PRESCRIBED_MOTION_NODE cards without _ID on node 1 are both "motion_1": the
+  // second channel is motion_1_2 (the HDF5 writer refused the repeated dataset before).
+  model::Model m = test_support::hex_grid_model(1, 1, 1);
+  model::Curve c;
+  c.lcid = 1;
+  c.points = {{0.0, 0.0}, {1.0, 0.0}};
+  m.curves.push_back(c);
+  for (int dof : {1, 2}) {
+    model::PrescribedMotion p;
+    p.target = model::PrescribedMotion::Target::node;
+    p.nsid = 1;
+    p.dof = dof;
+    p.lcid = 1;
+    p.src = {"motion.k", dof};
+    m.prescribed_motions.push_back(p);
+  }
+  const fs::path h5 = run(m, 0.01, "repeated_names");
+  EXPECT_TRUE(hdf5_exists(h5.string(), "/supports/motion_1/reaction"));
+  EXPECT_TRUE(hdf5_exists(h5.string(), "/supports/motion_1_2/reaction"));
+}
+
 /// A stand-in law state with an effective plastic strain (as the J2 law's will have).
 struct PlasticState {
   Real eps = 0.25;
