@@ -7,9 +7,10 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <type_traits>
 
 #include "slideline/core/error.hpp"
+#include "xdmf_document.hpp"
 
 namespace slideline {
 namespace {
@@ -120,6 +121,26 @@ void write_string_attribute(hid_t obj, const char* name, const std::string& valu
   check(H5Awrite(attr.get(), type.get(), value.c_str()), "writing attribute");
 }
 
+/// Writes a (rows x cols) dataset with a "units" attribute (an output field, xdmf_document.hpp).
+template <class T>
+void write_field(hid_t file, const std::string& path, const std::vector<T>& data, hsize_t cols,
+                 std::string_view units) {
+  if constexpr (std::is_integral_v<T>)
+    write_fixed(file, path, H5T_NATIVE_INT64, H5T_STD_I64LE, data, cols);
+  else
+    write_fixed(file, path, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, data, cols);
+  Handle dset(check_id(H5Dopen2(file, path.c_str(), H5P_DEFAULT), "opening " + path), H5Dclose);
+  write_string_attribute(dset.get(), "units", std::string(units));
+}
+
+/// Index of the field called `name` in xdmf::kFields.
+std::size_t field_index(std::string_view name) {
+  std::size_t i = 0;
+  while (i < xdmf::kFieldCount && xdmf::kFields[i].name != name) ++i;
+  if (i == xdmf::kFieldCount) throw Error("HDF5 writer: no output field " + std::string(name));
+  return i;
+}
+
 }  // namespace
 
 struct Hdf5Writer::Impl {
@@ -135,18 +156,10 @@ struct Hdf5Writer::Impl {
   Series state_disp;
   std::vector<Real> x0;      // reference coordinates, 3 per node
   std::vector<Real> coords;  // one state's deformed coordinates x0 + u (the XDMF geometry)
-  std::vector<Real> disp;    // one state's displacements
-
-  /// The group holding state s's own (nodes x 3) datasets.
-  static std::string state_group(std::size_t s) { return "/states/state_" + std::to_string(s); }
-  std::vector<Real> state_times;  // for the XDMF file
-  std::size_t nodes = 0;
-  /// One XDMF grid per topology the mesh has cells of (the topologies in the description's order).
-  struct CellGrid {
-    const ElementTopology* topology;
-    std::size_t count;
-  };
-  std::vector<CellGrid> grids;
+  std::vector<Real> values;  // one field of one state, for writing
+  xdmf::Layout layout;       // grids, state times and the fields each state holds (the XDMF file)
+  std::vector<std::size_t> cell_group;  // per layout grid, its entry in MeshDescription::cells
+  std::uint32_t fixed_fields = 0;       // the fixed cell fields written at begin()
   bool begun = false;
 
   void write_buffer() {
@@ -168,58 +181,57 @@ struct Hdf5Writer::Impl {
 
   std::string xdmf_path() const { return std::filesystem::path(path).replace_extension(".xdmf").string(); }
 
-  void write_xdmf() const {
-    const std::string h5 = std::filesystem::path(path).filename().string();
-    std::ostringstream x;
-    x.precision(17);
-    x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n"
-      << "    <Grid Name=\"states\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (std::size_t s = 0; s < state_times.size(); ++s) {
-      // Per-state (nodes x 3) datasets, referenced directly: ParaView 5.11's Xdmf3 readers crash on
-      // HyperSlab and Function items, so the geometry is the stored deformed coordinates.
-      const auto slab = [&](const char* name) {
-        std::ostringstream d;
-        d << "          <DataItem Dimensions=\"" << nodes
-          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":" << state_group(s)
-          << "/" << name << "</DataItem>\n";
-        return d.str();
-      };
-      const auto grid = [&](const CellGrid& g, const std::string& time_tag) {
-        const ElementTopology& t = *g.topology;
-        x << "      <Grid Name=\"" << t.cell_set << "\" GridType=\"Uniform\">\n" << time_tag
-          << "        <Topology TopologyType=\"" << t.xdmf_cell << "\" NumberOfElements=\"" << g.count
-          << "\">\n"
-          << "          <DataItem Dimensions=\"" << g.count << " " << t.nodes
-          << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ":/mesh/" << t.cell_set
-          << "</DataItem>\n"
-          << "        </Topology>\n"
-          << "        <Geometry GeometryType=\"XYZ\">\n"
-          << slab("coordinates") << "        </Geometry>\n"
-          << "        <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
-          << slab("displacement") << "        </Attribute>\n"
-          << "      </Grid>\n";
-      };
-      if (grids.size() > 1) {
-        // Several topologies: a spatial collection of one grid each per state.
-        x << "     <Grid Name=\"state " << s << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-          << "      <Time Value=\"" << state_times[s] << "\"/>\n";
-        for (const CellGrid& g : grids) grid(g, "");
-        x << "     </Grid>\n";
-      } else if (grids.size() == 1) {
-        // One topology: the grid itself is the state (the layout every XDMF reader takes).
-        std::ostringstream tv;
-        tv.precision(17);
-        tv << "        <Time Value=\"" << state_times[s] << "\"/>\n";
-        grid(grids.front(), tv.str());
-      }
+  /// Writes field `name` of state s (nodal: `set` empty) when `data` is not empty, and marks it
+  /// in `mask`.
+  void state_field(std::string_view name, std::size_t s, std::string_view set, std::span<const Real> data,
+                   std::uint32_t& mask) {
+    if (data.empty()) return;
+    const std::size_t i = field_index(name);
+    const xdmf::Field& f = xdmf::kFields[i];
+    values.assign(data.begin(), data.end());
+    write_field(file, xdmf::field_path(f, s, set), values, static_cast<hsize_t>(f.components), f.units);
+    mask |= 1u << i;
+  }
+
+  /// The cell fields of state s (`cells` indexed as MeshDescription::cells).
+  void cell_fields(std::size_t s, std::span<const TopologyCellFields> cells, std::uint32_t& mask) {
+    for (std::size_t g = 0; g < layout.grids.size(); ++g) {
+      if (cell_group[g] >= cells.size()) continue;
+      const TopologyCellFields& c = cells[cell_group[g]];
+      const std::string_view set = layout.grids[g].topology->cell_set;
+      state_field("stress", s, set, c.stress, mask);
+      state_field("stress_bottom", s, set, c.stress_bottom, mask);
+      state_field("stress_top", s, set, c.stress_top, mask);
+      state_field("von_mises", s, set, c.von_mises, mask);
+      state_field("plastic_strain", s, set, c.plastic_strain, mask);
+      state_field("energy_density", s, set, c.energy_density, mask);
     }
-    x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  }
+
+  /// The fixed cell fields (part, material, thickness) of every grid, once.
+  void fixed_cell_fields(const MeshDescription& mesh) {
+    for (std::size_t g = 0; g < layout.grids.size(); ++g) {
+      if (cell_group[g] >= mesh.cell_info.size()) continue;
+      const TopologyCellInfo& info = mesh.cell_info[cell_group[g]];
+      const std::string_view set = layout.grids[g].topology->cell_set;
+      const auto fixed = [&](std::string_view name, const auto& data) {
+        const std::size_t i = field_index(name);
+        write_field(file, xdmf::field_path(xdmf::kFields[i], 0, set), data, 1, xdmf::kFields[i].units);
+        fixed_fields |= 1u << i;
+      };
+      fixed("part_id", info.part_ids);
+      fixed("material_id", info.material_ids);
+      if (layout.grids[g].topology->dimension == 2) fixed("thickness", info.thickness);
+    }
+  }
+
+  void write_xdmf() const {
     // Write then rename, so that a reader never sees a half-written file.
     const std::string target = xdmf_path();
     const std::string tmp = target + ".tmp";
     {
       std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      out << x.str();
+      out << xdmf::document(layout);
       if (!out) throw Error(tmp + ": write failed");
     }
     std::filesystem::rename(tmp, target);
@@ -237,6 +249,7 @@ struct Hdf5Writer::Impl {
 
 Hdf5Writer::Hdf5Writer(const std::string& path) : impl_(std::make_unique<Impl>()) {
   impl_->path = path;
+  impl_->layout.h5 = std::filesystem::path(path).filename().string();
   {
     // HDF5 prints its error stack on failure; the Error thrown below says it better.
     H5E_auto2_t func = nullptr;
@@ -280,21 +293,25 @@ void Hdf5Writer::begin(const std::vector<HistoryChannel>& channels, const MeshDe
   }
   d.width = static_cast<std::size_t>(off);
 
-  d.nodes = mesh.node_ids.size();
+  d.layout.nodes = mesh.node_ids.size();
   write_fixed(f, "/mesh/node_ids", H5T_NATIVE_INT64, H5T_STD_I64LE, mesh.node_ids, 1);
   write_fixed(f, "/mesh/coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, mesh.x0, 3);
-  for (const TopologyCells& c : mesh.cells) {
+  for (std::size_t i = 0; i < mesh.cells.size(); ++i) {
+    const TopologyCells& c = mesh.cells[i];
     write_fixed(f, "/mesh/" + std::string(c.topology->cell_set), H5T_NATIVE_INT32, H5T_STD_I32LE,
                 c.connectivity, static_cast<hsize_t>(c.topology->nodes));
-    if (c.count() > 0) d.grids.push_back({c.topology, c.count()});
+    if (c.count() > 0) {
+      d.layout.grids.push_back({c.topology, c.count()});
+      d.cell_group.push_back(i);
+    }
   }
+  d.fixed_cell_fields(mesh);
   d.state_time.create(f, "/states/time", {}, 64);
-  if (d.nodes > 0) {
-    d.state_disp.create(f, "/states/displacement", {hsize_t(d.nodes), 3}, 1);
+  if (d.layout.nodes > 0) {
+    d.state_disp.create(f, "/states/displacement", {hsize_t(d.layout.nodes), 3}, 1);
   }
   d.x0 = mesh.x0;
   d.coords.assign(mesh.x0.size(), 0.0);
-  d.disp.assign(mesh.x0.size(), 0.0);
 }
 
 void Hdf5Writer::write_history(Real t, std::span<const Real> values) {
@@ -307,23 +324,35 @@ void Hdf5Writer::write_history(Real t, std::span<const Real> values) {
   if (d.buffer_t.size() >= kHistoryBlock) d.write_buffer();
 }
 
-void Hdf5Writer::write_state(Real t, std::span<const Real> displacements) {
+void Hdf5Writer::write_state(Real t, const StateFields& state) {
   auto& d = *impl_;
-  if (displacements.size() != 3 * d.nodes)
-    throw Error(d.path + ": state has " + std::to_string(displacements.size()) + " values, expected " +
-                std::to_string(3 * d.nodes));
+  const std::size_t n3 = 3 * d.layout.nodes;
+  const auto check_size = [&](std::span<const Real> v, const char* what) {
+    if (!v.empty() && v.size() != n3)
+      throw Error(d.path + ": state " + what + " has " + std::to_string(v.size()) + " values, expected " +
+                  std::to_string(n3));
+  };
+  if (state.displacement.size() != n3)
+    throw Error(d.path + ": state has " + std::to_string(state.displacement.size()) + " displacement values, expected " +
+                std::to_string(n3));
+  check_size(state.velocity, "velocity");
+  check_size(state.acceleration, "acceleration");
+  check_size(state.contact_force, "contact force");
+  const std::size_t s = d.layout.times.size();
   d.state_time.append(&t, 1);
-  if (d.nodes > 0) {
-    d.state_disp.append(displacements.data(), 1);
-    for (std::size_t i = 0; i < d.coords.size(); ++i) {
-      d.disp[i] = displacements[i];
-      d.coords[i] = d.x0[i] + displacements[i];
-    }
-    const std::string g = Impl::state_group(d.state_times.size());
-    write_fixed(d.file, g + "/coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, d.coords, 3);
-    write_fixed(d.file, g + "/displacement", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, d.disp, 3);
+  std::uint32_t mask = d.fixed_fields;
+  if (d.layout.nodes > 0) {
+    d.state_disp.append(state.displacement.data(), 1);
+    for (std::size_t i = 0; i < d.coords.size(); ++i) d.coords[i] = d.x0[i] + state.displacement[i];
+    write_fixed(d.file, xdmf::state_group(s) + "/coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, d.coords, 3);
+    d.state_field("displacement", s, "", state.displacement, mask);
+    d.state_field("velocity", s, "", state.velocity, mask);
+    d.state_field("acceleration", s, "", state.acceleration, mask);
+    d.state_field("contact_force", s, "", state.contact_force, mask);
+    d.cell_fields(s, state.cells, mask);
   }
-  d.state_times.push_back(t);
+  d.layout.times.push_back(t);
+  d.layout.fields.push_back(mask);
 }
 
 void Hdf5Writer::flush() {

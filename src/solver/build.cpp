@@ -124,19 +124,18 @@ struct Builder {
         bv = {h.q1, h.q2};
       }
 
-      // Stiffness damping has nothing to act on in a rigid part.
+      // Stiffness damping has nothing to act on in a rigid part: build_rigid_part does not take it.
       const MaterialLaws laws = material_laws(*mit->second);
-      if (laws.rigid) {
-        build_rigid_part(part, std::get<model::MatRigid>(*mit->second), g, pn, shsec);
-        continue;
-      }
+      const std::size_t first_block = setup.blocks.size();
       const auto dit = damped.find(pid);
       const StiffnessDamping damping = dit == damped.end() ? StiffnessDamping{} : dit->second;
-      if (!g.quad_ids.empty()) {
+      if (laws.rigid)
+        build_rigid_part(part, std::get<model::MatRigid>(*mit->second), g, pn, shsec);
+      else if (!g.quad_ids.empty())
         build_shell_part(part, laws, g, shsec, qm, bv, damping);
-        continue;
-      }
-      build_solid_part(part, laws, g, ssec.at(part.secid, part.src, "SECID of *PART"), ihq, qm, bv, damping);
+      else
+        build_solid_part(part, laws, g, ssec.at(part.secid, part.src, "SECID of *PART"), ihq, qm, bv, damping);
+      for (std::size_t b = first_block; b < setup.blocks.size(); ++b) setup.blocks[b]->set_material_id(part.mid);
     }
   }
 

@@ -8,19 +8,35 @@
 
 namespace slideline {
 
+namespace {
+
+/// `name`, or when `used` holds it already name_2, name_3, ...; the result is added to `used`.
+/// A deck may give two interfaces or supports one name (two *BOUNDARY_PRESCRIBED_MOTION cards
+/// without _ID on one node set are both "motion_<nsid>"), and every channel path must be unique.
+std::string unique_name(std::vector<std::string>& used, const std::string& name) {
+  std::string n = name;
+  for (int k = 2; std::find(used.begin(), used.end(), n) != used.end(); ++k) n = name + "_" + std::to_string(k);
+  used.push_back(n);
+  return n;
+}
+
+}  // namespace
+
 void OutputRecorder::build_channels(const OutputSources& src) {
   channels_.clear();
   contact_outputs_.clear();
-  std::vector<std::string> names;
+  std::vector<std::string> names, used;
   for (const auto& c : src.contacts) {
-    channels_.push_back({"interfaces/" + c->name() + "/slave_force", 3});
-    channels_.push_back({"interfaces/" + c->name() + "/master_force", 3});
+    const std::string title = unique_name(used, c->name());
+    channels_.push_back({"interfaces/" + title + "/slave_force", 3});
+    channels_.push_back({"interfaces/" + title + "/master_force", 3});
     names.clear();
     c->append_output_names(names);
-    for (auto& s : names) channels_.push_back({"interfaces/" + c->name() + "/" + s, 3});
+    for (auto& s : names) channels_.push_back({"interfaces/" + title + "/" + s, 3});
     contact_outputs_.push_back(3 * names.size());
   }
-  for (const auto& g : src.supports) channels_.push_back({"supports/" + g.name + "/reaction", 3});
+  used.clear();
+  for (const auto& g : src.supports) channels_.push_back({"supports/" + unique_name(used, g.name) + "/reaction", 3});
   constraint_outputs_.clear();
   for (const auto& c : src.constraints) {
     names.clear();
@@ -42,9 +58,100 @@ void OutputRecorder::build_channels(const OutputSources& src) {
   last_state_ = -1.0;
 }
 
-void OutputRecorder::begin(const std::vector<OutputSink*>& sinks, const MeshDescription& mesh) {
+std::vector<std::vector<CellSlot>> output_cell_slots(const ElementBlocks& blocks,
+                                                     std::span<const TopologyCells> cells) {
+  std::vector<Index> next(cells.size(), 0);
+  std::vector<std::vector<CellSlot>> slots(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    slots[b].resize(static_cast<std::size_t>(blocks[b]->element_count()));
+    blocks[b]->topology().for_each_element([&](const TopologyRun& run, Index e, std::size_t) {
+      std::size_t t = 0;
+      while (t < cells.size() && cells[t].topology != run.topology) ++t;
+      if (t == cells.size()) throw Error("output: a block's topology has no cell group");
+      slots[b][static_cast<std::size_t>(e)] = {t, next[t]++};
+    });
+  }
+  return slots;
+}
+
+std::vector<TopologyCellInfo> output_cell_info(const ElementBlocks& blocks, std::span<const TopologyCells> cells) {
+  std::vector<TopologyCellInfo> info(cells.size());
+  for (std::size_t t = 0; t < cells.size(); ++t) {
+    info[t].part_ids.assign(cells[t].count(), 0);
+    info[t].material_ids.assign(cells[t].count(), 0);
+    info[t].thickness.assign(cells[t].count(), 0.0);
+  }
+  const auto slots = output_cell_slots(blocks, cells);
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    blocks[b]->topology().for_each_element([&](const TopologyRun& run, Index e, std::size_t) {
+      const CellSlot s = slots[b][static_cast<std::size_t>(e)];
+      const auto c = static_cast<std::size_t>(s.cell);
+      info[s.topology].part_ids[c] = blocks[b]->part_id();
+      info[s.topology].material_ids[c] = blocks[b]->material_id();
+      info[s.topology].thickness[c] = run.thickness;
+    });
+  return info;
+}
+
+void OutputRecorder::begin(const std::vector<OutputSink*>& sinks, const MeshDescription& mesh,
+                           const ElementBlocks& blocks) {
+  const std::size_t n3 = mesh.x0.size();
+  velocity_.assign(n3, 0.0);
+  acceleration_.assign(n3, 0.0);
+  contact_force_.assign(n3, 0.0);
+  slots_ = output_cell_slots(blocks, mesh.cells);
+  block_cells_.resize(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    block_cells_[b].assign(static_cast<std::size_t>(blocks[b]->element_count()), CellOutput{});
+  cell_fields_.assign(mesh.cells.size(), TopologyCellFields{});
+  for (std::size_t t = 0; t < mesh.cells.size(); ++t) {
+    const std::size_t n = mesh.cells[t].count();
+    TopologyCellFields& f = cell_fields_[t];
+    f.stress.assign(6 * n, 0.0);
+    if (mesh.cells[t].topology->dimension == 2) {
+      f.stress_bottom.assign(6 * n, 0.0);
+      f.stress_top.assign(6 * n, 0.0);
+    }
+    f.von_mises.assign(n, 0.0);
+    f.plastic_strain.assign(n, 0.0);
+    f.energy_density.assign(n, 0.0);
+  }
   for (auto* s : sinks) s->begin(channels_, mesh);
   sinks_ = &sinks;
+}
+
+void OutputRecorder::collect_state(const OutputSources& src) {
+  const NodalFields& nodes = src.nodes;
+  const auto put = [](std::vector<Real>& out, const Vec3Field& f, std::size_t i) {
+    out[3 * i] = f.x[i];
+    out[3 * i + 1] = f.y[i];
+    out[3 * i + 2] = f.z[i];
+  };
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    state_values_[3 * i] = nodes.x.x[i] - nodes.x0.x[i];
+    state_values_[3 * i + 1] = nodes.x.y[i] - nodes.x0.y[i];
+    state_values_[3 * i + 2] = nodes.x.z[i] - nodes.x0.z[i];
+    put(velocity_, nodes.v, i);
+    put(acceleration_, nodes.a, i);
+    if (!nodes.f_contact.x.empty()) put(contact_force_, nodes.f_contact, i);
+  }
+  for (std::size_t b = 0; b < src.blocks.size(); ++b) {
+    src.blocks[b]->cell_outputs(nodes, block_cells_[b]);
+    for (std::size_t e = 0; e < block_cells_[b].size(); ++e) {
+      const CellOutput& c = block_cells_[b][e];
+      const CellSlot s = slots_[b][e];
+      TopologyCellFields& f = cell_fields_[s.topology];
+      const auto k = static_cast<std::size_t>(s.cell);
+      std::copy(c.stress.begin(), c.stress.end(), f.stress.begin() + static_cast<std::ptrdiff_t>(6 * k));
+      if (!f.stress_top.empty()) {
+        std::copy(c.stress_bottom.begin(), c.stress_bottom.end(), f.stress_bottom.begin() + static_cast<std::ptrdiff_t>(6 * k));
+        std::copy(c.stress_top.begin(), c.stress_top.end(), f.stress_top.begin() + static_cast<std::ptrdiff_t>(6 * k));
+      }
+      f.von_mises[k] = von_mises(c.stress);
+      f.plastic_strain[k] = c.plastic_strain;
+      f.energy_density[k] = c.energy_density;
+    }
+  }
 }
 
 void OutputRecorder::end() {
@@ -96,14 +203,9 @@ void OutputRecorder::record(const OutputSources& src, Real t, Real history_inter
   const Real si = state_interval;
   if (si > 0.0 && (force || last_state_ < 0.0 || t >= next_output_time(si, last_state_) - tol) &&
       t != last_state_) {
-    const NodalFields& nodes = src.nodes;
-    const std::size_t n = nodes.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      state_values_[3 * i] = nodes.x.x[i] - nodes.x0.x[i];
-      state_values_[3 * i + 1] = nodes.x.y[i] - nodes.x0.y[i];
-      state_values_[3 * i + 2] = nodes.x.z[i] - nodes.x0.z[i];
-    }
-    for (auto* s : sinks) s->write_state(t, state_values_);
+    collect_state(src);
+    const StateFields state{state_values_, velocity_, acceleration_, contact_force_, cell_fields_};
+    for (auto* s : sinks) s->write_state(t, state);
     last_state_ = t;
   }
 }

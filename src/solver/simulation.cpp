@@ -46,6 +46,7 @@ MeshDescription Simulation::mesh_description() const {
     m.x0[3 * i + 2] = nodes_.x0.z[i];
   }
   m.cells = cells_by_topology(mesh_blocks(blocks_));
+  m.cell_info = output_cell_info(blocks_, m.cells);
   return m;
 }
 
@@ -186,7 +187,7 @@ void Simulation::classify_contact_nodes() {
 }
 
 OutputSources Simulation::output_sources() const {
-  return OutputSources{nodes_, contacts_, supports_, constraints_, history_nodes_, ledger_.report()};
+  return OutputSources{nodes_, blocks_, contacts_, supports_, constraints_, history_nodes_, ledger_.report()};
 }
 
 void Simulation::update_damping_coefficients() {
@@ -324,7 +325,7 @@ void Simulation::advance(const StepPlan& plan) {
 void Simulation::run(const std::vector<OutputSink*>& sinks,
                      const std::function<void(const Simulation&)>& progress, long progress_every) {
   if (!initialized_) initialize();
-  recorder_.begin(sinks, mesh_description());
+  recorder_.begin(sinks, mesh_description(), blocks_);
   try {
     while (step()) {
       if (progress && progress_every > 0 && cycle_ % progress_every == 0) progress(*this);

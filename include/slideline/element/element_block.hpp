@@ -12,6 +12,7 @@
 #include "slideline/core/parallel.hpp"
 
 #include "slideline/core/types.hpp"
+#include "slideline/element/cell_output.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
 #include "slideline/mesh/mesh_block.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
@@ -108,9 +109,21 @@ class ElementBlock : public MeshBlock {
   virtual Real compute_forces(const NodalFields& nodes, Real dt, CornerBuffer& corners,
                               BlockEnergy& energy) = 0;
 
+  /// The output values of every element at the current state (`out`: element_count() entries, in
+  /// element order), for the state output; not called inside a step. A block without stresses
+  /// (a rigid part) reports zeros.
+  virtual void cell_outputs(const NodalFields& /*nodes*/, std::span<CellOutput> out) const {
+    std::fill(out.begin(), out.end(), CellOutput{});
+  }
+
+  /// Deck id of the block's material (*PART MID), for the output; 0 when not set.
+  Id material_id() const { return material_id_; }
+  void set_material_id(Id mid) { material_id_ = mid; }
+
  protected:
   Index force_base_ = 0;
   Index moment_base_ = 0;
+  Id material_id_ = 0;
 };
 
 /// The blocks of a model, in the order their segments and output cells are listed.

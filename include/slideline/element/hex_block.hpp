@@ -76,6 +76,34 @@ class HexBlock final : public ElementBlock {
   std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
+  /// ElementBlock::cell_outputs: the law's stress at the current geometry (its state advanced
+  /// over a zero step on a copy, so the output never moves the law), the state's effective plastic
+  /// strain and, for a law with a strain energy W(F) (`energy_density`), W per reference volume.
+  void cell_outputs(const NodalFields& nodes, std::span<CellOutput> out) const override {
+    const Index ne = element_count();
+    Tensor3<Lanes> no_rate;
+    for (auto& row : no_rate)
+      for (Lanes& v : row) v = Lanes::Zero();
+    for (Index e0 = 0; e0 < ne; e0 += kLanes) {
+      Batch bt;
+      gather_batch(nodes, e0, bt);
+      const Tensor3<Lanes> F = inverse(inverse_deformation_gradient(bt));
+      const State& held = state_[e0 / kLanes];
+      State copy = held;
+      const Tensor3<Lanes> sigma = mat_.update(copy, F, no_rate, 0.0);
+      Lanes w = Lanes::Zero();
+      if constexpr (requires { { mat_.energy_density(F) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(F);
+      const int valid = static_cast<int>(std::min<Index>(kLanes, ne - e0));
+      for (int l = 0; l < valid; ++l) {
+        CellOutput& c = out[static_cast<std::size_t>(e0 + l)];
+        c.stress = sym6(sigma, l);
+        c.stress_bottom = c.stress_top = c.stress;
+        c.plastic_strain = plastic_strain_of(held, l);
+        c.energy_density = w[l];
+      }
+    }
+  }
+
   void initialize(NodalFields& nodes) override {
     const Index ne = element_count();
     for (Index e = 0; e < ne; ++e) {

@@ -319,7 +319,38 @@ class BasicShellBlock final : public ElementBlock {
     return a * stress(e, i1).template head<3>() + (1.0 - a) * stress(e, i2).template head<3>();
   }
 
+  /// ElementBlock::cell_outputs: global stress at the mid surface (the middle through-thickness
+  /// point; the mean of the two middle points for an even count) and at the outermost points,
+  /// the plastic strain at the mid surface (the law state's `eps`, where it has one) and the
+  /// thickness average of the law's energy density (`energy_density(state, shear factor)`).
+  void cell_outputs(const NodalFields& nodes, std::span<CellOutput> out) const override {
+    const int n = rule_.n;
+    const int lo = (n - 1) / 2, hi = n / 2;  // the middle point(s)
+    for (Index e = 0; e < element_count(); ++e) {
+      const shell_bt::LocalGeometry g = shell_bt::local_geometry(gather(nodes.x, e));
+      const State* st = state_.data() + static_cast<std::size_t>(e) * n;
+      CellOutput& c = out[static_cast<std::size_t>(e)];
+      c.stress_bottom = global_stress(g.e, stress(e, 0));
+      c.stress_top = global_stress(g.e, stress(e, n - 1));
+      const SymTensor6 a = global_stress(g.e, stress(e, lo)), b = global_stress(g.e, stress(e, hi));
+      for (int k = 0; k < 6; ++k) c.stress[k] = 0.5 * (a[k] + b[k]);
+      c.plastic_strain = 0.5 * (plastic_strain_of(st[lo]) + plastic_strain_of(st[hi]));
+      c.energy_density = 0.0;
+      if constexpr (requires { { mat_.energy_density(st[0], sec_.shear_factor) } -> std::convertible_to<Real>; })
+        for (int ip = 0; ip < n; ++ip) c.energy_density += 0.5 * rule_.w[ip] * mat_.energy_density(st[ip], sec_.shear_factor);
+    }
+  }
+
  private:
+  /// A point's local stress (xx, yy, xy, yz, xz; zz = 0) in global components, e = the
+  /// element's frame (columns e1, e2, e3).
+  static SymTensor6 global_stress(const Mat3& e, const Eigen::Matrix<Real, 5, 1>& s) {
+    Mat3 local;
+    local << s[0], s[2], s[4], s[2], s[1], s[3], s[4], s[3], 0.0;
+    const Mat3 g = e * local * e.transpose();
+    return {g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2)};
+  }
+
   shell_bt::NodeMat gather(const Vec3Field& f, Index e) const {
     return gather_rows<4>(f, conn_.data() + 4 * static_cast<std::size_t>(e));
   }

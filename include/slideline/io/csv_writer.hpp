@@ -16,7 +16,7 @@ class CsvWriter final : public OutputSink {
 
   void begin(const std::vector<HistoryChannel>& channels, const MeshDescription& mesh) override;
   void write_history(Real t, std::span<const Real> values) override;
-  void write_state(Real, std::span<const Real>) override {}
+  void write_state(Real, const StateFields&) override {}
   void flush() override;
 
   /// The header columns for a channel list (without the leading "time").

@@ -11,6 +11,13 @@
 ///   /mesh/quadrilaterals          (Q x 4)          internal node indices (0-based)
 ///   /states/time                  (S)              state times
 ///   /states/displacement          (S x N x 3)      nodal displacements
+///   /states/state_<k>/<field>     (N x 3)          coordinates, displacement, velocity,
+///                                                  acceleration, contact_force of state k
+///   /states/state_<k>/<cells>/<f> (C x 6) or (C)   stress (+ stress_bottom, stress_top for
+///                                                  shells), von_mises, plastic_strain,
+///                                                  energy_density of state k
+///   /mesh/<cells>_<f>             (C)              part_id, material_id (+ thickness, shells)
+/// (the field table: src/io/xdmf_document.hpp; docs/output.md).
 /// Histories are buffered and appended in blocks; flush() writes the buffer, flushes the file
 /// and rewrites `<name>.xdmf`, so a run that stops early keeps everything up to its last flush.
 #include <memory>
@@ -32,7 +39,7 @@ class Hdf5Writer final : public OutputSink {
 
   void begin(const std::vector<HistoryChannel>& channels, const MeshDescription& mesh) override;
   void write_history(Real t, std::span<const Real> values) override;
-  void write_state(Real t, std::span<const Real> displacements) override;
+  void write_state(Real t, const StateFields& state) override;
   void flush() override;
 
   const std::string& path() const;

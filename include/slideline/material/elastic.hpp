@@ -28,6 +28,18 @@ class ElasticSolid : public IsotropicModuli {
     return cauchy_stress(F);
   }
 
+  /// Strain energy W = lambda/2 tr(E)^2 + mu E : E per unit reference volume (force/length^2).
+  template <class T>
+  T energy_density(const Tensor3<T>& F) const {
+    Tensor3<T> E = transpose_times(F);
+    for (int i = 0; i < 3; ++i) E[i][i] -= 1.0;
+    T ee = E[0][0] * 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) ee += 0.25 * E[i][j] * E[i][j];
+    const T tr = 0.5 * (E[0][0] + E[1][1] + E[2][2]);
+    return 0.5 * lame_lambda() * tr * tr + shear_modulus() * ee;
+  }
+
   /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
   Mat3 cauchy_stress(const Mat3& F) const { return to_mat3(cauchy_stress(to_tensor3(F))); }
 

@@ -59,6 +59,15 @@ class ElasticShell {
 
   ShellStress stress(const State& state) const { return state.sigma; }
 
+  /// Strain energy per unit volume held at a point, sigma : C^-1 : sigma / 2 (force/length^2), with
+  /// the transverse shear modulus k G (k = `shear_factor`).
+  Real energy_density(const State& state, Real shear_factor) const {
+    const ShellStress& s = state.sigma;
+    const Real exx = (s[0] - nu_ * s[1]) / e_, eyy = (s[1] - nu_ * s[0]) / e_;
+    const Real in_plane = s[0] * exx + s[1] * eyy + s[2] * s[2] / k_.g;
+    return 0.5 * (in_plane + (s[3] * s[3] + s[4] * s[4]) / (shear_factor * k_.g));
+  }
+
  private:
   Real rho_, e_, nu_;
   PlaneStressStiffness k_;

@@ -35,6 +35,20 @@ class MooneyRivlin : public IsotropicModuli {
     return cauchy_stress(F);
   }
 
+  /// Strain energy W(F) per unit reference volume (force/length^2), the formula above.
+  template <class T>
+  T energy_density(const Tensor3<T>& F) const {
+    const Tensor3<T> bt = times_transpose(F);
+    const T J = determinant(F);
+    const T i1 = bt[0][0] + bt[1][1] + bt[2][2];
+    T bb = bt[0][0] * 0.0;  // tr(Bt^2), for I2 = (I1^2 - tr(Bt^2)) / 2
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) bb += bt[i][j] * bt[j][i];
+    const T i2 = 0.5 * (i1 * i1 - bb);
+    const T i3 = J * J;
+    return a_ * (i1 - 3.0) + b_ * (i2 - 3.0) + c_ * (1.0 / (i3 * i3) - 1.0) + d_ * (i3 - 1.0) * (i3 - 1.0);
+  }
+
   /// Cauchy stress for the deformation gradient F (3x3, dimensionless).
   Mat3 cauchy_stress(const Mat3& F) const { return to_mat3(cauchy_stress(to_tensor3(F))); }
 

@@ -8,6 +8,7 @@
 
 #include "slideline/contact/contact_manager.hpp"
 #include "slideline/core/types.hpp"
+#include "slideline/element/element_block.hpp"
 #include "slideline/solver/output_sink.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/solver/boundary.hpp"
@@ -17,15 +18,32 @@
 namespace slideline {
 
 /// What the recorder reads: interface forces and outputs, support reactions, constraint outputs,
-/// the displacement of the history nodes and the energies.
+/// the displacement of the history nodes and the energies; the nodal fields and the element
+/// blocks' cell outputs for the states.
 struct OutputSources {
   const NodalFields& nodes;
+  const ElementBlocks& blocks;
   const ContactManager& contacts;
   const std::vector<SupportGroup>& supports;
   const std::vector<std::unique_ptr<NodalConstraint>>& constraints;
   std::span<const Index> history_nodes;  ///< internal indices
   const EnergyReport& energy;
 };
+
+/// Where an element goes in the output cells: its topology's entry in MeshDescription::cells and
+/// its cell index there.
+struct CellSlot {
+  std::size_t topology = 0;
+  Index cell = 0;
+};
+
+/// The slot of every element of every block (result[b][e]), for the cell groups `cells`
+/// (cells_by_topology's order: a topology's cells in block then element order).
+std::vector<std::vector<CellSlot>> output_cell_slots(const ElementBlocks& blocks,
+                                                     std::span<const TopologyCells> cells);
+
+/// The per-cell values fixed for the run (part, material, thickness), by topology as `cells`.
+std::vector<TopologyCellInfo> output_cell_info(const ElementBlocks& blocks, std::span<const TopologyCells> cells);
 
 class OutputRecorder {
  public:
@@ -35,7 +53,8 @@ class OutputRecorder {
   const std::vector<HistoryChannel>& channels() const { return channels_; }
 
   /// The sinks written by record() until end() (begin() calls their begin()).
-  void begin(const std::vector<OutputSink*>& sinks, const MeshDescription& mesh);
+  /// Also sizes the state buffers for `blocks` (the blocks `mesh` describes).
+  void begin(const std::vector<OutputSink*>& sinks, const MeshDescription& mesh, const ElementBlocks& blocks);
   /// Flushes the sinks and forgets them.
   void end();
 
@@ -46,7 +65,14 @@ class OutputRecorder {
 
  private:
   void collect_history(const OutputSources& src);
+  void collect_state(const OutputSources& src);
 
+  // State buffers, sized by begin(): nodal vectors (3 per node), the blocks' cell outputs and
+  // their scatter into the topologies' cells.
+  std::vector<Real> velocity_, acceleration_, contact_force_;
+  std::vector<std::vector<CellOutput>> block_cells_;
+  std::vector<std::vector<CellSlot>> slots_;
+  std::vector<TopologyCellFields> cell_fields_;
   std::vector<HistoryChannel> channels_;
   std::vector<std::size_t> contact_outputs_;     // extra history values each interface writes
   std::vector<std::size_t> constraint_outputs_;  // history values each constraint writes

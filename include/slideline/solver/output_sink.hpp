@@ -22,6 +22,13 @@ struct HistoryChannel {
   int components = 1;
 };
 
+/// Per-cell values of one topology that do not change during a run.
+struct TopologyCellInfo {
+  std::vector<Id> part_ids;       ///< deck *PART id of each cell
+  std::vector<Id> material_ids;   ///< deck material id (*PART MID) of each cell
+  std::vector<Real> thickness;    ///< section thickness of each cell (length; 0 for solids)
+};
+
 /// What a sink needs to describe the mesh (reference configuration) for state output.
 struct MeshDescription {
   std::vector<Id> node_ids;
@@ -30,6 +37,29 @@ struct MeshDescription {
   /// all_topologies order, empty where the model has none). Writers write each group as its
   /// topology says (HDF5 /mesh/<cell_set>, XDMF TopologyType xdmf_cell).
   std::vector<TopologyCells> cells;
+  /// Per-cell values fixed for the run, one entry per `cells` entry (same order), cells in the
+  /// same order; empty when the producer has none.
+  std::vector<TopologyCellInfo> cell_info;
+};
+
+/// One state's cell fields of one topology (an entry per MeshDescription::cells entry).
+struct TopologyCellFields {
+  std::vector<Real> stress;          ///< 6 per cell: Cauchy xx, yy, zz, xy, yz, xz (force/length^2)
+  std::vector<Real> stress_bottom;   ///< 6 per cell (surface topologies): outermost point, -z side
+  std::vector<Real> stress_top;      ///< 6 per cell (surface topologies): outermost point, +z side
+  std::vector<Real> von_mises;       ///< 1 per cell (force/length^2)
+  std::vector<Real> plastic_strain;  ///< 1 per cell (dimensionless)
+  std::vector<Real> energy_density;  ///< 1 per cell (energy per reference volume)
+};
+
+/// One output state. Nodal vectors hold 3 values per node (x, y, z interleaved); an empty span
+/// (or empty `cells`) means the producer does not record that field.
+struct StateFields {
+  std::span<const Real> displacement;   ///< u = x - x0 (length)
+  std::span<const Real> velocity;       ///< length/time
+  std::span<const Real> acceleration;   ///< length/time^2
+  std::span<const Real> contact_force;  ///< the contact forces on each node (force)
+  std::span<const TopologyCellFields> cells;
 };
 
 class OutputSink {
@@ -39,8 +69,8 @@ class OutputSink {
   virtual void begin(const std::vector<HistoryChannel>& channels, const MeshDescription& mesh) = 0;
   /// One history record: values of every channel in order, components flattened.
   virtual void write_history(Real t, std::span<const Real> values) = 0;
-  /// One nodal state: displacements, 3 per node (x, y, z interleaved).
-  virtual void write_state(Real t, std::span<const Real> displacements) = 0;
+  /// One state at time t (see StateFields).
+  virtual void write_state(Real t, const StateFields& state) = 0;
   /// Makes everything written so far durable (called at the end and when a run stops early).
   virtual void flush() = 0;
 };
@@ -62,7 +92,7 @@ class History final : public OutputSink {
     time_.push_back(t);
     data_.insert(data_.end(), values.begin(), values.end());
   }
-  void write_state(Real, std::span<const Real>) override {}
+  void write_state(Real, const StateFields&) override {}
   void flush() override {}
 
   const std::vector<Real>& time() const { return time_; }

@@ -88,7 +88,7 @@ void write_run(OutputSink& sink, const MeshDescription& mesh) {
     if (r % 500 == 0) {
       std::vector<Real> u(3 * mesh.node_ids.size());
       for (std::size_t k = 0; k < u.size(); ++k) u[k] = 0.01 * r + 1e-3 * k;
-      sink.write_state(0.001 * r, u);
+      sink.write_state(0.001 * r, StateFields{.displacement = u});
     }
   }
 }
@@ -152,7 +152,7 @@ TEST(Hdf5Writer, UnflushedTailIsWrittenByTheDestructorAndBadRecordsThrow) {
     Hdf5Writer w(path.string());
     write_run(w, fake_mesh());
     EXPECT_THROW(w.write_history(1.0, std::vector<Real>(3)), Error);
-    EXPECT_THROW(w.write_state(1.0, std::vector<Real>(5)), Error);
+    EXPECT_THROW(w.write_state(1.0, StateFields{.displacement = std::vector<Real>(5)}), Error);
   }
   std::vector<std::size_t> dims;
   read_doubles(path, "/energy/internal", &dims);
