@@ -185,6 +185,8 @@ void read_section_shell(const Context& ctx, Block& block, model::Model& model, b
 void read_mat_elastic(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_mooney_rivlin(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_rigid(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_plastic_kinematic(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_piecewise_linear(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_hourglass(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_set_node(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_set_part(const Context& ctx, Block& block, model::Model& model, bool titled);

@@ -125,7 +125,7 @@ struct Builder {
       }
 
       // Stiffness damping has nothing to act on in a rigid part.
-      const MaterialLaws laws = material_laws(*mit->second);
+      const MaterialLaws laws = material_laws(*mit->second, m.curves);
       if (laws.rigid) {
         build_rigid_part(part, std::get<model::MatRigid>(*mit->second), g, pn, shsec);
         continue;

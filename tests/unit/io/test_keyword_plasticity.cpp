@@ -1,0 +1,87 @@
+// The plasticity cards (*MAT_PLASTIC_KINEMATIC, *MAT_PIECEWISE_LINEAR_PLASTICITY): every field
+// read, what is not built refused with file, line and field, the registry's law from the card.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/material_registry.hpp"
+
+using namespace slideline;
+
+namespace {
+
+std::string thrown(const std::string& deck) {
+  try {
+    read_keyword_string(deck, "p.k", nullptr);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST(KeywordPlasticity, PlasticKinematicFields) {
+  const auto m = read_keyword_string(
+      "*MAT_PLASTIC_KINEMATIC_TITLE\nsteel\n"
+      "         5    7.8e-9    2.0e+5       0.3     250.0    2000.0       0.5\n"
+      "      40.4       5.0\n",
+      "p.k", nullptr);
+  const auto& k = std::get<model::MatPlasticKinematic>(m.materials.at(0));
+  EXPECT_EQ(k.mid, 5);
+  EXPECT_EQ(k.title, "steel");
+  EXPECT_DOUBLE_EQ(k.sigy, 250.0);
+  EXPECT_DOUBLE_EQ(k.etan, 2000.0);
+  EXPECT_DOUBLE_EQ(k.beta, 0.5);
+  EXPECT_DOUBLE_EQ(k.src_c, 40.4);
+  EXPECT_DOUBLE_EQ(k.srp, 5.0);
+  const std::string card1 = "*MAT_003\n         5    7.8e-9    2.0e+5       0.3     250.0\n";
+  EXPECT_EQ(thrown(card1 + ",,0.3\n"),
+            "p.k:3: *MAT_003: field FS (failure strain, element erosion) is not implemented; leave it "
+            "blank");
+  EXPECT_NE(thrown(card1 + ",,,1.0\n").find("p.k:3: *MAT_003: field VP = 1.0"),
+            std::string::npos);
+}
+
+TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
+  const auto m = read_keyword_string(
+      "*MAT_PIECEWISE_LINEAR_PLASTICITY\n"
+      "         7    7.8e-9    2.0e+5       0.3     200.0    1000.0\n"
+      ",,,,1.0\n"
+      "0.0,0.01,0.1\n"
+      "     200.0     220.0     300.0\n"
+      "*MAT_024\n"
+      "         8    7.8e-9    2.0e+5       0.3\n"
+      "0.0,0.0,3,4\n"
+      "*DEFINE_CURVE\n3,,2.0,0.5\n0.0, 100.0\n1.0, 200.0\n"
+      "*DEFINE_CURVE\n4\n0.0, 1.0\n100.0, 2.0\n",
+      "p.k", nullptr);
+  const auto& t = std::get<model::MatPiecewiseLinearPlasticity>(m.materials.at(0));
+  EXPECT_EQ(t.vp, 1.0);
+  EXPECT_DOUBLE_EQ(t.eps[2], 0.1);
+  EXPECT_DOUBLE_EQ(t.es[2], 300.0);
+  const auto& law = std::get<PiecewisePlasticity>(*material_laws(m.materials.at(0), m.curves).solid);
+  ASSERT_EQ(law.constants().hardening.size(), 3u);  // the table to its last non-zero ES
+  EXPECT_DOUBLE_EQ(law.yield_stress(0.055), 260.0);
+  EXPECT_TRUE(law.constants().viscoplastic);
+  // LCSS with SFA = 2, SFO = 0.5: the yield curve (0, 50) - (2, 100); LCSR the factor curve.
+  const auto& c = std::get<PiecewisePlasticity>(*material_laws(m.materials.at(1), m.curves).solid);
+  EXPECT_DOUBLE_EQ(c.yield_stress(1.0), 75.0);
+  EXPECT_DOUBLE_EQ(c.rate_factor(50.0), 1.5);
+  EXPECT_FALSE(c.constants().viscoplastic);
+  // Without curve or table: SIGY and the hardening modulus E ETAN / (E - ETAN).
+  const auto e = read_keyword_string("*MAT_024\n1,1.0,1000.0,0.3,2.0,10.0\n", "p.k", nullptr);
+  const auto& b = std::get<PiecewisePlasticity>(*material_laws(e.materials.at(0)).solid);
+  EXPECT_DOUBLE_EQ(b.yield_stress(0.1), 2.0 + 0.1 * 1000.0 * 10.0 / 990.0);
+
+  const std::string card1 = "*MAT_024\n         8    7.8e-9    2.0e+5       0.3     200.0\n";
+  EXPECT_EQ(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,0.2\n"),
+            "p.k:2: *MAT_024: field FAIL (element erosion) is not implemented; leave it blank");
+  EXPECT_NE(thrown(card1 + ",,,,-1.0\n").find("p.k:3: *MAT_024: field VP = -1.0"),
+            std::string::npos);
+  EXPECT_NE(thrown(card1 + "40.0,5.0,,4\n").find("p.k:3:"), std::string::npos);
+  EXPECT_NE(thrown(card1 + ",,,,,9\n").find("field LCF"),
+            std::string::npos);
+}
