@@ -56,8 +56,8 @@ MaterialLaws material_laws(const model::Material& material, std::span<const mode
           [&](const model::MatPiecewiseLinearPlasticity& m) {
             return MaterialLaws{piecewise_law(m, curves), std::nullopt, false, "*MAT_PIECEWISE_LINEAR_PLASTICITY"};
           },
-          [](const model::MatNull&) {
-            return MaterialLaws{std::nullopt, std::nullopt, false, "*MAT_NULL"};
+          [](const model::MatNull& m) {
+            return MaterialLaws{std::nullopt, NullShell(m.ro, m.ym, m.pr), false, "*MAT_NULL"};
           },
           [](const model::MatRigid&) {
             return MaterialLaws{std::nullopt, std::nullopt, true, "*MAT_RIGID"};

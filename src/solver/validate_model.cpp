@@ -109,10 +109,10 @@ void check_materials(const model::Model& m, Problems& p) {
             },
             [&](const model::MatPlasticKinematic& x) { check_plastic_kinematic(x, p); },
             [&](const model::MatPiecewiseLinearPlasticity& x) { check_piecewise_linear(m, x, p); },
-            [&](const model::MatNull& x) {
+            [&](const model::MatNull& x) {  // shells only: YM, PR set their step and contact stiffness
               positive(p, x.src, "*MAT_NULL", "RO", x.ro);
-              if (x.ym != 0.0) positive(p, x.src, "*MAT_NULL", "YM", x.ym);
-              if (x.pr != 0.0) poisson(p, x.src, "*MAT_NULL", x.pr);
+              positive(p, x.src, "*MAT_NULL", "YM", x.ym);
+              poisson(p, x.src, "*MAT_NULL", x.pr);
             },
             [&](const model::MatRigid& x) {
               positive(p, x.src, "*MAT_RIGID", "RO", x.ro);

@@ -97,6 +97,7 @@ void check_solid_part(const model::Part& part, const model::SectionSolid* sec, c
            std::to_string(part.pid) + " is not implemented (use 1-3 viscous or 10 physical stiffness)");
   if (!laws.solid)
     p.todo(describe(part.src) + ": part " + std::to_string(part.pid) + " combines solids with " + laws.keyword +
+           (std::string(laws.keyword) == "*MAT_NULL" ? " (a solid of it needs an equation of state, *EOS_...)" : "") +
            ", which is not implemented");
 }
 

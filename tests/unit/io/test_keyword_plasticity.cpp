@@ -2,6 +2,7 @@
 // read, what is not built refused with file, line and field, the registry's law from the card.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "slideline/core/error.hpp"
@@ -84,4 +85,22 @@ TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
   EXPECT_NE(thrown(card1 + "40.0,5.0,,4\n").find("p.k:3:"), std::string::npos);
   EXPECT_NE(thrown(card1 + ",,,,,9\n").find("field LCF"),
             std::string::npos);
+}
+
+TEST(KeywordPlasticity, NullMaterialFieldsAndRefusals) {
+  const auto m = read_keyword_string("*MAT_NULL\n4,0.1,,,,,1000.0,0.1\n", "p.k", nullptr);
+  const auto& n = std::get<model::MatNull>(m.materials.at(0));
+  EXPECT_EQ(n.mid, 4);
+  EXPECT_DOUBLE_EQ(n.ym, 1000.0);
+  EXPECT_DOUBLE_EQ(n.pr, 0.1);
+  const MaterialLaws laws = material_laws(m.materials.at(0));
+  EXPECT_FALSE(laws.solid);
+  ASSERT_TRUE(laws.shell);
+  const auto& law = std::get<NullShell>(*laws.shell);
+  NullShell::State s;
+  for (Real v : law.update(s, ShellRate{1.0, 2.0, 3.0, 4.0, 5.0}, 0.1, 1.0)) EXPECT_EQ(v, 0.0);
+  EXPECT_DOUBLE_EQ(law.wave_speed(), std::sqrt(1000.0 / (0.1 * 0.99)));
+  EXPECT_TRUE(law.problem().empty());
+  EXPECT_EQ(thrown("*MAT_009\n4,0.1,,0.5\n"),
+            "p.k:2: *MAT_009: field MU is not implemented (it needs an equation of state); leave it blank");
 }
