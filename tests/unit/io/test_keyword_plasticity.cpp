@@ -63,18 +63,21 @@ TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
   EXPECT_EQ(t.vp, 1.0);
   EXPECT_DOUBLE_EQ(t.eps[2], 0.1);
   EXPECT_DOUBLE_EQ(t.es[2], 300.0);
-  const auto& law = std::get<PiecewisePlasticity>(*material_laws(m.materials.at(0), m.curves).solid);
+  const MaterialLaws table_laws = material_laws(m.materials.at(0), m.curves);
+  const auto& law = std::get<PiecewisePlasticity>(*table_laws.solid);
   ASSERT_EQ(law.constants().hardening.size(), 3u);  // the table to its last non-zero ES
   EXPECT_DOUBLE_EQ(law.yield_stress(0.055), 260.0);
   EXPECT_TRUE(law.constants().viscoplastic);
   // LCSS with SFA = 2, SFO = 0.5: the yield curve (0, 50) - (2, 100); LCSR the factor curve.
-  const auto& c = std::get<PiecewisePlasticity>(*material_laws(m.materials.at(1), m.curves).solid);
+  const MaterialLaws curve_laws = material_laws(m.materials.at(1), m.curves);
+  const auto& c = std::get<PiecewisePlasticity>(*curve_laws.solid);
   EXPECT_DOUBLE_EQ(c.yield_stress(1.0), 75.0);
   EXPECT_DOUBLE_EQ(c.rate_factor(50.0), 1.5);
   EXPECT_FALSE(c.constants().viscoplastic);
   // Without curve or table: SIGY and the hardening modulus E ETAN / (E - ETAN).
   const auto e = read_keyword_string("*MAT_024\n1,1.0,1000.0,0.3,2.0,10.0\n", "p.k", nullptr);
-  const auto& b = std::get<PiecewisePlasticity>(*material_laws(e.materials.at(0)).solid);
+  const MaterialLaws etan_laws = material_laws(e.materials.at(0));
+  const auto& b = std::get<PiecewisePlasticity>(*etan_laws.solid);
   EXPECT_DOUBLE_EQ(b.yield_stress(0.1), 2.0 + 0.1 * 1000.0 * 10.0 / 990.0);
 
   const std::string card1 = "*MAT_024\n         8    7.8e-9    2.0e+5       0.3     200.0\n";
