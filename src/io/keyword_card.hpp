@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "slideline/core/types.hpp"
@@ -182,6 +183,24 @@ Real evaluate_expression(std::string_view expr, const DeckState& deck, const std
 /// Warns about non-blank cards left in a block whose reader took what it needs.
 void warn_extra_cards(const Context& ctx, Block& block);
 
+/// The next card of `b`, or throws InputError "missing <what> card" naming the keyword's line.
+const Line& require_card(const Context& ctx, Block& b, const char* what);
+
+/// One *MAT_... card group: the title (when titled), card 1 read by `fields` (its Card, with the
+/// block to take further cards from), then the title, source and model entry every material
+/// shares. Adding a material = a model struct and one call of this with its fields.
+template <class Mat, class Fields>
+void read_material(const Context& ctx, Block& b, model::Model& m, bool titled, Fields&& fields) {
+  std::string title = titled ? heading(require_card(ctx, b, "title")) : std::string();
+  const Line& l = require_card(ctx, b, "MID");
+  Mat mat;
+  fields(Card(ctx, l, b.keyword, kStandard), mat);
+  mat.title = std::move(title);
+  mat.src = ctx.source(l.number);
+  m.materials.emplace_back(std::move(mat));
+  warn_extra_cards(ctx, b);
+}
+
 /// Runs `f` on the first card of a single-card keyword (no card: all defaults).
 template <class F>
 void single_card(const Context& ctx, Block& b, F&& f) {
@@ -201,6 +220,9 @@ void read_section_shell(const Context& ctx, Block& block, model::Model& model, b
 void read_mat_elastic(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_mooney_rivlin(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_rigid(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_plastic_kinematic(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_piecewise_linear(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_mat_null(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_hourglass(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_set_node(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_set_part(const Context& ctx, Block& block, model::Model& model, bool titled);

@@ -45,6 +45,8 @@ const Line* next_record_keep_blank(Block& b) {
 
 }  // namespace
 
+const Line& require_card(const Context& ctx, Block& b, const char* what) { return require(ctx, b, what); }
+
 void read_title(const Context&, Block& b, Model& m) {
   if (const Line* l = b.take()) m.title = heading(*l);
 }
@@ -177,21 +179,6 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
     s.src = ctx.source(l.number);
     m.shell_sections.push_back(s);
   });
-}
-
-/// One *MAT_... card group: the title (when titled), card 1 read by `fields` (its Card, with the
-/// block to take further cards from), then the title, source and model entry every material
-/// shares. Adding a material = a model struct and one call of this with its fields.
-template <class Mat, class Fields>
-void read_material(const Context& ctx, Block& b, Model& m, bool titled, Fields&& fields) {
-  std::string title = titled ? heading(require(ctx, b, "title")) : std::string();
-  const Line& l = require(ctx, b, "MID");
-  Mat mat;
-  fields(card_of(ctx, l, b), mat);
-  mat.title = std::move(title);
-  mat.src = ctx.source(l.number);
-  m.materials.emplace_back(std::move(mat));
-  warn_extra_cards(ctx, b);
 }
 
 void read_mat_elastic(const Context& ctx, Block& b, Model& m, bool titled) {

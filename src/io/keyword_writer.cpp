@@ -127,6 +127,36 @@ void write_materials(const model::Model& m, std::string& o) {
                      o += CardOut().i(mr.mid).r(mr.ro).r(mr.pr).r(mr.a).r(mr.b).str();
                      o += "$#     SGL        SW        ST      LCID\n\n";
                    },
+                   [&](const model::MatPlasticKinematic& pk) {
+                     o += pk.title.empty() ? "*MAT_PLASTIC_KINEMATIC\n"
+                                           : "*MAT_PLASTIC_KINEMATIC_TITLE\n" + heading(pk.title);
+                     o += "$#     MID        RO         E        PR      SIGY      ETAN      BETA\n";
+                     o += CardOut().i(pk.mid).r(pk.ro).r(pk.e).r(pk.pr).r(pk.sigy).r(pk.etan).r(pk.beta).str();
+                     o += "$#     SRC       SRP        FS        VP\n";
+                     o += CardOut().r(pk.src_c).r(pk.srp).str();
+                   },
+                   [&](const model::MatPiecewiseLinearPlasticity& pw) {
+                     o += pw.title.empty() ? "*MAT_PIECEWISE_LINEAR_PLASTICITY\n"
+                                           : "*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\n" + heading(pw.title);
+                     o += "$#     MID        RO         E        PR      SIGY      ETAN      FAIL      TDEL\n";
+                     o += CardOut().i(pw.mid).r(pw.ro).r(pw.e).r(pw.pr).r(pw.sigy).r(pw.etan).str();
+                     o += "$#       C         P      LCSS      LCSR        VP\n";
+                     o += CardOut().r(pw.c).r(pw.p).i(pw.lcss).i(pw.lcsr).r(pw.vp).str();
+                     CardOut eps, es;
+                     for (int k = 0; k < 8; ++k) {
+                       eps.r(pw.eps[static_cast<std::size_t>(k)]);
+                       es.r(pw.es[static_cast<std::size_t>(k)]);
+                     }
+                     o += "$#    EPS1      EPS2      EPS3      EPS4      EPS5      EPS6      EPS7      EPS8\n";
+                     o += eps.str();
+                     o += "$#     ES1       ES2       ES3       ES4       ES5       ES6       ES7       ES8\n";
+                     o += es.str();
+                   },
+                   [&](const model::MatNull& nl) {
+                     o += nl.title.empty() ? "*MAT_NULL\n" : "*MAT_NULL_TITLE\n" + heading(nl.title);
+                     o += "$#     MID        RO        PC        MU     TEROD     CEROD        YM        PR\n";
+                     o += CardOut().i(nl.mid).r(nl.ro).blank().blank().blank().blank().r(nl.ym).r(nl.pr).str();
+                   },
                    [&](const model::MatRigid& rg) {
                      o += rg.title.empty() ? "*MAT_RIGID\n" : "*MAT_RIGID_TITLE\n" + heading(rg.title);
                      o += "$#     MID        RO         E        PR\n";

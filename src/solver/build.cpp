@@ -125,7 +125,7 @@ struct Builder {
       }
 
       // Stiffness damping has nothing to act on in a rigid part: build_rigid_part does not take it.
-      const MaterialLaws laws = material_laws(*mit->second);
+      const MaterialLaws laws = material_laws(*mit->second, m.curves);
       const std::size_t first_block = setup.blocks.size();
       const auto dit = damped.find(pid);
       const StiffnessDamping damping = dit == damped.end() ? StiffnessDamping{} : dit->second;

@@ -2,11 +2,43 @@
 
 #include <variant>
 
+#include "build_support.hpp"
+#include "slideline/core/error.hpp"
 #include "slideline/core/overloaded.hpp"
 
 namespace slideline {
+namespace {
 
-MaterialLaws material_laws(const model::Material& material) {
+/// The points of curve `lcid` (scaled and offset as *DEFINE_CURVE says), for field `field` of `mat`.
+std::vector<std::pair<Real, Real>> curve_points(std::span<const model::Curve> curves, Id lcid,
+                                                const model::Source& src, const char* field) {
+  for (const auto& c : curves)
+    if (c.lcid == lcid) return make_curve(c).points();
+  throw InputError(describe(src) + ": field " + field + " of *MAT_PIECEWISE_LINEAR_PLASTICITY refers to curve " +
+                   std::to_string(lcid) + ", which is not defined");
+}
+
+/// The yield curve: LCSS, else the EPS/ES table (up to its last non-zero ES), else SIGY and the
+/// hardening modulus E ETAN / (E - ETAN).
+PiecewisePlasticity piecewise_law(const model::MatPiecewiseLinearPlasticity& m, std::span<const model::Curve> curves) {
+  PiecewisePlasticityConstants k{m.ro, m.e, m.pr, {}, m.c, m.p, {}, m.vp == 1.0};
+  if (m.lcss != 0) {
+    k.hardening = curve_points(curves, m.lcss, m.src, "LCSS");
+  } else if (m.es[0] != 0.0) {
+    std::size_t n = 8;
+    while (n > 1 && m.es[n - 1] == 0.0) --n;
+    for (std::size_t i = 0; i < n; ++i) k.hardening.emplace_back(m.eps[i], m.es[i]);
+  } else {
+    k.hardening = {{0.0, m.sigy}};
+    if (m.etan > 0.0) k.hardening.emplace_back(1.0, m.sigy + m.e * m.etan / (m.e - m.etan));
+  }
+  if (m.lcsr != 0) k.rate_curve = curve_points(curves, m.lcsr, m.src, "LCSR");
+  return PiecewisePlasticity(std::move(k));
+}
+
+}  // namespace
+
+MaterialLaws material_laws(const model::Material& material, std::span<const model::Curve> curves) {
   return std::visit(
       Overloaded{
           [](const model::MatElastic& m) {
@@ -16,6 +48,16 @@ MaterialLaws material_laws(const model::Material& material) {
           [](const model::MatMooneyRivlin& m) {
             return MaterialLaws{MooneyRivlin(m.ro, m.a, m.b, m.pr), std::nullopt, false,
                                 "*MAT_MOONEY-RIVLIN_RUBBER"};
+          },
+          [](const model::MatPlasticKinematic& m) {
+            const J2PlasticityConstants k{m.ro, m.e, m.pr, m.sigy, m.etan, m.beta, m.src_c, m.srp};
+            return MaterialLaws{J2Plasticity(k), std::nullopt, false, "*MAT_PLASTIC_KINEMATIC"};
+          },
+          [&](const model::MatPiecewiseLinearPlasticity& m) {
+            return MaterialLaws{piecewise_law(m, curves), std::nullopt, false, "*MAT_PIECEWISE_LINEAR_PLASTICITY"};
+          },
+          [](const model::MatNull& m) {
+            return MaterialLaws{std::nullopt, NullShell(m.ro, m.ym, m.pr), false, "*MAT_NULL"};
           },
           [](const model::MatRigid&) {
             return MaterialLaws{std::nullopt, std::nullopt, true, "*MAT_RIGID"};

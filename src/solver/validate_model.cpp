@@ -1,6 +1,7 @@
 // validate_model: located input checks before a build (see validate_model.hpp).
 #include "slideline/solver/validate_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -12,6 +13,7 @@
 #include "slideline/core/overloaded.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/model/unsupported.hpp"
+#include "slideline/solver/material_registry.hpp"
 
 namespace slideline {
 namespace {
@@ -36,6 +38,54 @@ void poisson(Problems& p, const model::Source& src, const char* card, Real v) {
     p.bad(src, std::string("field PR of ") + card + " must be in (-1, 0.5) (got " + num(v) + ")");
 }
 
+void check_plastic_kinematic(const model::MatPlasticKinematic& x, Problems& p) {
+  const char* card = "*MAT_PLASTIC_KINEMATIC";
+  positive(p, x.src, card, "RO", x.ro);
+  positive(p, x.src, card, "E", x.e);
+  poisson(p, x.src, card, x.pr);
+  positive(p, x.src, card, "SIGY", x.sigy);
+  if (!(x.etan >= 0.0 && x.etan < x.e))
+    p.bad(x.src, std::string("field ETAN of ") + card + " must be in [0, E) (got " + num(x.etan) + ")");
+  if (!(x.beta >= 0.0 && x.beta <= 1.0))
+    p.bad(x.src, std::string("field BETA of ") + card + " must be in [0, 1] (got " + num(x.beta) + ")");
+  if (!(x.src_c >= 0.0) || !std::isfinite(x.src_c))
+    p.bad(x.src, std::string("field SRC of ") + card + " must not be negative (got " + num(x.src_c) + ")");
+  if (x.src_c > 0.0 && !(x.srp > 0.0 && std::isfinite(x.srp)))
+    p.bad(x.src, std::string("field SRP of ") + card + " must be positive when SRC is given (got " + num(x.srp) + ")");
+}
+
+void check_piecewise_linear(const model::Model& m, const model::MatPiecewiseLinearPlasticity& x, Problems& p) {
+  const char* card = "*MAT_PIECEWISE_LINEAR_PLASTICITY";
+  bool curves_ok = true;
+  for (const auto& [id, field] : {std::pair{x.lcss, "LCSS"}, std::pair{x.lcsr, "LCSR"}})
+    if (id != 0 && std::none_of(m.curves.begin(), m.curves.end(), [&](const model::Curve& c) { return c.lcid == id; })) {
+      p.bad(x.src, std::string("field ") + field + " of " + card + " refers to curve " + std::to_string(id) +
+                       ", which is not defined");
+      curves_ok = false;
+    }
+  if (curves_ok && x.e > 0.0 && x.pr > -1.0 && x.pr < 0.5) {
+    try {
+      const MaterialLaws laws = material_laws(model::Material{x}, m.curves);
+      const std::string why = std::get<PiecewisePlasticity>(*laws.solid).problem();
+      if (!why.empty()) p.bad(x.src, std::string(card) + ": " + why + " (LCSS, or EPS/ES, or SIGY/ETAN)");
+    } catch (const InputError& e) {
+      p.bad(x.src, e.what());
+    }
+  }
+  positive(p, x.src, card, "RO", x.ro);
+  positive(p, x.src, card, "E", x.e);
+  poisson(p, x.src, card, x.pr);
+  if (x.lcss == 0 && x.es[0] == 0.0) {  // SIGY and ETAN give the curve
+    positive(p, x.src, card, "SIGY", x.sigy);
+    if (!(x.etan >= 0.0 && x.etan < x.e))
+      p.bad(x.src, std::string("field ETAN of ") + card + " must be in [0, E) (got " + num(x.etan) + ")");
+  }
+  if (!(x.c >= 0.0) || !std::isfinite(x.c))
+    p.bad(x.src, std::string("field C of ") + card + " must not be negative (got " + num(x.c) + ")");
+  if (x.c > 0.0 && !(x.p > 0.0 && std::isfinite(x.p)))
+    p.bad(x.src, std::string("field P of ") + card + " must be positive when C is given (got " + num(x.p) + ")");
+}
+
 void check_materials(const model::Model& m, Problems& p) {
   // One case per alternative of model::Material and no generic one: a new material does not
   // compile until it is checked here.
@@ -56,6 +106,13 @@ void check_materials(const model::Model& m, Problems& p) {
                 p.bad(x.src, std::string("fields A, B of ") + card +
                                  " must give a positive shear modulus 2(A + B) (got A = " + num(x.a) +
                                  ", B = " + num(x.b) + ")");
+            },
+            [&](const model::MatPlasticKinematic& x) { check_plastic_kinematic(x, p); },
+            [&](const model::MatPiecewiseLinearPlasticity& x) { check_piecewise_linear(m, x, p); },
+            [&](const model::MatNull& x) {  // shells only: YM, PR set their step and contact stiffness
+              positive(p, x.src, "*MAT_NULL", "RO", x.ro);
+              positive(p, x.src, "*MAT_NULL", "YM", x.ym);
+              poisson(p, x.src, "*MAT_NULL", x.pr);
             },
             [&](const model::MatRigid& x) {
               positive(p, x.src, "*MAT_RIGID", "RO", x.ro);

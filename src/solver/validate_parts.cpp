@@ -77,7 +77,7 @@ void check_shell_part(const model::Part& part, const model::SectionShell* sec, c
   if (sec) check_shell_section(*sec, p);
   if (!laws.shell)
     p.todo(describe(part.src) + ": part " + std::to_string(part.pid) +
-           " combines shells with a material other than *MAT_ELASTIC or *MAT_RIGID, which is not implemented");
+           " combines shells with " + laws.keyword + ", which is not implemented");
   if (ihq < 0 || ihq > 3)
     p.todo(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) + " for shells of part " +
            std::to_string(part.pid) + " is not implemented (shells take the viscous types 1-3)");
@@ -97,6 +97,7 @@ void check_solid_part(const model::Part& part, const model::SectionSolid* sec, c
            std::to_string(part.pid) + " is not implemented (use 1-3 viscous or 10 physical stiffness)");
   if (!laws.solid)
     p.todo(describe(part.src) + ": part " + std::to_string(part.pid) + " combines solids with " + laws.keyword +
+           (std::string(laws.keyword) == "*MAT_NULL" ? " (a solid of it needs an equation of state, *EOS_...)" : "") +
            ", which is not implemented");
 }
 
@@ -224,7 +225,7 @@ void check_parts(const model::Model& m, Problems& p) {
       }
       ihq = h->ihq;
     }
-    const MaterialLaws laws = material_laws(*mat);
+    const MaterialLaws laws = material_laws(*mat, m.curves);
     const model::SectionShell* shell_sec = use.shells ? find(shsec, part->secid) : nullptr;
     if (laws.rigid) {
       rigid.insert(pid);

@@ -6,17 +6,20 @@
 
 #include "slideline/material/elastic.hpp"
 #include "slideline/material/elastic_shell.hpp"
+#include "slideline/material/j2_plasticity.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
+#include "slideline/material/null_shell.hpp"
+#include "slideline/material/piecewise_plasticity.hpp"
 #include "slideline/material/shell_material.hpp"
 #include "slideline/material/solid_material.hpp"
 
 namespace slideline {
 
 /// The law of a hexahedron block.
-using SolidLaw = std::variant<ElasticSolid, MooneyRivlin>;
+using SolidLaw = std::variant<ElasticSolid, MooneyRivlin, J2Plasticity, PiecewisePlasticity>;
 
 /// The law of a shell block.
-using ShellLaw = std::variant<ElasticShell>;
+using ShellLaw = std::variant<ElasticShell, NullShell>;
 
 namespace detail {
 template <class V>

@@ -114,7 +114,60 @@ struct MatRigid {
   bool operator==(const MatRigid&) const = default;
 };
 
-using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid>;
+/// *MAT_PLASTIC_KINEMATIC (type 3): J2 plasticity, bilinear hardening mixed isotropic/kinematic by
+/// BETA, Cowper-Symonds rate scaling (SRC, SRP). FS (failure strain) and VP = 1 are refused by
+/// the reader.
+struct MatPlasticKinematic {
+  Id mid = 0;
+  Real ro = 0.0;
+  Real e = 0.0;
+  Real pr = 0.0;
+  Real sigy = 0.0;  ///< initial yield stress
+  Real etan = 0.0;  ///< tangent modulus
+  Real beta = 0.0;  ///< 0 kinematic, 1 isotropic hardening
+  Real src_c = 0.0;  ///< SRC: Cowper-Symonds C (0: no rate effect)
+  Real srp = 0.0;    ///< SRP: Cowper-Symonds P
+  std::string title;
+  Source src;
+  bool operator==(const MatPlasticKinematic&) const = default;
+};
+
+/// *MAT_PIECEWISE_LINEAR_PLASTICITY (type 24): J2 plasticity, isotropic hardening by the curve
+/// LCSS, the 8-point table EPS/ES or the tangent modulus ETAN; rate scaling by C/P or LCSR.
+/// FAIL and TDEL other than 0 are refused by the reader.
+struct MatPiecewiseLinearPlasticity {
+  Id mid = 0;
+  Real ro = 0.0;
+  Real e = 0.0;
+  Real pr = 0.0;
+  Real sigy = 0.0;
+  Real etan = 0.0;
+  Real c = 0.0;   ///< Cowper-Symonds C (0: no Cowper-Symonds scaling)
+  Real p = 0.0;   ///< Cowper-Symonds P
+  Id lcss = 0;    ///< curve: yield stress against effective plastic strain (0: table or ETAN)
+  Id lcsr = 0;    ///< curve: yield-stress scale factor against strain rate
+  Real vp = 0.0;  ///< 0: rate = total strain rate; 1: viscoplastic (rate = plastic strain rate)
+  std::array<Real, 8> eps{};  ///< EPS1..EPS8 effective plastic strains of the table
+  std::array<Real, 8> es{};   ///< ES1..ES8 yield stresses of the table
+  std::string title;
+  Source src;
+  bool operator==(const MatPiecewiseLinearPlasticity&) const = default;
+};
+
+/// *MAT_NULL (type 9): no deviatoric stiffness; on shells a surface with mass only. YM and PR set
+/// the contact stiffness and time step of such shells.
+struct MatNull {
+  Id mid = 0;
+  Real ro = 0.0;
+  Real ym = 0.0;
+  Real pr = 0.0;
+  std::string title;
+  Source src;
+  bool operator==(const MatNull&) const = default;
+};
+
+using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid, MatPlasticKinematic,
+                              MatPiecewiseLinearPlasticity, MatNull>;
 
 /// *HOURGLASS
 struct Hourglass {

@@ -3,6 +3,7 @@
 /// law its elements run (material/laws.hpp). It visits the card with one case per alternative and
 /// no generic case, so a material added to model::Material without a case here does not compile.
 #include <optional>
+#include <span>
 
 #include "slideline/material/laws.hpp"
 #include "slideline/model/model.hpp"
@@ -19,8 +20,10 @@ struct MaterialLaws {
   const char* keyword = "";  ///< the card, for messages: "*MAT_ELASTIC"
 };
 
-/// The laws of `material`. Its constants are taken as they are: the deck's values are checked
-/// before (validate_model, the builder), with the file and line of the card.
-MaterialLaws material_laws(const model::Material& material);
+/// The laws of `material`, its curves (*MAT_PIECEWISE_LINEAR_PLASTICITY's LCSS and LCSR) taken from
+/// `curves`. Its constants are taken as they are: the deck's values are checked before
+/// (validate_model, the builder), with the file and line of the card. Throws InputError for a
+/// curve id not in `curves`.
+MaterialLaws material_laws(const model::Material& material, std::span<const model::Curve> curves = {});
 
 }  // namespace slideline

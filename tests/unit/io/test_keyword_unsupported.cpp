@@ -28,7 +28,7 @@ std::string refusal(const std::string& deck) {
 }
 
 TEST(KeywordUnsupported, PhysicsPrefixesAreErrorsOutputCardsAreNot) {
-  for (const char* kw : {"*MAT_PIECEWISE_LINEAR_PLASTICITY", "*SECTION_BEAM", "*ELEMENT_BEAM", "*LOAD_SEGMENT_SET",
+  for (const char* kw : {"*MAT_JOHNSON_COOK", "*SECTION_BEAM", "*ELEMENT_BEAM", "*LOAD_SEGMENT_SET",
                          "*BOUNDARY_NON_REFLECTING", "*INITIAL_STRESS_SOLID", "*CONSTRAINED_NODAL_RIGID_BODY",
                          "*RIGIDWALL_PLANAR", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "*CONTROL_IMPLICIT_GENERAL",
                          "*EOS_LINEAR_POLYNOMIAL", "*DEFINE_COORDINATE_SYSTEM", "*SET_SHELL_LIST", "*SOMETHING_NEW"}) {
@@ -54,7 +54,7 @@ TEST(KeywordUnsupported, OneLinePerKeywordWithIdsUsersAndLines) {
     what = e.what();
   }
   const std::string deck = reader_deck("unsupported_cards.k");
-  EXPECT_EQ(what.rfind(deck + ":26: *MAT_PIECEWISE_LINEAR_PLASTICITY (material 3; used by part 1) is not supported\n" +
+  EXPECT_EQ(what.rfind(deck + ":26: *MAT_JOHNSON_COOK (material 3; used by part 1) is not supported\n" +
                            deck + ":28: *LOAD_SEGMENT (load) is not supported\n",
                        0),
             0u)
@@ -81,14 +81,14 @@ TEST(KeywordUnsupported, DroppedCardsAreNamedByTheReferenceCheck) {
   const auto problems = check_references(m);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].line, 23);  // the *PART card that names MID 3
-  EXPECT_EQ(problems[0].message, "part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (line 26), not supported");
+  EXPECT_EQ(problems[0].message, "part 1 uses *MAT_JOHNSON_COOK (line 26), not supported");
   // build_simulation (validate_model) says the same when a caller skips check_references.
   try {
     build_simulation(m);
     FAIL() << "no exception";
   } catch (const NotImplementedError& e) {
     EXPECT_EQ(std::string(e.what()), reader_deck("unsupported_cards.k") +
-                                         ":23: part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (line 26), not supported");
+                                         ":23: part 1 uses *MAT_JOHNSON_COOK (line 26), not supported");
   }
   // The point load is referenced by nothing: dropped, listed, and the rest of the deck is clean.
   const auto v = read_keyword_file(reader_deck("dropped_load.k"), nullptr, o);

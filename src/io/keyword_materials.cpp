@@ -1,0 +1,106 @@
+// Card handlers of the plasticity and null materials (*MAT_PLASTIC_KINEMATIC,
+// *MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_NULL); the keyword table that dispatches to them is
+// keyword_table.cpp. Field orders follow the LS-DYNA keyword manual (docs/keywords.md).
+#include <string>
+#include <utility>
+
+#include "keyword_card.hpp"
+#include "slideline/core/error.hpp"
+
+namespace slideline::keyword {
+
+using model::Model;
+
+void read_mat_plastic_kinematic(const Context& ctx, Block& b, Model& m, bool titled) {
+  read_material<model::MatPlasticKinematic>(ctx, b, m, titled, [&](const Card& c, model::MatPlasticKinematic& mat) {
+    c.get(0, "MID", mat.mid);
+    c.get(1, "RO", mat.ro);
+    c.get(2, "E", mat.e);
+    c.get(3, "PR", mat.pr);
+    c.get(4, "SIGY", mat.sigy);
+    c.get(5, "ETAN", mat.etan);
+    c.get(6, "BETA", mat.beta);
+    const Line* l2 = b.take();
+    if (!l2) return;
+    Card c2 = Card(ctx, *l2, b.keyword, kStandard);
+    c2.get(0, "SRC", mat.src_c);
+    c2.get(1, "SRP", mat.srp);
+    Real fs = 0.0, vp = 0.0;
+    c2.get(2, "FS", fs);
+    c2.get(3, "VP", vp);
+    // FS erodes elements at a plastic strain; VP = 1 (viscoplastic) and -1 (deviatoric rate) are
+    // other rate formulations. Running without them would be another material: refused.
+    if (fs != 0.0)
+      throw NotImplementedError(ctx.where(l2->number) + b.keyword +
+                                ": field FS (failure strain, element erosion) is not implemented; leave it blank");
+    if (vp != 0.0)
+      throw NotImplementedError(ctx.where(l2->number) + b.keyword +
+                                ": field VP = " + std::string(c2.raw(3)) +
+                                " is not implemented (only VP = 0: the yield stress scaled by the total strain rate)");
+  });
+}
+
+void read_mat_piecewise_linear(const Context& ctx, Block& b, Model& m, bool titled) {
+  using Mat = model::MatPiecewiseLinearPlasticity;
+  read_material<Mat>(ctx, b, m, titled, [&](const Card& c, Mat& mat) {
+    c.get(0, "MID", mat.mid);
+    c.get(1, "RO", mat.ro);
+    c.get(2, "E", mat.e);
+    c.get(3, "PR", mat.pr);
+    c.get(4, "SIGY", mat.sigy);
+    c.get(5, "ETAN", mat.etan);
+    // FAIL erodes elements at a plastic strain, TDEL at a time step: no erosion here, refused.
+    for (auto [i, name] : {std::pair{6, "FAIL"}, std::pair{7, "TDEL"}}) {
+      Real v = 0.0;
+      c.get(i, name, v);
+      if (v != 0.0)
+        throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field " + name +
+                                  " (element erosion) is not implemented; leave it blank");
+    }
+    const Line* l2 = b.take();
+    if (!l2) return;
+    Card c2 = Card(ctx, *l2, b.keyword, kStandard);
+    c2.get(0, "C", mat.c);
+    c2.get(1, "P", mat.p);
+    c2.get(2, "LCSS", mat.lcss);
+    c2.get(3, "LCSR", mat.lcsr);
+    c2.get(4, "VP", mat.vp);
+    Id lcf = 0;
+    c2.get(5, "LCF", lcf);
+    if (mat.vp != 0.0 && mat.vp != 1.0)
+      throw NotImplementedError(ctx.where(l2->number) + b.keyword + ": field VP = " + std::string(c2.raw(4)) +
+                                " is not implemented (0: total strain rate, 1: viscoplastic)");
+    if (lcf != 0)
+      throw NotImplementedError(ctx.where(l2->number) + b.keyword + ": field LCF (failure curve) is not implemented");
+    if (mat.lcsr != 0 && mat.c != 0.0)
+      throw InputError(ctx.where(l2->number) + b.keyword + ": give the rate scaling either by C and P or by LCSR, not both");
+    static const char* const eps_names[] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
+    static const char* const es_names[] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
+    for (auto [names, out] : {std::pair{eps_names, &mat.eps}, std::pair{es_names, &mat.es}}) {
+      const Line* l = b.take();
+      if (!l) return;
+      Card ct = Card(ctx, *l, b.keyword, kStandard);
+      for (int k = 0; k < 8; ++k) ct.get(k, names[k], (*out)[static_cast<std::size_t>(k)]);
+    }
+  });
+}
+
+void read_mat_null(const Context& ctx, Block& b, Model& m, bool titled) {
+  read_material<model::MatNull>(ctx, b, m, titled, [&](const Card& c, model::MatNull& mat) {
+    c.get(0, "MID", mat.mid);
+    c.get(1, "RO", mat.ro);
+    // PC (pressure cutoff), MU (viscosity), TEROD / CEROD (erosion) act through an equation of
+    // state, which no part here has (a solid of *MAT_NULL is refused; a null shell has no stress).
+    for (auto [i, name] : {std::pair{2, "PC"}, std::pair{3, "MU"}, std::pair{4, "TEROD"}, std::pair{5, "CEROD"}}) {
+      Real v = 0.0;
+      c.get(i, name, v);
+      if (v != 0.0)
+        throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field " + name +
+                                  " is not implemented (it needs an equation of state); leave it blank");
+    }
+    c.get(6, "YM", mat.ym);
+    c.get(7, "PR", mat.pr);
+  });
+}
+
+}  // namespace slideline::keyword

@@ -1,0 +1,109 @@
+// The plasticity cards (*MAT_PLASTIC_KINEMATIC, *MAT_PIECEWISE_LINEAR_PLASTICITY): every field
+// read, what is not built refused with file, line and field, the registry's law from the card.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "slideline/core/error.hpp"
+#include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/material_registry.hpp"
+
+using namespace slideline;
+
+namespace {
+
+std::string thrown(const std::string& deck) {
+  try {
+    read_keyword_string(deck, "p.k", nullptr);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST(KeywordPlasticity, PlasticKinematicFields) {
+  const auto m = read_keyword_string(
+      "*MAT_PLASTIC_KINEMATIC_TITLE\nsteel\n"
+      "         5    7.8e-9    2.0e+5       0.3     250.0    2000.0       0.5\n"
+      "      40.4       5.0\n",
+      "p.k", nullptr);
+  const auto& k = std::get<model::MatPlasticKinematic>(m.materials.at(0));
+  EXPECT_EQ(k.mid, 5);
+  EXPECT_EQ(k.title, "steel");
+  EXPECT_DOUBLE_EQ(k.sigy, 250.0);
+  EXPECT_DOUBLE_EQ(k.etan, 2000.0);
+  EXPECT_DOUBLE_EQ(k.beta, 0.5);
+  EXPECT_DOUBLE_EQ(k.src_c, 40.4);
+  EXPECT_DOUBLE_EQ(k.srp, 5.0);
+  const std::string card1 = "*MAT_003\n         5    7.8e-9    2.0e+5       0.3     250.0\n";
+  EXPECT_EQ(thrown(card1 + ",,0.3\n"),
+            "p.k:3: *MAT_003: field FS (failure strain, element erosion) is not implemented; leave it "
+            "blank");
+  EXPECT_NE(thrown(card1 + ",,,1.0\n").find("p.k:3: *MAT_003: field VP = 1.0"),
+            std::string::npos);
+}
+
+TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
+  const auto m = read_keyword_string(
+      "*MAT_PIECEWISE_LINEAR_PLASTICITY\n"
+      "         7    7.8e-9    2.0e+5       0.3     200.0    1000.0\n"
+      ",,,,1.0\n"
+      "0.0,0.01,0.1\n"
+      "     200.0     220.0     300.0\n"
+      "*MAT_024\n"
+      "         8    7.8e-9    2.0e+5       0.3\n"
+      "0.0,0.0,3,4\n"
+      "*DEFINE_CURVE\n3,,2.0,0.5\n0.0, 100.0\n1.0, 200.0\n"
+      "*DEFINE_CURVE\n4\n0.0, 1.0\n100.0, 2.0\n",
+      "p.k", nullptr);
+  const auto& t = std::get<model::MatPiecewiseLinearPlasticity>(m.materials.at(0));
+  EXPECT_EQ(t.vp, 1.0);
+  EXPECT_DOUBLE_EQ(t.eps[2], 0.1);
+  EXPECT_DOUBLE_EQ(t.es[2], 300.0);
+  const MaterialLaws table_laws = material_laws(m.materials.at(0), m.curves);
+  const auto& law = std::get<PiecewisePlasticity>(*table_laws.solid);
+  ASSERT_EQ(law.constants().hardening.size(), 3u);  // the table to its last non-zero ES
+  EXPECT_DOUBLE_EQ(law.yield_stress(0.055), 260.0);
+  EXPECT_TRUE(law.constants().viscoplastic);
+  // LCSS with SFA = 2, SFO = 0.5: the yield curve (0, 50) - (2, 100); LCSR the factor curve.
+  const MaterialLaws curve_laws = material_laws(m.materials.at(1), m.curves);
+  const auto& c = std::get<PiecewisePlasticity>(*curve_laws.solid);
+  EXPECT_DOUBLE_EQ(c.yield_stress(1.0), 75.0);
+  EXPECT_DOUBLE_EQ(c.rate_factor(50.0), 1.5);
+  EXPECT_FALSE(c.constants().viscoplastic);
+  // Without curve or table: SIGY and the hardening modulus E ETAN / (E - ETAN).
+  const auto e = read_keyword_string("*MAT_024\n1,1.0,1000.0,0.3,2.0,10.0\n", "p.k", nullptr);
+  const MaterialLaws etan_laws = material_laws(e.materials.at(0));
+  const auto& b = std::get<PiecewisePlasticity>(*etan_laws.solid);
+  EXPECT_DOUBLE_EQ(b.yield_stress(0.1), 2.0 + 0.1 * 1000.0 * 10.0 / 990.0);
+
+  const std::string card1 = "*MAT_024\n         8    7.8e-9    2.0e+5       0.3     200.0\n";
+  EXPECT_EQ(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,0.2\n"),
+            "p.k:2: *MAT_024: field FAIL (element erosion) is not implemented; leave it blank");
+  EXPECT_NE(thrown(card1 + ",,,,-1.0\n").find("p.k:3: *MAT_024: field VP = -1.0"),
+            std::string::npos);
+  EXPECT_NE(thrown(card1 + "40.0,5.0,,4\n").find("p.k:3:"), std::string::npos);
+  EXPECT_NE(thrown(card1 + ",,,,,9\n").find("field LCF"),
+            std::string::npos);
+}
+
+TEST(KeywordPlasticity, NullMaterialFieldsAndRefusals) {
+  const auto m = read_keyword_string("*MAT_NULL\n4,0.1,,,,,1000.0,0.1\n", "p.k", nullptr);
+  const auto& n = std::get<model::MatNull>(m.materials.at(0));
+  EXPECT_EQ(n.mid, 4);
+  EXPECT_DOUBLE_EQ(n.ym, 1000.0);
+  EXPECT_DOUBLE_EQ(n.pr, 0.1);
+  const MaterialLaws laws = material_laws(m.materials.at(0));
+  EXPECT_FALSE(laws.solid);
+  ASSERT_TRUE(laws.shell);
+  const auto& law = std::get<NullShell>(*laws.shell);
+  NullShell::State s;
+  for (Real v : law.update(s, ShellRate{1.0, 2.0, 3.0, 4.0, 5.0}, 0.1, 1.0)) EXPECT_EQ(v, 0.0);
+  EXPECT_DOUBLE_EQ(law.wave_speed(), std::sqrt(1000.0 / (0.1 * 0.99)));
+  EXPECT_TRUE(law.problem().empty());
+  EXPECT_EQ(thrown("*MAT_009\n4,0.1,,0.5\n"),
+            "p.k:2: *MAT_009: field MU is not implemented (it needs an equation of state); leave it blank");
+}
