@@ -94,7 +94,12 @@ PlateResult run_plate(const PlateCase& pc) {
   for (int k = 0; k < 3; ++k) m.body_loads.push_back({axes[k], 1, -g[k], 0, 0, 0, 0, 0, {}});
   m.body_load_parts = model::LoadBodyParts{4, {}};
   m.termination.endtim = kEnd;
-  m.timestep.tssfac = 0.9;
+  // TSSFAC 0.6 (the spec's for Type 12). The step is the smaller of the element's and the contact
+  // springs' own bounds (4.8e-4 for a corner node of the block on a shell segment here, 5.4e-4 for
+  // the block's elements), but a bottom node carries both stiffnesses at once: their combined bound
+  // is 3.6e-4, below 0.9 x 4.8e-4, and at 0.9 the bottom nodes chatter at the Nyquist frequency and
+  // the energy balance fails (measured: 8 % at t = 0.048). At 0.6 the step is 2.9e-4.
+  m.timestep.tssfac = 0.6;
 
   test_support::Run run(m);
   PlateResult r;
@@ -117,16 +122,17 @@ PlateResult run_plate(const PlateCase& pc) {
 
 class AutomaticSurfaceOnShell : public ::testing::TestWithParam<PlateCase> {};
 
-// Tolerances: the gap within 2 % of t/2 (the penalty spring's share of the weight, m g / k, is
-// 1e-4 of t/2 here; the rest is the block's own elastic shortening), the mean force 0.5 % of m g
-// (the block rings on its springs; the mean over 0.15 s is over about 40 periods).
+// Tolerances: the gap within 0.1 % of t/2 (the springs' static compression under the weight is
+// of the order of 1e-5 of t/2; measured 4e-5 with the block's ringing), the mean force 0.1 % of
+// m g (the block rings on its springs; the mean is over about 50 of their periods; measured
+// 1.9e-4 two-sided, 1e-5 one way).
 TEST_P(AutomaticSurfaceOnShell, BlockRestsHalfTheThicknessOffEitherSide) {
   const PlateCase pc = GetParam();
   const PlateResult r = run_plate(pc);
   std::printf("%-26s gap %.6f (t/2 %.3f)  force / m g %.5f\n", pc.name().c_str(), r.gap, 0.5 * kT,
               r.force / r.weight);
-  EXPECT_NEAR(r.gap / (0.5 * kT), 1.0, 0.02);
-  EXPECT_NEAR(r.force / r.weight, 1.0, 5e-3);
+  EXPECT_NEAR(r.gap / (0.5 * kT), 1.0, 1e-3);
+  EXPECT_NEAR(r.force / r.weight, 1.0, 1e-3);
 }
 
 std::vector<PlateCase> plate_cases() {
