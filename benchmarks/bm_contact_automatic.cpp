@@ -18,9 +18,14 @@ using namespace slideline;
 
 namespace {
 
+/// Which card joins the two blocks.
+enum class Card { single_surface, automatic_surface_to_surface, type3 };
+
 /// Lower block n x 1 x n (part 1) and upper block (n-1) x 1 x (n-1) on top of it (part 2), one
-/// *CONTACT_AUTOMATIC_SINGLE_SURFACE over both parts with the spec's friction.
-model::Model two_block_automatic(int n) {
+/// contact with the spec's friction: *CONTACT_AUTOMATIC_SINGLE_SURFACE over both parts, or
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE / Type 3 *CONTACT_SURFACE_TO_SURFACE with the upper block
+/// the slave side and the lower one the master side.
+model::Model two_block_automatic(int n, Card card = Card::single_surface) {
   model::Model m = test_support::hex_grid_model(n, 1, n, 1);
   const Id first = static_cast<Id>(m.nodes.size()) + 1;
   const int u = n - 1;
@@ -40,6 +45,16 @@ model::Model two_block_automatic(int n) {
   c.type = model::ContactType::automatic;
   c.ssid = 1;
   c.sstyp = 2;
+  if (card != Card::single_surface) {
+    const bool automatic = card == Card::automatic_surface_to_surface;
+    c.keyword = automatic ? "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" : "*CONTACT_SURFACE_TO_SURFACE";
+    c.type = automatic ? model::ContactType::automatic : model::ContactType::surface_to_surface;
+    c.form = automatic ? model::ContactForm::automatic_surface_to_surface : model::ContactForm::dyna3d;
+    c.ssid = 2;
+    c.sstyp = 3;
+    c.msid = 1;
+    c.mstyp = 3;
+  }
   c.fs = 0.3;
   c.fd = 0.25;
   c.dc = 2.0;
@@ -47,11 +62,11 @@ model::Model two_block_automatic(int n) {
   return m;
 }
 
-void BM_AutomaticContactCycle(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
+/// The timed contact phase of `card` on the two blocks of size n (see the file comment).
+void run_contact_cycles(benchmark::State& state, int n, Card card) {
   // The deck's setup, with the two things the contact update needs from Simulation::initialize():
   // the lumped masses and the initialised interfaces. The timed loop is the contact phase alone.
-  SimulationSetup setup = build_setup(two_block_automatic(n));
+  SimulationSetup setup = build_setup(two_block_automatic(n, card));
   NodalFields& nodes = setup.nodes;
   for (auto& b : setup.blocks) b->initialize(nodes);
   const std::vector<std::uint8_t> rigid(nodes.size(), 0);
@@ -82,7 +97,23 @@ void BM_AutomaticContactCycle(benchmark::State& state) {
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+void BM_AutomaticContactCycle(benchmark::State& state) {
+  run_contact_cycles(state, static_cast<int>(state.range(0)), Card::single_surface);
+}
+
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (arg 1 = 1) against Type 3's two passes (arg 1 = 2) and
+/// the single surface (0) on the same blocks: ns per surface node-cycle (every surface node is a
+/// slave of one of Type 3's passes, and of the automatic pass).
+void BM_AutomaticSurfaceVsType3(benchmark::State& state) {
+  run_contact_cycles(state, static_cast<int>(state.range(0)), static_cast<Card>(state.range(1)));
+}
+
 }  // namespace
 
 // Surface segments: about 4 n^2 (top and bottom faces of both blocks) + the sides: 10^3 .. 10^5.
 BENCHMARK(BM_AutomaticContactCycle)->Arg(16)->Arg(50)->Arg(158)->Iterations(160)->Unit(benchmark::kMillisecond);
+// 1.2e3 and 1.05e4 segments (n = 16, 50).
+BENCHMARK(BM_AutomaticSurfaceVsType3)
+    ->ArgsProduct({{16, 50}, {0, 1, 2}})
+    ->Iterations(160)
+    ->Unit(benchmark::kMillisecond);

@@ -91,6 +91,8 @@ void check_runs(const model::Contact& card) {
     case T::automatic:
       break;
   }
+  if (lagrange && card.form != model::ContactForm::dyna3d)
+    throw_contact_not_implemented(card, "the LS-DYNA automatic cards run with penalty enforcement only");
   if (lagrange) {
     if (card.sliding_only_option)
       throw_contact_not_implemented(card, "the sliding-only option with Lagrange enforcement is not implemented");
@@ -101,9 +103,11 @@ void check_runs(const model::Contact& card) {
   if (!penalty) throw_contact_not_implemented(card);
   if (card.sstyp == 4 && (card.type == T::surface_to_surface || card.type == T::one_way))
     throw_contact_not_implemented(card, "a node-set slave side (SSTYP 4) needs Type 5");
-  if (card.sstyp == 4 && card.type == T::automatic)
+  const bool one_way_automatic = card.form == model::ContactForm::automatic_nodes_to_surface ||
+                                 card.form == model::ContactForm::forming_one_way;
+  if (card.sstyp == 4 && card.type == T::automatic && !one_way_automatic)
     throw InputError(where(card) + ": SSTYP = 4 (node set) is not a surface");
-  if (card.type == T::automatic && card.msid != 0)
+  if (card.type == T::automatic && card.form == model::ContactForm::dyna3d && card.msid != 0)
     throw_contact_not_implemented(card, "MSID (a master side apart from the slave side) with penalty enforcement");
 }
 
@@ -111,7 +115,7 @@ void check_runs(const model::Contact& card) {
 void resolve_sides(const model::Contact& card, const ContactBuildContext& ctx, InterfaceSpec& spec) {
   spec.slave = resolve_contact_side(card, true, ctx);
   spec.node_set_slaves = spec.slave.surface.nodes.empty();
-  spec.single_surface = card.type == T::automatic && card.msid == 0;
+  spec.single_surface = card.type == T::automatic && card.form == model::ContactForm::dyna3d && card.msid == 0;
   spec.master = spec.single_surface ? spec.slave : resolve_contact_side(card, false, ctx);
   if (spec.master.surface.segment_count() == 0)
     throw InputError(at(card) + ": MSID of " + card_name(card) + " selects no master segments");
@@ -142,6 +146,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   spec.title = contact_title(card, position);
   spec.where = where(card);
   spec.type = card.type;
+  spec.form = card.form;
   spec.enforcement = card.enforcement;
   spec.friction = contact_friction(card);
   resolve_sides(card, ctx, spec);
@@ -158,7 +163,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
   spec.window = ContactWindow{card.bt, card.dt};
-  spec.transmitted_output = card.type == T::automatic;
+  spec.transmitted_output = card.type == T::automatic && card.form == model::ContactForm::dyna3d;
   return spec;
 }
 

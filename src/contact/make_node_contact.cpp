@@ -37,7 +37,8 @@ std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
 }  // namespace
 
 std::unique_ptr<ContactAlgorithm> make_node_and_automatic_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
-  return spec.type == model::ContactType::automatic ? make_automatic(spec) : make_nodes_to_surface(spec, ctx);
+  if (spec.type != model::ContactType::automatic) return make_nodes_to_surface(spec, ctx);
+  return spec.form == model::ContactForm::dyna3d ? make_automatic(spec) : make_automatic_surface_contact(spec, ctx);
 }
 
 }  // namespace slideline

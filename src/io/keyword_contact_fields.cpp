@@ -271,7 +271,7 @@ void check_card3(const Context& ctx, const model::Contact& c, const Line* l) {
   field(ctx, l, kw, "card 3", offsets ? 0.0 : c.mst, {"MST", 0, Use::refuse, no_thickness});
   field(ctx, l, kw, "card 3", offsets ? 1.0 : c.sfst, {"SFST", 1, Use::refuse, no_thickness});
   field(ctx, l, kw, "card 3", offsets ? 1.0 : c.sfmt, {"SFMT", 1, Use::refuse, no_thickness});
-  if (c.type == ContactType::automatic) {
+  if (c.type == ContactType::automatic && c.form == model::ContactForm::dyna3d) {
     // Single surface: SST/SFST apply to every segment; MST/SFMT have no side of their own.
     const char* single = "master thickness; a single-surface contact uses SST and SFST for every segment";
     field(ctx, l, kw, "card 3", c.mst, {"MST", 0, Use::refuse, single});

@@ -72,6 +72,7 @@ void read_contact(const Context& ctx, Block& b, model::Model& m, const model::Co
   c.keyword = b.keyword;
   c.type = row.type;
   c.automatic_general = row.automatic_general;
+  c.form = row.form;
   c.enforcement = lagrange ? Enforcement::lagrange : row.enforcement;
   if (sliding) {
     if (row.sliding_option)

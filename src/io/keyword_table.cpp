@@ -174,6 +174,10 @@ constexpr Row kRows[] = {
 /// "contact, DYNA3D type 3 surface to surface; penalty unless _LAGRANGE". Whether a type runs
 /// with Lagrange multipliers is checked when the model is built (check_runs, interface_spec.cpp).
 std::string contact_description(const model::ContactKeyword& k) {
+  // An LS-DYNA card without a DYNA3D number (model::ContactForm): runs with the type's pass.
+  if (k.form != model::ContactForm::dyna3d)
+    return "contact, LS-DYNA " + std::string(k.name) + " on DYNA3D type " + std::to_string(k.dyna3d_type) +
+           "'s automatic pass; penalty (_LAGRANGE is refused when the model is built)";
   std::string s = "contact, DYNA3D type " + std::to_string(k.dyna3d_type) + " " + std::string(k.name) + "; " +
                   std::string(model::enforcement_name(k.enforcement)) + " unless _LAGRANGE";
   if (k.sliding_option) s += "; _SLIDING_ONLY: no separation";

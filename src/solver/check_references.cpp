@@ -249,7 +249,9 @@ class References {
     };
     for (const auto& c : m_.contacts) {
       check_side(c, "SSID", c.ssid, c.sstyp);
-      if (c.type != model::ContactType::automatic) check_side(c, "MSID", c.msid, c.mstyp);
+      // A single-surface card (type 12 as DYNA3D spells it) has no master side.
+      if (c.type != model::ContactType::automatic || c.form != model::ContactForm::dyna3d)
+        check_side(c, "MSID", c.msid, c.mstyp);
       const std::string who = c.keyword.empty() ? std::string("*CONTACT") : c.keyword;
       if (c.sboxid != 0 && !boxes_.count(c.sboxid))
         ck_.add(c.src, who + " SBOXID refers to undefined box " + std::to_string(c.sboxid));

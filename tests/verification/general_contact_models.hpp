@@ -97,39 +97,50 @@ inline void add_elastic_part(model::Model& m, Id pid, Real rho, Real e, Real nu,
 struct ContactChoice {
   model::ContactType type = model::ContactType::surface_to_surface;
   model::Enforcement enforcement = model::Enforcement::penalty;
+  /// An LS-DYNA automatic card of the type family (e.g. *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE).
+  model::ContactForm form = model::ContactForm::dyna3d;
   std::string name() const {
+    if (form == model::ContactForm::automatic_surface_to_surface) return "auto_s2s_penalty";
+    if (form == model::ContactForm::automatic_nodes_to_surface) return "auto_n2s_penalty";
+    if (form == model::ContactForm::forming_one_way) return "forming_one_way_penalty";
     return "type" + std::to_string(static_cast<int>(type)) +
            (enforcement == model::Enforcement::lagrange ? "_lagrange" : "_penalty");
   }
 };
 
+/// The DYNA3D types (penalty and Lagrange), then the LS-DYNA automatic cards (penalty).
 inline std::vector<ContactChoice> all_contact_choices() {
   using T = model::ContactType;
   using E = model::Enforcement;
   std::vector<ContactChoice> out;
   for (T t : {T::surface_to_surface, T::nodes_to_surface, T::one_way, T::automatic})
     for (E e : {E::penalty, E::lagrange}) out.push_back({t, e});
+  for (model::ContactForm f : {model::ContactForm::automatic_surface_to_surface,
+                               model::ContactForm::automatic_nodes_to_surface, model::ContactForm::forming_one_way})
+    out.push_back({T::automatic, E::penalty, f});
   return out;
 }
 
-/// The card: slave part `slave_pid` (Type 5: node set `slave_nodes` of that part's nodes; Type 12:
-/// part set `pair_set` of both parts), master part `master_pid`, Coulomb friction mu (FS = FD,
+/// The card: slave part `slave_pid` (Type 5 and *CONTACT_AUTOMATIC_NODES_TO_SURFACE: node set
+/// `slave_nodes` of that part's nodes; Type 12 single surface: part set `pair_set` of both parts),
+/// master part `master_pid`, Coulomb friction mu (FS = FD,
 /// DC 0), penalty factor SFS = SFM = 10 (f = 1 with SLSFAC 0.1, the spec's).
 inline model::Contact contact_card(const ContactChoice& c, Id slave_pid, Id master_pid, Id slave_nodes, Id pair_set,
                                    Real mu) {
   model::Contact card;
   card.type = c.type;
   card.enforcement = c.enforcement;
+  card.form = c.form;
   card.keyword = "*CONTACT (" + c.name() + ")";
   card.title = c.name();
   card.ssid = slave_pid;
   card.sstyp = 3;
   card.msid = master_pid;
   card.mstyp = 3;
-  if (c.type == model::ContactType::nodes_to_surface) {
+  if (c.type == model::ContactType::nodes_to_surface || c.form == model::ContactForm::automatic_nodes_to_surface) {
     card.ssid = slave_nodes;
     card.sstyp = 4;
-  } else if (c.type == model::ContactType::automatic) {
+  } else if (c.type == model::ContactType::automatic && c.form == model::ContactForm::dyna3d) {
     card.ssid = pair_set;
     card.sstyp = 2;
     card.msid = 0;

@@ -38,6 +38,11 @@ struct InclineResult {
   Real lift = 0.0;       ///< largest mean displacement of the block off the plane (length)
   Real half = 0.0;       ///< the slide at kEnd / 2 (length)
   Real exact = 0.0;      ///< closed-form slide (0 when sticking)
+  Real mass = 0.0;       ///< the block's mass
+  Real friction = 0.0;   ///< friction dissipation at kEnd (energy)
+  Real energy_error = 0.0;  ///< |balance error| / largest energy (Simulation::energy_error_fraction)
+  Vec3 slave_force = Vec3::Zero(), master_force = Vec3::Zero();  ///< interface forces at kEnd
+  Vec3 e = Vec3::UnitX(), n = Vec3::UnitY();  ///< down the slope, the plane's normal
 };
 
 // The plane: 3.0 x 0.25 x 1.0 (x along the slope, y its normal), 6 x 1 x 2 elements, every node
@@ -81,6 +86,13 @@ InclineResult run_incline(const InclineCase& ic) {
     if (r.half == 0.0 && run.sim->time() >= 0.5 * kEnd) r.half = d.dot(e);
   }
   r.slide = (run.mean(block.node, [&](Id id) { return run.x(id); }) - x0).dot(e);
+  for (Id id : block.node) r.mass += run.mass(id);
+  r.friction = run.sim->energy().friction;
+  r.energy_error = run.sim->energy_error_fraction();
+  r.slave_force = run.sim->contacts()[0].slave_force();
+  r.master_force = run.sim->contacts()[0].master_force();
+  r.e = e;
+  r.n = n;
   const Real a = kG * (std::sin(th) - kMu * std::cos(th));
   r.exact = a > 0.0 ? a * (kEnd * kEnd / 2 - kRamp * kEnd / 2 + kRamp * kRamp / 6) : 0.0;
   return r;
@@ -122,6 +134,36 @@ std::vector<InclineCase> incline_cases() {
 
 INSTANTIATE_TEST_SUITE_P(EveryType, Incline, ::testing::ValuesIn(incline_cases()),
                          [](const ::testing::TestParamInfo<InclineCase>& info) { return info.param.name(); });
+
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE on the 35 deg incline, plain and rotated: the energy
+// balance with its contact and friction terms, the friction dissipation against the closed form
+// mu m g cos(theta) x slide, and the interface forces against the rigid block's: the plane pushes
+// the block with m g cos(theta) along n and brakes it with mu m g cos(theta) up the slope (the
+// block slides from kRamp on); the master side gets the opposite.
+// Tolerances: dissipation 0.5 % (the stick spring's elastic slip, 1e-3 x the diagonal, is stored,
+// not dissipated: 2e-3 of the slide); force 1 % of m g (the block rings on its contact springs;
+// measured below); energy balance 1e-3 of the largest energy.
+TEST(InclineAutomaticSurfaceToSurface, EnergyFrictionWorkAndForceBalance) {
+  for (bool rotated : {false, true}) {
+    InclineCase ic;
+    ic.contact = {model::ContactType::automatic, model::Enforcement::penalty,
+                  model::ContactForm::automatic_surface_to_surface};
+    ic.rotated = rotated;
+    const InclineResult r = run_incline(ic);
+    const Real th = ic.degrees * std::numbers::pi / 180.0;
+    const Real normal = r.mass * kG * std::cos(th);
+    const Vec3 expected = normal * r.n - kMu * normal * r.e;
+    const Real dissipated = kMu * normal * r.slide;
+    std::printf("%s: friction work %.6e closed form %.6e (x%.5f)  energy error %.2e  force error %.2e m g  "
+                "balance %.1e\n",
+                ic.name().c_str(), r.friction, dissipated, r.friction / dissipated, r.energy_error,
+                (r.slave_force - expected).norm() / (r.mass * kG), (r.slave_force + r.master_force).norm());
+    EXPECT_NEAR(r.friction / dissipated, 1.0, 5e-3);
+    EXPECT_LT(r.energy_error, 1e-3);
+    EXPECT_LT((r.slave_force - expected).norm(), 1e-2 * r.mass * kG);
+    EXPECT_LT((r.slave_force + r.master_force).norm(), 1e-12 * r.mass * kG);
+  }
+}
 
 }  // namespace
 }  // namespace slideline

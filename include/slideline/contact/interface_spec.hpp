@@ -52,6 +52,8 @@ struct InterfaceSpec {
   std::string where;  ///< "<file:line>: <keyword>": the start of every message about the card
   model::ContactType type = model::ContactType::surface_to_surface;
   model::Enforcement enforcement = model::Enforcement::penalty;
+  /// The LS-DYNA card of the type family (an automatic card without a DYNA3D number).
+  model::ContactForm form = model::ContactForm::dyna3d;
 
   ContactSide slave;
   /// The master side; for Type 12 with MSID = 0 (single surface) a copy of the slave side.

@@ -23,6 +23,11 @@ std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(InterfaceSpec& spec)
 std::unique_ptr<ContactAlgorithm> make_lagrange_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
 /// Types 5 (nodes to surface) and 12 (automatic): penalty.
 std::unique_ptr<ContactAlgorithm> make_node_and_automatic_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
+/// The LS-DYNA automatic cards of type family 12 (model::ContactForm other than dyna3d), penalty:
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, the automatic pass restricted to the cross pairs of its
+/// two sides; *CONTACT_AUTOMATIC_NODES_TO_SURFACE and *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE,
+/// the automatic pass of the slave side's nodes on the master side's segments.
+std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
 /// Types 8 (nodes spotwelded: failure per node, NFLF/SFLF forces, NEN/MES exponents) and 9
 /// (tied surfaces with failure: failure per slave segment, NFLF/SFLF stresses): penalty factor
 /// SLSFAC x SFS; friction FS, FD, DC after failure.

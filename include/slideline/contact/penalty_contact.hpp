@@ -5,10 +5,12 @@
 /// - SurfaceToSurfaceContact (Type 3, surface_to_surface_contact.hpp): two passes;
 /// - OneWayContact (Type 10, one_way_contact.hpp): one pass, optionally "sliding only";
 /// - NodesToSurfaceContact (Type 5, nodes_to_surface_contact.hpp): one pass of nodes with a radius;
-/// - AutomaticContact (Type 12, automatic_contact.hpp): one single-surface pass, transmitted force.
+/// - AutomaticContact (Type 12, automatic_contact.hpp): one single-surface pass, transmitted force;
+/// - AutomaticSurfaceContact (*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, automatic_surface_contact.hpp).
 /// The factories (src/contact/make_sliding_contact.cpp, make_node_contact.cpp) map a card to one
 /// of them. penalty_passes_of() finds the passes of any of them behind a ContactAlgorithm.
 #include "slideline/contact/automatic_contact.hpp"
+#include "slideline/contact/automatic_surface_contact.hpp"
 #include "slideline/contact/nodes_to_surface_contact.hpp"
 #include "slideline/contact/one_way_contact.hpp"
 #include "slideline/contact/surface_to_surface_contact.hpp"
@@ -29,6 +31,7 @@ inline const PenaltyPasses* penalty_passes_of(const ContactAlgorithm& c) {
   if (const auto* p = detail::passes_if<SurfaceToSurfaceContact>(c)) return p;
   if (const auto* p = detail::passes_if<OneWayContact>(c)) return p;
   if (const auto* p = detail::passes_if<NodesToSurfaceContact>(c)) return p;
+  if (const auto* p = detail::passes_if<AutomaticSurfaceContact>(c)) return p;
   return detail::passes_if<AutomaticContact>(c);
 }
 

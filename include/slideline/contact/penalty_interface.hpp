@@ -6,10 +6,13 @@
 ///  - OneWayContact (Type 10, one_way_contact.hpp): one pass, optionally "sliding only";
 ///  - NodesToSurfaceContact (Type 5, nodes_to_surface_contact.hpp): one pass of nodes with a radius;
 ///  - AutomaticContact (Type 12, automatic_contact.hpp): one single-surface pass, and the force
-///    transmitted between parts (the Kind carries that state).
+///    transmitted between parts (the Kind carries that state);
+///  - AutomaticSurfaceContact (*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, automatic_surface_contact.hpp):
+///    one automatic pass over both sides, cross pairs only; the Kind gives the side forces.
 /// A Kind states `pass_count` (1 or 2: the second pass is the reverse one, its forces count to
 /// the other side's totals) and may carry state with the optional hooks
-/// after_forces(const PenaltyPasses&), append_output_names(names), write_output_values(out).
+/// after_forces(const PenaltyPasses&), append_output_names(names), write_output_values(out),
+/// slave_force() and master_force() (replacing the passes' totals).
 /// Friction: Frictionless or ExponentialCoulomb. docs/contact.md, "Penalty contact".
 #include <concepts>
 #include <cstddef>
@@ -60,8 +63,16 @@ class PenaltyInterface final : public ContactAlgorithm, public ContactForces {
     if constexpr (requires { kind_.after_forces(core_); }) kind_.after_forces(core_);
   }
   Real stable_dt() const override { return core_.stable_dt(); }
-  Vec3 slave_force() const override { return core_.slave_force(); }
-  Vec3 master_force() const override { return core_.master_force(); }
+  /// The interface forces: the passes' slave and master totals, or the kind's own (a two-sided
+  /// automatic pass, whose slaves and masters are both sides).
+  Vec3 slave_force() const override {
+    if constexpr (requires { kind_.slave_force(); }) return kind_.slave_force();
+    else return core_.slave_force();
+  }
+  Vec3 master_force() const override {
+    if constexpr (requires { kind_.master_force(); }) return kind_.master_force();
+    else return core_.master_force();
+  }
   Real friction_work() const override { return core_.friction_work(); }
 
   void append_output_names(std::vector<std::string>& names) const override {

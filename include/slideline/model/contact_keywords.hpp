@@ -18,6 +18,9 @@ struct ContactKeyword {
   Enforcement enforcement;    ///< without the _LAGRANGE option (DYNA3D's enforcement of the type)
   bool sliding_option;        ///< takes the _SLIDING_ONLY option (Type 10's no-separation option)
   std::string_view name;      ///< what the CLI prints after "type N", e.g. "surface to surface"
+  /// An LS-DYNA card with no DYNA3D number runs as the family `type` with this form
+  /// (Contact::form); the DYNA3D cards leave it at dyna3d.
+  ContactForm form = ContactForm::dyna3d;
 };
 
 inline constexpr ContactKeyword kContactKeywords[] = {
@@ -42,6 +45,12 @@ inline constexpr ContactKeyword kContactKeywords[] = {
     {"*CONTACT_AUTOMATIC_SINGLE_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
      "automatic"},
     {"*CONTACT_AUTOMATIC_GENERAL", ContactType::automatic, true, 12, Enforcement::penalty, false, "automatic"},
+    {"*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "automatic surface to surface", ContactForm::automatic_surface_to_surface},
+    {"*CONTACT_AUTOMATIC_NODES_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "automatic nodes to surface", ContactForm::automatic_nodes_to_surface},
+    {"*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "forming one way", ContactForm::forming_one_way},
 };
 
 // ContactType's values are DYNA3D's type numbers: the table must agree.
@@ -51,12 +60,12 @@ static_assert([] {
   return true;
 }());
 
-/// The row of a contact card (its type, and for type 12 the _GENERAL spelling), or nullptr for a
-/// type no row has.
+/// The row of a contact card (its type and form, and for type 12 the _GENERAL spelling), or
+/// nullptr for a type no row has.
 constexpr const ContactKeyword* contact_keyword(const Contact& c) {
   const ContactKeyword* first = nullptr;
   for (const auto& k : kContactKeywords) {
-    if (k.type != c.type) continue;
+    if (k.type != c.type || k.form != c.form) continue;
     if (k.automatic_general == c.automatic_general) return &k;
     if (!first) first = &k;
   }

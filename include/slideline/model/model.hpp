@@ -420,6 +420,23 @@ enum class ContactType : std::uint8_t {
 
 enum class Enforcement : std::uint8_t { kinematic, penalty, lagrange };
 
+/// Which LS-DYNA card of a DYNA3D type family a contact is (LS-DYNA's automatic cards have no
+/// DYNA3D number: they run as the family whose pass they reuse, docs/contact.md, "Automatic
+/// cards"). `dyna3d`: the card of the type itself.
+enum class ContactForm : std::uint8_t {
+  dyna3d,
+  /// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (type family 12): the automatic pass over both sides'
+  /// nodes and segments, restricted to the cross pairs (a slave-side node on a master-side
+  /// segment, or the reverse).
+  automatic_surface_to_surface,
+  /// *CONTACT_AUTOMATIC_NODES_TO_SURFACE (type family 12): one way, the slave side's nodes against
+  /// the master side's segments with the automatic pass's filters (shells two-sided).
+  automatic_nodes_to_surface,
+  /// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE (type family 12): as automatic_nodes_to_surface
+  /// (a forming tool's master surface needs no consistent orientation).
+  forming_one_way,
+};
+
 /// A *CONTACT_... card with its cards 1-3 and the optional tiebreak card 4.
 struct Contact {
   Id cid = 0;             ///< from _ID; 0 if absent
@@ -429,6 +446,7 @@ struct Contact {
   Enforcement enforcement = Enforcement::penalty;
   bool sliding_only_option = false;  ///< Type 10's sliding-only (no separation) option
   bool automatic_general = false;    ///< _GENERAL rather than _SINGLE_SURFACE for type 12
+  ContactForm form = ContactForm::dyna3d;  ///< the LS-DYNA card of the type family
   // Card 1
   Id ssid = 0, msid = 0;
   int sstyp = 0, mstyp = 0;  ///< 0 segment set, 2 part set, 3 part id, 4 node set, 5 all

@@ -103,5 +103,26 @@ TEST(InterfaceSpec, TiedLagrangeIsRefusedBeforeTheSidesAreBuilt) {
   EXPECT_NE(build_error<NotImplementedError>(m).find("tied interfaces are kinematic"), std::string::npos);
 }
 
+// The LS-DYNA automatic cards (model::ContactForm): penalty only, and the two-sided card needs
+// surfaces on both sides; each refusal names the card's file and line.
+TEST(InterfaceSpec, AutomaticCardsRefuseLagrangeAndANodeSetSurface) {
+  model::Model m = scenarios::make_sslide_problem("sslide3p").model;
+  model::Contact& c = m.contacts.front();
+  c.type = model::ContactType::automatic;
+  c.form = model::ContactForm::automatic_surface_to_surface;
+  c.keyword = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_LAGRANGE";
+  c.src = {"deck.k", 40};
+  c.enforcement = model::Enforcement::lagrange;
+  const std::string lagrange = build_error<NotImplementedError>(m);
+  EXPECT_NE(lagrange.find("deck.k:40: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_LAGRANGE"), std::string::npos) << lagrange;
+  EXPECT_NE(lagrange.find("penalty enforcement only"), std::string::npos) << lagrange;
+  c.enforcement = model::Enforcement::penalty;
+  c.keyword = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE";
+  c.sstyp = 4;
+  const std::string node_set = build_error<InputError>(m);
+  EXPECT_NE(node_set.find("deck.k:40: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE: SSTYP = 4"), std::string::npos)
+      << node_set;
+}
+
 }  // namespace
 }  // namespace slideline

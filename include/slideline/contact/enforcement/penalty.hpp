@@ -150,6 +150,13 @@ class PenaltyPass {
   /// Which master segments each slave may meet (search/slave_orientation.hpp; indexed like
   /// slaves()), set by the factory before initialize(); default: no orientation filter.
   void set_slave_orientation(SlaveOrientation orientation) { pairs_.set_orientation(std::move(orientation)); }
+  /// Two-sided automatic pass: the side masks of slaves and master segments and the master
+  /// segments' offsets (ContactPairs::set_sides, set_master_offsets); before initialize().
+  void set_sides(std::vector<std::uint8_t> slave_sides, std::vector<std::uint8_t> segment_sides,
+                 std::vector<Real> segment_offsets) {
+    pairs_.set_sides(std::move(slave_sides), std::move(segment_sides));
+    pairs_.set_master_offsets(std::move(segment_offsets));
+  }
   /// Part of each slave node (automatic pass: its own-part filter), set by the owner.
   std::vector<Id>& slave_part() { return pairs_.slave_parts(); }
   const std::vector<Id>& slave_part() const { return pairs_.slave_parts(); }

@@ -108,6 +108,17 @@ class ContactPairs {
   /// Part of each slave node (skip_own_shell_part); before initialize().
   std::vector<Id>& slave_parts() { return slave_part_; }
   const std::vector<Id>& slave_parts() const { return slave_part_; }
+  /// Two-sided automatic contact (*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE): the side of each slave
+  /// (indexed like slaves()) and of each master segment, bit 1 the card's slave side, bit 2 its
+  /// master side (both bits: on both sides). A slave meets a segment only when their masks
+  /// together hold both sides: the cross pairs. Before initialize(); never called: no filter.
+  void set_sides(std::vector<std::uint8_t> slave_sides, std::vector<std::uint8_t> segment_sides) {
+    slave_side_mask_ = std::move(slave_sides);
+    segment_side_mask_ = std::move(segment_sides);
+  }
+  /// One offset per master segment (length) instead of the ShellOffsetRule's (a surface whose
+  /// segments come from two sides with their own thickness rules); before initialize().
+  void set_master_offsets(std::vector<Real> offsets) { master_offset_given_ = std::move(offsets); }
   /// Per master segment, the deepest contact (contact_depth_limit), from the element blocks at x.
   /// Without it, depth_limit() is half the projection's segment size.
   void set_depth_limits(const Vec3Field& x, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
@@ -188,6 +199,9 @@ class ContactPairs {
   std::vector<ContactPoint> points_;
   std::vector<std::int8_t> side_;       ///< shell side of each slave, 0 unknown
   std::vector<Id> slave_part_;
+  std::vector<std::uint8_t> slave_side_mask_;    ///< set_sides(): per slave (empty: no side filter)
+  std::vector<std::uint8_t> segment_side_mask_;  ///< set_sides(): per master segment
+  std::vector<Real> master_offset_given_;        ///< set_master_offsets() (empty: the rule's)
   std::vector<std::uint8_t> slave_solid_;  ///< skip_own_shell_part: the node has only solid faces
   Real allowance_ = 0.0;
   Real min_size_ = 1.0;
@@ -207,7 +221,9 @@ inline void ContactPairs::initialize(const Vec3Field& x) {
   Real min_diag = std::numeric_limits<Real>::max(), max_offset = 0.0;
   for (Index s = 0; s < ns; ++s) {
     min_diag = std::min(min_diag, segment_max_diagonal(master_, s, x));
-    master_offset_[static_cast<std::size_t>(s)] = segment_offset(master_, s, master_shells_);
+    master_offset_[static_cast<std::size_t>(s)] = master_offset_given_.empty()
+                                                      ? segment_offset(master_, s, master_shells_)
+                                                      : master_offset_given_[static_cast<std::size_t>(s)];
     max_offset = std::max(max_offset, master_offset_[static_cast<std::size_t>(s)]);
   }
   min_size_ = ns > 0 ? min_diag : 1.0;
@@ -251,11 +267,12 @@ inline void ContactPairs::initialize(const Vec3Field& x) {
   }
 }
 
-/// Which segments slave i may meet: its orientation (search/slave_orientation.hpp) and, with
-/// skip_own_shell_part, no self-contact of a shell part (a shell node or a shell segment never
-/// meets its own part).
+/// Which segments slave i may meet: with set_sides(), the cross pairs only; its orientation
+/// (search/slave_orientation.hpp) and, with skip_own_shell_part, no self-contact of a shell part
+/// (a shell node or a shell segment never meets its own part).
 inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) const {
   const std::size_t su = static_cast<std::size_t>(s);
+  if (!segment_side_mask_.empty() && (slave_side_mask_[i] | segment_side_mask_[su]) != 3) return false;
   if (opt_.skip_own_shell_part && (!slave_solid_[i] || master_.kind[su] == SegmentKind::shell) &&
       slave_part_[i] == master_.part[su])
     return false;

@@ -1,0 +1,138 @@
+// The LS-DYNA automatic cards, penalty (contact/automatic_surface_contact.hpp): the automatic pass
+// over both sides restricted to the cross pairs (*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE), or one way,
+// the slave side's nodes on the master side's segments (*CONTACT_AUTOMATIC_NODES_TO_SURFACE,
+// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE).
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <tuple>
+#include <vector>
+
+#include "slideline/contact/automatic_surface_contact.hpp"
+#include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/contact/penalty_factory.hpp"
+#include "slideline/mesh/surface_builder.hpp"
+
+namespace slideline {
+
+namespace {
+
+/// The union of two sides' surfaces: the slave side's segments, then the master side's that are
+/// not already there (same element, same kind, same nodes), with adjacency built. `sides` gets
+/// one mask per segment (bit 1 slave side, bit 2 master side).
+Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t>& sides) {
+  using Key = std::tuple<Index, Index, SegmentKind, std::array<Index, 4>>;
+  const auto key = [](const Surface& s, Index k) {
+    std::array<Index, 4> n{};
+    std::copy_n(&s.conn[4 * static_cast<std::size_t>(k)], 4, n.begin());
+    std::sort(n.begin(), n.end());
+    const auto u = static_cast<std::size_t>(k);
+    return Key{s.block[u], s.element[u], s.kind[u], n};
+  };
+  Surface out;
+  std::map<Key, Index> seen;
+  sides.clear();
+  const auto append = [&](const Surface& s, std::uint8_t bit) {
+    for (Index k = 0; k < s.segment_count(); ++k) {
+      const auto [it, fresh] = seen.emplace(key(s, k), out.segment_count());
+      if (!fresh) {
+        sides[static_cast<std::size_t>(it->second)] |= bit;
+        continue;
+      }
+      const auto u = static_cast<std::size_t>(k);
+      out.conn.insert(out.conn.end(), &s.conn[4 * u], &s.conn[4 * u] + 4);
+      out.block.push_back(s.block[u]);
+      out.element.push_back(s.element[u]);
+      out.part.push_back(s.part[u]);
+      out.kind.push_back(s.kind[u]);
+      out.thickness.push_back(s.thickness[u]);
+      sides.push_back(bit);
+    }
+  };
+  append(a, 1);
+  append(b, 2);
+  build_surface_adjacency(out);
+  return out;
+}
+
+/// Each node's side mask (bit 1: on `slave`, bit 2: on `master`) and offset: the largest of its
+/// sides' offsets, each side by its own rule (SST/SFST, MST/SFMT; a node-set slave side: the
+/// nodal radius).
+struct NodeSides {
+  std::vector<std::uint8_t> mask;
+  std::vector<Real> offset;
+};
+NodeSides node_sides(const std::vector<Index>& nodes, const InterfaceSpec& spec) {
+  const ContactSide& slave = spec.slave;
+  const ContactSide& master = spec.master;
+  // SST/SFST offset shells only; a node set's nodes take it as their radius (Type 5's rule).
+  const std::vector<Real> on_slave =
+      slave_node_offsets(slave, spec.slave_shells, spec.node_set_slaves ? spec.nodal_radius : 0.0);
+  const std::vector<Real> on_master = slave_node_offsets(master, spec.master_shells, 0.0);
+  NodeSides out{std::vector<std::uint8_t>(nodes.size(), 0), std::vector<Real>(nodes.size(), 0.0)};
+  const auto add = [&](std::size_t i, const std::vector<Index>& side, const std::vector<Real>& offsets,
+                       std::uint8_t bit) {
+    const auto it = std::lower_bound(side.begin(), side.end(), nodes[i]);
+    if (it == side.end() || *it != nodes[i]) return;
+    out.mask[i] |= bit;
+    out.offset[i] = std::max(out.offset[i], offsets[static_cast<std::size_t>(it - side.begin())]);
+  };
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    add(i, slave.nodes, on_slave, 1);
+    add(i, master.nodes, on_master, 2);
+  }
+  return out;
+}
+
+/// Offset of each segment of `surface` (length) by the rule of its side (`sides`, bit 1 slave,
+/// bit 2 master; the larger on both).
+std::vector<Real> segment_offsets(const Surface& surface, const std::vector<std::uint8_t>& sides,
+                                  const InterfaceSpec& spec) {
+  std::vector<Real> out(sides.size(), 0.0);
+  for (Index s = 0; s < surface.segment_count(); ++s) {
+    const auto u = static_cast<std::size_t>(s);
+    if (sides[u] & 1) out[u] = segment_offset(surface, s, spec.slave_shells);
+    if (sides[u] & 2) out[u] = std::max(out[u], segment_offset(surface, s, spec.master_shells));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  const bool two_sided = spec.form == model::ContactForm::automatic_surface_to_surface;
+  // Two-sided: every node and segment of both sides, cross pairs only. One way: the slave side's
+  // nodes against the master side's segments (every pair is a cross pair).
+  ContactSide pass_side;  // the pass's slaves (nodes) and, for the mortar coupling, their surface
+  Surface master;
+  std::vector<std::uint8_t> sides;
+  if (two_sided) {
+    master = merge_sides(spec.slave.surface, spec.master.surface, sides);
+    pass_side.surface = master;
+    pass_side.nodes = master.nodes;
+  } else {
+    master = spec.master.surface;
+    sides.assign(static_cast<std::size_t>(master.segment_count()), 2);
+    pass_side = spec.slave;
+  }
+  NodeSides nodes = node_sides(pass_side.nodes, spec);
+  std::vector<Real> offsets = segment_offsets(master, sides, spec);
+  // Orientation of a solid node: its own faces (the union, the slave surface, or for a node set
+  // the faces of the parts it lies on).
+  const Surface own = two_sided              ? master
+                      : spec.node_set_slaves ? node_set_faces(pass_side.nodes, ctx, spec.where + ": SSID")
+                                             : spec.slave.surface;
+  // The automatic pass (skip incident segments and a shell part's own segments, orientation of
+  // solid faces, re-pick among the candidates between searches) at SLSFAC x SFS (the reader
+  // refuses SFM != SFS for a one-pass interface).
+  auto pass = make_penalty_pass(pass_side, std::move(nodes.offset), master,
+                                penalty_pass_options(spec, spec.slave_stiffness, spec.master_shells));
+  pass->slave_part() = node_parts(pass_side);
+  pass->set_slave_orientation(SlaveOrientation(own, pass_side.nodes));
+  pass->set_sides(std::move(nodes.mask), sides, std::move(offsets));
+  return make_penalty_interface<AutomaticSurfaceContact>(spec, std::move(pass), std::move(sides));
+}
+
+}  // namespace slideline
