@@ -13,8 +13,10 @@ using namespace slideline;
 namespace {
 
 /// n x n x n unit cube of the spec's rubber, bottom fixed in y, loaded by gravity-like body load;
-/// stiffness damping `beta` (0 = none).
-std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
+/// stiffness damping `beta` (0 = none), hourglass form `hg` (default: the spec's type 10; QM 1, or
+/// the default 0.1 for the viscous form).
+std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0,
+                                      HexHourglass::Kind hg = HexHourglass::Kind::physical_stiffness) {
   SimulationSetup setup;
   const int m = n + 1;
   const Index nn = m * m * m;
@@ -43,7 +45,7 @@ std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0) {
       }
   setup.blocks.push_back(std::make_unique<HexBlock<MooneyRivlin>>(
       1, MooneyRivlin(0.01, 909.091, 0.0, 0.1),
-      HexHourglass{HexHourglass::Kind::physical_stiffness, 1.0}, BulkViscosity{}, std::move(conn),
+      HexHourglass{hg, hg == HexHourglass::Kind::viscous ? 0.1 : 1.0}, BulkViscosity{}, std::move(conn),
       std::move(ids), StiffnessDamping{beta}));
   SupportGroup bottom{"bottom", {}, Vec3::Zero()};
   Support s;
@@ -94,6 +96,24 @@ void BM_HexInternalForces(benchmark::State& state) {
   set_threads(max_threads());
 }
 
+/// The element kernel with each hourglass form (argument: 0 viscous, 1 type 10, 2 types 4/5, 3 type 6).
+void BM_HexHourglassForms(benchmark::State& state) {
+  set_threads(1);
+  const auto hg = static_cast<HexHourglass::Kind>(state.range(1));
+  auto sim = make_cube(static_cast<int>(state.range(0)), 0.0, hg);
+  for (int i = 0; i < 20; ++i) sim->step();
+  BlockEnergy e;
+  CornerBuffer cb;
+  auto& block = *sim->blocks().front();
+  cb.force.resize(block.connectivity().size());
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(block.compute_forces(sim->nodes(), 1e-5, cb, e));
+    benchmark::ClobberMemory();
+  }
+  set_counters(state, sim->element_count());
+  set_threads(max_threads());
+}
+
 void BM_FullStep(benchmark::State& state) {
   set_threads(static_cast<int>(state.range(1)));
   auto sim = make_cube(static_cast<int>(state.range(0)));
@@ -116,6 +136,11 @@ BENCHMARK(BM_HexInternalForces)->Apply(sizes);
 BENCHMARK(BM_HexInternalForces)
     ->Args({46, 1, 1})
     ->ArgNames({"n", "threads", "damped"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_HexHourglassForms)
+    ->ArgsProduct({{46}, {0, 1, 2, 3}})
+    ->ArgNames({"n", "hourglass"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_FullStep)->Apply(sizes);

@@ -72,6 +72,8 @@ std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const Id
 
 std::optional<HexHourglass::Kind> hex_hourglass_kind(int ihq) {
   if (ihq == 0 || ihq == 1 || ihq == 2 || ihq == 3) return HexHourglass::Kind::viscous;
+  if (ihq == 4 || ihq == 5) return HexHourglass::Kind::fb_stiffness;  // 5: our B is already exact
+  if (ihq == 6) return HexHourglass::Kind::assumed_strain;
   if (ihq == 10) return HexHourglass::Kind::physical_stiffness;
   return std::nullopt;
 }

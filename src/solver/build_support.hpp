@@ -60,8 +60,8 @@ int shell_nip(const model::SectionShell& sec);
 /// coefficient beta = -COEF (validate_model refuses COEF > 0, LS-DYNA's later, unpublished formulation).
 std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const IdTable<model::Part>& parts);
 
-/// The hexahedron hourglass kind of an IHQ (1-3 viscous, 10 physical stiffness; 0 means the
-/// default); nothing for the other types (validate_model refuses them, naming the part).
+/// The hexahedron hourglass kind of an IHQ (1-3 viscous, 4-5 Flanagan-Belytschko stiffness, 6 assumed
+/// strain, 10 physical stiffness; 0 means the default); nothing for the other types (validate_model refuses them, naming the part).
 std::optional<HexHourglass::Kind> hex_hourglass_kind(int ihq);
 
 /// The hexahedron hourglass control of a validated IHQ and its coefficient QM.

@@ -94,7 +94,8 @@ void check_solid_part(const model::Part& part, const model::SectionSolid* sec, c
            " is not implemented (only 1, the one-point hexahedron)");
   if (!hex_hourglass_kind(ihq))
     p.todo(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) + " of part " +
-           std::to_string(part.pid) + " is not implemented (use 1-3 viscous or 10 physical stiffness)");
+           std::to_string(part.pid) + " is not implemented (use 1-3 viscous, 4-5 Flanagan-Belytschko stiffness, 6 assumed strain or 10 physical "
+           "stiffness)");
   if (!laws.solid)
     p.todo(describe(part.src) + ": part " + std::to_string(part.pid) + " combines solids with " + laws.keyword +
            (std::string(laws.keyword) == "*MAT_NULL" ? " (a solid of it needs an equation of state, *EOS_...)" : "") +

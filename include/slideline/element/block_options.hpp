@@ -12,8 +12,10 @@ namespace slideline {
 /// Hourglass control of a hexahedron block.
 struct HexHourglass {
   enum class Kind : std::uint8_t {
-    viscous,            ///< Flanagan-Belytschko viscous (LS-DYNA/DYNA3D types 1-3)
-    physical_stiffness  ///< total-displacement stiffness scaled to the element's bending stiffness (type 10)
+    viscous,             ///< Flanagan-Belytschko viscous (LS-DYNA/DYNA3D types 1-3)
+    physical_stiffness,  ///< total-displacement stiffness scaled to the element's bending stiffness (type 10)
+    fb_stiffness,        ///< Flanagan-Belytschko stiffness on the velocity-integrated forces (types 4, 5)
+    assumed_strain       ///< assumed-strain co-rotational stiffness after Belytschko-Bindeman (type 6)
   };
   Kind kind = Kind::viscous;
   Real coefficient = 0.1;

@@ -168,3 +168,133 @@ TEST(HexBlockTimeStep, EqualsEdgeOverWaveSpeedForCubeAtRest) {
   for (int i = 0; i < 8; ++i) m += nodes.mass[i];
   EXPECT_NEAR(m, 7.8e-3 * 0.25 * 0.25 * 0.25, 1e-15);
 }
+
+namespace {
+
+/// One element [-a, a] x [-b, b] x [-c, c] about `centre`, turned by R, in a block with hourglass
+/// `hg`; u(p) (local coordinates p about the centre, local components) is applied as R u(R^T p).
+/// Returns the work -sum f . u of the resulting nodal forces (= 2 U for a linear response).
+template <class Field>
+Real element_work(HexHourglass hg, const ElasticSolid& mat, Vec3 half, const Mat3& R, Field u_local) {
+  NodalFields nodes;
+  nodes.resize(8);
+  const hex8::NodeMat X = test_support::unit_hex();
+  const Vec3 centre(0.3, -0.2, 0.7);
+  std::array<Vec3, 8> u;
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 p((2.0 * X(i, 0) - 1.0) * half[0], (2.0 * X(i, 1) - 1.0) * half[1], (2.0 * X(i, 2) - 1.0) * half[2]);
+    u[i] = R * u_local(p);
+    nodes.ids[i] = i + 1;
+    nodes.x0.set(i, centre + R * p);
+    nodes.x.set(i, centre + R * p + u[i]);
+  }
+  HexBlock<ElasticSolid> block(1, mat, hg, {}, {0, 1, 2, 3, 4, 5, 6, 7}, {1});
+  CornerBuffer corners;
+  test_support::prepare(block, nodes, corners);
+  test_support::evaluate(block, nodes, corners);
+  Real w = 0.0;
+  for (int i = 0; i < 8; ++i) w -= nodes.f_int.get(i).dot(u[i]);
+  return w;
+}
+
+}  // namespace
+
+// Assumed-strain hourglass (IHQ 6, QM = 1) on a rectangular 2a x 2b x 2c element, straight and
+// turned by a large rotation: pure bending u_x = k x y (in the element's axes) stores the
+// Euler-Bernoulli energy U = E k^2 I_z (2a) / 2 = E k^2 V b^2 / 6 (uniaxial stress, no parasitic
+// shear: the one-point part sees no mean strain), and the plate twist u = k (-y z, -x z, x y)
+// stores U = mu k^2 V (2c)^2 / 6 (gamma_xy = -2 k z, every other strain zero). The viscous form
+// has no stiffness at all.
+TEST(HexBlockAssumedStrain, RectangularElementBendingAndTwistMatchTheClosedFormEnergies) {
+  const Real e = 1000.0, nu = 0.3, mu = e / (2.0 * (1.0 + nu)), k = 1e-5;
+  const ElasticSolid mat(1.0, e, nu);
+  const Vec3 half(1.0, 0.25, 0.5);
+  const Real vol = 8.0 * half.prod();
+  const auto bend = [&](const Vec3& p) { return Vec3(k * p[0] * p[1], 0.0, 0.0); };
+  const auto twist = [&](const Vec3& p) { return Vec3(-k * p[1] * p[2], -k * p[0] * p[2], k * p[0] * p[1]); };
+  const Real u_bend = e * k * k * vol * half[1] * half[1] / 6.0;
+  const Real u_twist = mu * k * k * vol * 4.0 * half[2] * half[2] / 6.0;
+  const HexHourglass as{HexHourglass::Kind::assumed_strain, 1.0};
+  for (const Mat3& R : {Mat3(Mat3::Identity()),
+                        Mat3(Eigen::AngleAxis<Real>(0.9, Vec3(1, -2, 0.5).normalized()).toRotationMatrix())}) {
+    EXPECT_NEAR(element_work(as, mat, half, R, bend), 2.0 * u_bend, 1e-6 * u_bend);
+    EXPECT_NEAR(element_work(as, mat, half, R, twist), 2.0 * u_twist, 1e-6 * u_twist);
+    EXPECT_NEAR(element_work({HexHourglass::Kind::viscous, 0.1}, mat, half, R, bend), 0.0, 1e-6 * u_bend);
+  }
+  // QM scales the stiffness: the default 0.1 stores a tenth.
+  EXPECT_NEAR(element_work({HexHourglass::Kind::assumed_strain, 0.1}, mat, half, Mat3::Identity(), bend),
+              0.2 * u_bend, 1e-6 * u_bend);
+}
+
+// Flanagan-Belytschko stiffness (IHQ 4/5): a unit cube given the hourglass velocity v_x = s Gamma_3
+// (the xi eta mode) gets generalised force Q = dt k qdot with qdot = 8 s (gamma = Gamma on a
+// rectangular element), k = QM (lambda + 2 mu) V |B|^2 / 72, |B|^2 = 3 / (2 h^2); the nodal forces
+// are f_I = -Q Gamma_I, and a second step with the same velocity doubles them (the forces are
+// integrated, not recomputed from the rate).
+TEST(HexBlockFlanaganBelytschkoStiffness, HourglassVelocityIntegratesToTheClosedFormForce) {
+  const Real e = 1000.0, nu = 0.3, s = 0.02, dt = 1e-3, qm = 0.1;
+  const ElasticSolid mat(1.0, e, nu);
+  NodalFields nodes;
+  nodes.resize(8);
+  const hex8::NodeMat X = test_support::unit_hex();
+  for (int i = 0; i < 8; ++i) {
+    nodes.ids[i] = i + 1;
+    nodes.x0.set(i, X.row(i).transpose());
+    nodes.x.set(i, X.row(i).transpose());
+    nodes.v.set(i, Vec3(s * hex8::hourglass_signs[2][i], 0.0, 0.0));
+  }
+  HexBlock<ElasticSolid> block(1, mat, {HexHourglass::Kind::fb_stiffness, qm}, {}, {0, 1, 2, 3, 4, 5, 6, 7}, {1});
+  CornerBuffer corners;
+  test_support::prepare(block, nodes, corners);
+  const Real lambda2mu = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  const Real q = dt * qm * lambda2mu * 1.5 / 72.0 * 8.0 * s;
+  for (int step = 1; step <= 2; ++step) {
+    BlockEnergy en;
+    block.compute_forces(nodes, dt, corners, en);
+    nodes.f_int.fill(0.0);
+    corners.gather(nodes.f_int, nodes.m_int);
+    for (int i = 0; i < 8; ++i) {
+      EXPECT_NEAR(nodes.f_int.x[i], -step * q * hex8::hourglass_signs[2][i], 1e-12 * q);
+      EXPECT_NEAR(nodes.f_int.y[i], 0.0, 1e-12 * q);
+      EXPECT_NEAR(nodes.f_int.z[i], 0.0, 1e-12 * q);
+    }
+  }
+}
+
+// The stiffness forms on the distorted 2x2x2 patch: a rigid motion (large rotation, spin) and a
+// uniform strain with a linear velocity field give no hourglass force, so every interior node is
+// in equilibrium and the rigid mesh has no force at all (patch test of the hourglass part).
+TEST(HexBlockStiffnessHourglass, RigidMotionAndUniformStrainGiveNoHourglassForce) {
+  for (auto kind : {HexHourglass::Kind::fb_stiffness, HexHourglass::Kind::assumed_strain}) {
+    PatchMesh p = make_patch_mesh();
+    const ElasticSolid mat(1.0, 1000.0, 0.3);
+    HexBlock<ElasticSolid> block(1, mat, {kind, 1.0}, {}, p.conn, p.ids);
+    CornerBuffer corners;
+    test_support::prepare(block, p.nodes, corners);
+    const Mat3 R = Eigen::AngleAxis<Real>(1.1, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+    Mat3 L;
+    L << 0.3, -0.1, 0.2, 0.05, -0.2, 0.1, 0.0, 0.15, 0.25;
+    for (Index i = 0; i < 27; ++i) {
+      const Vec3 x = R * p.nodes.x0.get(i) + Vec3(3.0, -2.0, 1.0);
+      p.nodes.x.set(i, x);
+      p.nodes.v.set(i, Vec3(2.0, -1.0, 0.5) + Vec3(0.3, -1.2, 0.7).cross(x));
+    }
+    BlockEnergy en;
+    for (int step = 0; step < 3; ++step) block.compute_forces(p.nodes, 1e-3, corners, en);
+    p.nodes.f_int.fill(0.0);
+    corners.gather(p.nodes.f_int, p.nodes.m_int);
+    Real fmax = 0.0;
+    for (Index i = 0; i < 27; ++i) fmax = std::max(fmax, p.nodes.f_int.get(i).norm());
+    EXPECT_LT(fmax, 1e-10);
+    Mat3 F;
+    F << 1.02, 0.01, -0.005, 0.003, 0.985, 0.01, 0.0, 0.004, 1.01;
+    for (Index i = 0; i < 27; ++i) {
+      p.nodes.x.set(i, F * p.nodes.x0.get(i));
+      p.nodes.v.set(i, L * p.nodes.x.get(i));
+    }
+    for (int step = 0; step < 3; ++step) block.compute_forces(p.nodes, 1e-3, corners, en);
+    p.nodes.f_int.fill(0.0);
+    corners.gather(p.nodes.f_int, p.nodes.m_int);
+    for (int n : p.interior) EXPECT_LT(p.nodes.f_int.get(n).norm(), 1e-10);
+  }
+}

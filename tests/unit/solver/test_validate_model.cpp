@@ -143,3 +143,27 @@ TEST(ValidateModel, SeedDeckHexahedraAreValid) {
 }
 
 }  // namespace
+
+TEST(ValidateModel, SolidHourglassTypesRunOrAreRefusedNamingThePart) {
+  // 1-6 and 10 run on hexahedra (4/5 Flanagan-Belytschko stiffness, 6 assumed strain); the others
+  // are refused naming the part's card and line.
+  for (int ihq : {0, 1, 2, 3, 4, 5, 6, 10}) {
+    model::Model m = read_keyword_file(deck("unit_cube.k"));
+    m.control_hourglass.ihq = ihq;
+    EXPECT_NO_THROW(validate_model(m)) << "IHQ " << ihq;
+  }
+  for (int ihq : {7, 8, 9}) {
+    model::Model m = read_keyword_file(deck("unit_cube.k"));
+    m.control_hourglass.ihq = ihq;
+    try {
+      validate_model(m);
+      ADD_FAILURE() << "IHQ " << ihq << " accepted";
+    } catch (const NotImplementedError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(deck("unit_cube.k") + ":", 0), 0u) << what;
+      EXPECT_NE(what.find("hourglass type IHQ=" + std::to_string(ihq) + " of part 1 is not implemented"),
+                std::string::npos)
+          << what;
+    }
+  }
+}
