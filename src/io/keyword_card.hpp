@@ -227,11 +227,28 @@ void check_section_fields(const Context& ctx, const Line& card1, const Line* car
                           bool shell);
 /// Refuses *HOURGLASS QB / QW other than 0 or QM (the shell hourglass takes QM for every mode).
 void check_hourglass_fields(const Context& ctx, const Line& card, std::string_view keyword, Real qm);
-/// Reads the optional cards A-E of a *CONTACT_... keyword (what is left in the block).
-void read_contact_optional_cards(const Context& ctx, Block& block);
+/// Cards whose fields beyond those the model stores are checked by check_unread_fields (the order
+/// of its rule tables in keyword_contact_fields.cpp).
+enum class StoredCard : std::uint8_t {
+  part,                     ///< *PART card 2: GRAV, ADPOPT, TMID
+  mat_elastic,              ///< *MAT_ELASTIC: DA, DB, K
+  mat_mooney_rivlin,        ///< *MAT_MOONEY-RIVLIN_RUBBER card 1: REF
+  mat_rigid,                ///< *MAT_RIGID card 1: N, COUPLE, M (ALIAS is text)
+  control_bulk_viscosity,   ///< BTYPE, TSTYPE
+  control_termination,      ///< ENDMAS, NOSOL
+  control_timestep,         ///< card 1: ERODE, MS1ST
+  control_timestep_card2,   ///< DT2MSF, DT2MSLC, IMSCL, RMSCL, EMSCL, IHDO
+  define_curve,             ///< LCINT
+};
+/// Refuses (NotImplementedError naming file, line and field) or warns about the fields of `card`
+/// that the reader does not store when they are not at their manual default (0 and blank both
+/// mean the default): what was read and dropped before. docs/keywords.md lists them.
+void check_unread_fields(const Context& ctx, const Line& card, std::string_view keyword, StoredCard which);
+/// Reads the optional cards A-F of a *CONTACT_... keyword (what is left in the block): IGNORE of
+/// card C into `c`, the other fields checked.
+void read_contact_optional_cards(const Context& ctx, Block& block, model::Contact& c);
 /// Reads cards 2-6 of *CONTROL_CONTACT (what is left in the block) and checks card 1's fields
 /// that the solver does not act on.
-void read_control_contact_cards(const Context& ctx, Block& block, const model::ControlContact& card1,
-                                int card1_line);
+void read_control_contact_cards(const Context& ctx, Block& block, model::ControlContact& card1, int card1_line);
 
 }  // namespace slideline::keyword
