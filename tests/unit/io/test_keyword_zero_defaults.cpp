@@ -13,6 +13,7 @@
 #include "slideline/contact/penalty_contact.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/io/keyword_writer.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/simulation.hpp"
 
@@ -203,6 +204,10 @@ TEST(KeywordContactFields, IgnoreIsReadFromOptionalCardCAndControlCard4) {
   const auto m = read_keyword_string("*KEYWORD\n" + control + contact_deck(blank, blank, card_c).substr(9), "u.k");
   EXPECT_EQ(m.contacts[0].ignore, 2);
   EXPECT_EQ(m.control_contact.ignore, 1);
+  // The writer keeps them (optional card C, *CONTROL_CONTACT card 4).
+  const auto back = read_keyword_string(write_keyword_string(m), "w.k");
+  EXPECT_EQ(back.contacts[0].ignore, 2);
+  EXPECT_EQ(back.control_contact.ignore, 1);
   // Another value is an input error naming file, line and field.
   try {
     read_keyword_string(contact_deck(blank, blank, blank + blank + card({"", "3"}, "")), "u.k");
