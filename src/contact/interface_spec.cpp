@@ -82,6 +82,7 @@ void check_runs(const model::Contact& card) {
     case T::tiebreak_nodes:
     case T::tiebreak_surface:
       if (lagrange) throw_contact_not_implemented(card, "tiebreak interfaces are penalty only");
+      if (card.vdc != 0.0) throw_contact_not_implemented(card, "viscous contact damping (VDC) of a tiebreak interface");
       if (card.sfs <= 0.0) throw InputError(at(card) + ": SFS of " +
                                             card_name(card) + " must be positive");
       return;
@@ -159,6 +160,16 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   spec.slave_stiffness = ctx.model.control_contact.slsfac * card.sfs;
   spec.master_stiffness = ctx.model.control_contact.slsfac * card.sfm;
   spec.sliding_only = card.sliding_only_option;
+  if (card.vdc < 0.0) throw InputError(where(card) + ": VDC (viscous contact damping, % of critical) must be >= 0");
+  spec.viscous_damping = card.vdc / 100.0;
+  // IGNORE: the card's (optional card C), 0 meaning *CONTROL_CONTACT's (card 4).
+  const int ignore = card.ignore != 0 ? card.ignore : ctx.model.control_contact.ignore;
+  if (ignore < 0 || ignore > 2)
+    throw InputError(where(card) + ": IGNORE must be 0, 1 or 2 (got " + std::to_string(ignore) + ")");
+  spec.keep_initial_penetrations = ignore != 0;
+  if (spec.keep_initial_penetrations && card.enforcement == model::Enforcement::lagrange)
+    throw_contact_not_implemented(card, "IGNORE = 1, 2 (initial penetrations kept; optional card C or "
+                                        "*CONTROL_CONTACT card 4) with Lagrange enforcement");
   spec.mortar_coupling = card.penalty_coupling == 1;
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};

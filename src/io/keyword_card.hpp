@@ -186,19 +186,46 @@ void warn_extra_cards(const Context& ctx, Block& block);
 /// The next card of `b`, or throws InputError "missing <what> card" naming the keyword's line.
 const Line& require_card(const Context& ctx, Block& b, const char* what);
 
+/// Cards whose fields beyond those the model stores are checked by check_unread_fields (the order
+/// of its rule tables in keyword_contact_fields.cpp).
+enum class StoredCard : std::uint8_t {
+  part,                     ///< *PART card 2: GRAV, ADPOPT, TMID
+  mat_elastic,              ///< *MAT_ELASTIC: DA, DB, K
+  mat_mooney_rivlin,        ///< *MAT_MOONEY-RIVLIN_RUBBER card 1: REF
+  mat_rigid,                ///< *MAT_RIGID card 1: N, COUPLE, M (ALIAS is text)
+  control_bulk_viscosity,   ///< BTYPE, TSTYPE
+  control_termination,      ///< ENDMAS, NOSOL
+  control_timestep,         ///< card 1: ERODE, MS1ST
+  control_timestep_card2,   ///< DT2MSF, DT2MSLC, IMSCL, RMSCL, EMSCL, IHDO
+  define_curve,             ///< LCINT
+  none,                     ///< a card whose reader stores every field it reads
+};
+/// Refuses (NotImplementedError naming file, line and field) or warns about the fields of `card`
+/// that the reader does not store when they are not at their manual default (0 and blank both
+/// mean the default): what was read and dropped before. docs/keywords.md lists them.
+void check_unread_fields(const Context& ctx, const Line& card, std::string_view keyword, StoredCard which);
+
 /// One *MAT_... card group: the title (when titled), card 1 read by `fields` (its Card, with the
 /// block to take further cards from), then the title, source and model entry every material
 /// shares. Adding a material = a model struct and one call of this with its fields.
+/// `card1` names the rules for the fields of card 1 that the model does not store (check_unread_fields).
 template <class Mat, class Fields>
-void read_material(const Context& ctx, Block& b, model::Model& m, bool titled, Fields&& fields) {
+void read_material(const Context& ctx, Block& b, model::Model& m, bool titled, StoredCard card1, Fields&& fields) {
   std::string title = titled ? heading(require_card(ctx, b, "title")) : std::string();
   const Line& l = require_card(ctx, b, "MID");
   Mat mat;
   fields(Card(ctx, l, b.keyword, kStandard), mat);
+  check_unread_fields(ctx, l, b.keyword, card1);
   mat.title = std::move(title);
   mat.src = ctx.source(l.number);
   m.materials.emplace_back(std::move(mat));
   warn_extra_cards(ctx, b);
+}
+
+/// read_material for a card whose reader stores every field of card 1.
+template <class Mat, class Fields>
+void read_material(const Context& ctx, Block& b, model::Model& m, bool titled, Fields&& fields) {
+  read_material<Mat>(ctx, b, m, titled, StoredCard::none, std::forward<Fields>(fields));
 }
 
 /// Runs `f` on the first card of a single-card keyword (no card: all defaults).
@@ -280,11 +307,11 @@ void check_hourglass_fields(const Context& ctx, const Line& card, std::string_vi
 /// *CONTROL_BULK_VISCOSITY block (its Q1 Q2 are read by its handler): a field that changes the
 /// physics and is not at its default is refused; a card beyond the manual's is refused.
 void check_control_fields(const Context& ctx, Block& block);
-/// Reads the optional cards A-E of a *CONTACT_... keyword (what is left in the block).
-void read_contact_optional_cards(const Context& ctx, Block& block);
+/// Reads the optional cards A-F of a *CONTACT_... keyword (what is left in the block): IGNORE of
+/// card C into `c`, the other fields checked.
+void read_contact_optional_cards(const Context& ctx, Block& block, model::Contact& c);
 /// Reads cards 2-6 of *CONTROL_CONTACT (what is left in the block) and checks card 1's fields
 /// that the solver does not act on.
-void read_control_contact_cards(const Context& ctx, Block& block, const model::ControlContact& card1,
-                                int card1_line);
+void read_control_contact_cards(const Context& ctx, Block& block, model::ControlContact& card1, int card1_line);
 
 }  // namespace slideline::keyword

@@ -113,6 +113,7 @@ void read_parts(const Context& ctx, Block& b, Model& m) {
     c.get(2, "MID", p.mid);
     c.get(3, "EOSID", p.eosid);
     c.get(4, "HGID", p.hgid);
+    check_unread_fields(ctx, l, b.keyword, StoredCard::part);
     p.src = ctx.source(l.number);
     m.parts.push_back(p);
   }
@@ -182,7 +183,7 @@ void read_section_shell(const Context& ctx, Block& b, Model& m, bool titled) {
 }
 
 void read_mat_elastic(const Context& ctx, Block& b, Model& m, bool titled) {
-  read_material<model::MatElastic>(ctx, b, m, titled, [](const Card& c, model::MatElastic& mat) {
+  read_material<model::MatElastic>(ctx, b, m, titled, StoredCard::mat_elastic, [](const Card& c, model::MatElastic& mat) {
     c.get(0, "MID", mat.mid);
     c.get(1, "RO", mat.ro);
     c.get(2, "E", mat.e);
@@ -191,7 +192,8 @@ void read_mat_elastic(const Context& ctx, Block& b, Model& m, bool titled) {
 }
 
 void read_mat_mooney_rivlin(const Context& ctx, Block& b, Model& m, bool titled) {
-  read_material<model::MatMooneyRivlin>(ctx, b, m, titled, [&](const Card& c, model::MatMooneyRivlin& mat) {
+  read_material<model::MatMooneyRivlin>(ctx, b, m, titled, StoredCard::mat_mooney_rivlin,
+                                         [&](const Card& c, model::MatMooneyRivlin& mat) {
     c.get(0, "MID", mat.mid);
     c.get(1, "RO", mat.ro);
     c.get(2, "PR", mat.pr);
@@ -213,7 +215,7 @@ void read_mat_mooney_rivlin(const Context& ctx, Block& b, Model& m, bool titled)
 }
 
 void read_mat_rigid(const Context& ctx, Block& b, Model& m, bool titled) {
-  read_material<model::MatRigid>(ctx, b, m, titled, [&](const Card& c, model::MatRigid& mat) {
+  read_material<model::MatRigid>(ctx, b, m, titled, StoredCard::mat_rigid, [&](const Card& c, model::MatRigid& mat) {
     c.get(0, "MID", mat.mid);
     c.get(1, "RO", mat.ro);
     c.get(2, "E", mat.e);
@@ -400,6 +402,7 @@ void read_curve(const Context& ctx, Block& b, Model& m, bool titled) {
   c.get(4, "OFFA", cv.offa);
   c.get(5, "OFFO", cv.offo);
   c.get(6, "DATTYP", cv.dattyp);
+  check_unread_fields(ctx, l, b.keyword, StoredCard::define_curve);
   cv.src = ctx.source(l.number);
   while (const Line* pl = next_record(b)) {
     Card pc = card_of(ctx, *pl, b, kCurvePoint);

@@ -24,6 +24,7 @@ enum class Use : std::uint8_t {
   speed,     ///< only tunes speed (search cadence, sorting): warning
   inert,     ///< acts only on a feature this code refuses or lacks (says which): warning
   unused,    ///< a field the manual leaves unused
+  step,      ///< only chooses the time step (the stable step is always respected): warning
 };
 
 struct Rule {
@@ -55,6 +56,9 @@ void act(const Context& ctx, int line, std::string_view keyword, std::string_vie
       return;
     case Use::inert:
       ctx.warn(line, field + " has nothing to act on here; ignored");
+      return;
+    case Use::step:
+      ctx.warn(line, field + " only chooses the time step; ignored (the stable step here is the standard one)");
       return;
     case Use::honoured:
     case Use::unused:
@@ -98,7 +102,7 @@ constexpr Rule kCardB[] = {
 };
 constexpr Rule kCardC[] = {
     {"IGAP", 1, Use::inert, "implicit convergence option; the run is explicit"},
-    {"IGNORE", 0, Use::refuse, "initial penetrations kept instead of being pushed out"},
+    {"IGNORE", 0, Use::honoured, ""},  // read by read_contact_optional_cards
     {"DPRFAC", 0, Use::refuse, "penetration depth reduction factor (SOFT = 2, Mortar)"},
     {"DTSTIF", 0, Use::refuse, "time step of the SOFT = 1/2 stiffness (Mortar parameter)"},
     {"EDGEK", 0, Use::refuse, "edge-to-edge penalty scale"},
@@ -167,7 +171,7 @@ constexpr Rule kControl3[] = {
     {"PTSCL", 0, Use::refuse, "penalty scale of node-to-segment contact"},
 };
 constexpr Rule kControl4[] = {
-    {"IGNORE", 0, Use::refuse, "initial penetrations kept instead of being pushed out"},
+    {"IGNORE", 0, Use::honoured, ""},  // read by read_control_contact_cards
     {"FRCENG", 0, Use::output, "frictional energy output"},
     {"SKIPRWG", 0, Use::output, "rigid-wall display"},
     {"OUTSEG", 0, Use::output, "spot weld segment output"},
@@ -244,7 +248,17 @@ void check_card2(const Context& ctx, const model::Contact& c, const Line* l) {
     field(ctx, l, kw, "card 2", c.dc, {"DC", 0, Use::inert, why});
   }
   field(ctx, l, kw, "card 2", c.vc, {"VC", 0, Use::refuse, "viscous friction limit"});
-  field(ctx, l, kw, "card 2", c.vdc, {"VDC", 0, Use::refuse, "viscous contact damping"});
+  // VDC: the penalty sliding interfaces (3, 5, 10, 12) damp their springs; kinematic ties and
+  // Type 1 have no spring to damp; tiebreak and Lagrange interfaces refuse it.
+  const bool penalty_sliding = c.enforcement == Enforcement::penalty && !is_tied(c.type) && !is_tiebreak(c.type) &&
+                               c.type != ContactType::sliding_only;
+  if (!penalty_sliding) {
+    const bool constraint = is_tied(c.type) || c.type == ContactType::sliding_only;
+    field(ctx, l, kw, "card 2", c.vdc,
+          {"VDC", 0, constraint ? Use::inert : Use::refuse,
+           constraint ? "viscous contact damping; this interface is a kinematic constraint, without a spring"
+                      : "viscous contact damping of a tiebreak or Lagrange interface"});
+  }
   field(ctx, l, kw, "card 2", c.penchk, {"PENCHK", 0, Use::refuse, "release of deep penetrations"});
 }
 
@@ -302,7 +316,86 @@ constexpr Rule kSectionShell2[] = {
     {"EDGSET", 0, Use::refuse, "edge node set of shell elements"},
 };
 
+// Fields of other cards that the reader does not store (keyword manual; the stored fields come first).
+constexpr Rule kPart[] = {
+    {"PID", 0, Use::honoured, ""},   {"SECID", 0, Use::honoured, ""}, {"MID", 0, Use::honoured, ""},
+    {"EOSID", 0, Use::honoured, ""}, {"HGID", 0, Use::honoured, ""},
+    {"GRAV", 0, Use::inert, "gravity initialisation of *LOAD_DENSITY_DEPTH, which is not read"},
+    {"ADPOPT", 0, Use::refuse, "adaptive remeshing of the part"},
+    {"TMID", 0, Use::inert, "thermal material (no thermal analysis here)"},
+};
+constexpr Rule kMatElastic[] = {
+    {"MID", 0, Use::honoured, ""}, {"RO", 0, Use::honoured, ""}, {"E", 0, Use::honoured, ""},
+    {"PR", 0, Use::honoured, ""},
+    {"DA", 0, Use::inert, "axial damping of Belytschko-Schwer beams (no beams here)"},
+    {"DB", 0, Use::inert, "bending damping of Belytschko-Schwer beams (no beams here)"},
+    {"K", 0, Use::inert, "bulk modulus of *MAT_ELASTIC_FLUID, which is not read"},
+};
+constexpr Rule kMatMooneyRivlin[] = {
+    {"MID", 0, Use::honoured, ""}, {"RO", 0, Use::honoured, ""}, {"PR", 0, Use::honoured, ""},
+    {"A", 0, Use::honoured, ""},   {"B", 0, Use::honoured, ""},
+    {"REF", 0, Use::inert, "reference geometry of *INITIAL_FOAM_REFERENCE_GEOMETRY, which is not read"},
+};
+constexpr Rule kMatRigid[] = {
+    {"MID", 0, Use::honoured, ""}, {"RO", 0, Use::honoured, ""}, {"E", 0, Use::honoured, ""},
+    {"PR", 0, Use::honoured, ""},
+    {"N", 0, Use::inert, "MADYMO / CAL3D coupling (none here)"},
+    {"COUPLE", 0, Use::inert, "MADYMO / CAL3D coupling option (none here)"},
+    {"M", 0, Use::inert, "MADYMO / CAL3D coupling (none here)"},
+    {"ALIAS", 0, Use::unused, ""},  // a name for the VDA interface, text
+};
+constexpr Rule kControlBulkViscosity[] = {
+    {"Q1", 1.5, Use::honoured, ""}, {"Q2", 0.06, Use::honoured, ""},
+    {"TYPE", 1, Use::honoured, ""},  // checked by the reader (1, -1, -2)
+    {"BTYPE", 0, Use::inert, "beam bulk viscosity (no beams here)"},
+    {"TSTYPE", 0, Use::inert, "thick-shell bulk viscosity (no thick shells here)"},
+};
+constexpr Rule kControlTermination[] = {
+    {"ENDTIM", 0, Use::honoured, ""}, {"ENDCYC", 0, Use::honoured, ""}, {"DTMIN", 0, Use::honoured, ""},
+    {"ENDENG", 0, Use::honoured, ""},
+    {"ENDMAS", 1e8, Use::inert, "stop on added mass of mass scaling; DT2MS is refused"},
+    {"NOSOL", 0, Use::refuse, "a run without solution (input check only)"},
+};
+constexpr Rule kControlTimestep1[] = {
+    {"DTINIT", 0, Use::honoured, ""}, {"TSSFAC", 0.9, Use::honoured, ""}, {"ISDO", 0, Use::honoured, ""},
+    {"TSLIMT", 0, Use::honoured, ""}, {"DT2MS", 0, Use::honoured, ""},   {"LCTM", 0, Use::honoured, ""},
+    {"ERODE", 0, Use::refuse, "erosion of elements whose step falls below DTMIN"},
+    {"MS1ST", 0, Use::inert, "mass scaling at the first step only; DT2MS is refused"},
+};
+constexpr Rule kControlTimestep2[] = {
+    {"DT2MSF", 0, Use::refuse, "mass scaling to a fraction of the initial step"},
+    {"DT2MSLC", 0, Use::refuse, "curve of the mass-scaled step"},
+    {"IMSCL", 0, Use::refuse, "selective mass scaling"},
+    {"UNUSED", 0, Use::unused, ""},
+    {"UNUSED", 0, Use::unused, ""},
+    {"RMSCL", 0, Use::refuse, "selective mass scaling of rotational inertia"},
+    {"EMSCL", 0, Use::refuse, "added-mass fraction of mass scaling"},
+    {"IHDO", 0, Use::step, "solid element time-step method"},
+};
+constexpr Rule kDefineCurve[] = {
+    {"LCID", 0, Use::honoured, ""}, {"SIDR", 0, Use::honoured, ""}, {"SFA", 1, Use::honoured, ""},
+    {"SFO", 1, Use::honoured, ""},  {"OFFA", 0, Use::honoured, ""}, {"OFFO", 0, Use::honoured, ""},
+    {"DATTYP", 0, Use::honoured, ""},
+    {"LCINT", 0, Use::inert, "points of a curve's discretisation (curves are evaluated exactly here)"},
+};
+
+struct StoredCardRules {
+  const char* card;
+  std::span<const Rule> rules;
+};
+constexpr StoredCardRules kStoredCards[] = {
+    {"card 2", kPart},          {"card 1", kMatElastic},          {"card 1", kMatMooneyRivlin},
+    {"card 1", kMatRigid},      {"card 1", kControlBulkViscosity}, {"card 1", kControlTermination},
+    {"card 1", kControlTimestep1}, {"card 2", kControlTimestep2},  {"card 1", kDefineCurve},
+};
+
 }  // namespace
+
+void check_unread_fields(const Context& ctx, const Line& card, std::string_view keyword, StoredCard which) {
+  if (which == StoredCard::none) return;
+  const StoredCardRules& r = kStoredCards[static_cast<std::size_t>(which)];
+  check_card(ctx, card, keyword, r.card, r.rules);
+}
 
 void check_section_fields(const Context& ctx, const Line& card1, const Line* card2, std::string_view keyword,
                           bool shell) {
@@ -353,9 +446,39 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                                                               : std::span<const Rule>(kType9));
 }
 
-void read_contact_optional_cards(const Context& ctx, Block& b) { check_remaining(ctx, b, kOptional); }
+namespace {
 
-void read_control_contact_cards(const Context& ctx, Block& b, const model::ControlContact& t, int line) {
+/// IGNORE (optional card C of a contact, card 4 of *CONTROL_CONTACT): the `offset`-th card still in
+/// `b`, field `index`; 0, 1 or 2 (anything else: InputError naming file, line and field).
+int read_ignore(const Context& ctx, const Block& b, std::size_t offset, int index, const char* card) {
+  int ignore = 0;
+  if (b.next + offset >= b.cards.size()) return ignore;
+  const Line& l = b.cards[b.next + offset];
+  Card(ctx, l, b.keyword, kStandard).get(index, "IGNORE", ignore);
+  if (ignore < 0 || ignore > 2)
+    throw InputError(ctx.where(l.number) + b.keyword + " " + card + ": field IGNORE must be 0, 1 or 2 (got " +
+                     std::to_string(ignore) + ")");
+  return ignore;
+}
+
+}  // namespace
+
+void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c) {
+  c.ignore = read_ignore(ctx, b, 2, 1, "optional card C");
+  if (c.ignore != 0) {
+    // Penalty sliding interfaces keep the penetrations; Lagrange is refused when the model is
+    // built (interface_spec.cpp); ties and tiebreaks tie their nodes where they are.
+    const Line& l = b.cards[b.next + 2];
+    const bool tie = is_tied(c.type) || is_tiebreak(c.type) || c.type == ContactType::sliding_only;
+    if (tie)
+      act(ctx, l.number, b.keyword, "optional card C",
+          {"IGNORE", 0, Use::inert, "initial penetrations kept; this interface ties or constrains its nodes where they are"},
+          c.ignore);
+  }
+  check_remaining(ctx, b, kOptional);
+}
+
+void read_control_contact_cards(const Context& ctx, Block& b, model::ControlContact& t, int line) {
   const Line card1{"", line, Format::standard};
   const std::string_view kw = b.keyword;
   field(ctx, &card1, kw, "card 1", t.rwpnal, {"RWPNAL", 0, Use::inert, "rigid-wall penalty (no *RIGIDWALL here)"});
@@ -369,13 +492,14 @@ void read_control_contact_cards(const Context& ctx, Block& b, const model::Contr
   field(ctx, &card1, kw, "card 1", t.thkchg, {"THKCHG", 0, Use::refuse, "shell thickness changes in contact"});
   field(ctx, &card1, kw, "card 1", t.orien, {"ORIEN", 1, Use::refuse, "segment orientation option"});
   field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::inert, "mass of eroded nodes (no erosion here)"});
+  t.ignore = read_ignore(ctx, b, 2, 0, "card 4");
   check_remaining(ctx, b, kControl);
 }
 
 }  // namespace slideline::keyword
 
 // The control cards whose fields change the physics (issue 21): *CONTROL_SHELL, *CONTROL_ACCURACY,
-// *CONTROL_SOLID and *CONTROL_BULK_VISCOSITY's fields after Q1 Q2. Same rules as above: a field at
+// and *CONTROL_SOLID (*CONTROL_BULK_VISCOSITY: keyword_controls.cpp). Same rules as above: a field at
 // its manual default passes, one that would change the answer is refused, one that acts only on
 // what this code refuses or lacks warns. docs/keywords.md, "Control and output", is the table.
 namespace slideline::keyword {
@@ -448,22 +572,13 @@ constexpr Rule kSolid2[] = {
 };
 constexpr OptionalCard kSolidCards[] = {{"card 1", kSolid1}, {"card 2", kSolid2}};
 
-constexpr Rule kBulk1[] = {
-    {"Q1", 1.5, Use::honoured, ""},
-    {"Q2", 0.06, Use::honoured, ""},
-    {"TYPE", 1, Use::refuse, "bulk viscosity type (-1, -2: also in shells with their energy)"},
-    {"BTYPE", 0, Use::inert, "bulk viscosity of beams (no beams here)"},
-};
-constexpr OptionalCard kBulkCards[] = {{"card 1", kBulk1}};
-
 }  // namespace
 
 void check_control_fields(const Context& ctx, Block& b) {
   const std::string_view kw = b.keyword;
   const std::span<const OptionalCard> cards = kw == "*CONTROL_SHELL"      ? std::span<const OptionalCard>(kShellCards)
                                               : kw == "*CONTROL_ACCURACY" ? std::span<const OptionalCard>(kAccuracyCards)
-                                              : kw == "*CONTROL_SOLID"    ? std::span<const OptionalCard>(kSolidCards)
-                                                                          : std::span<const OptionalCard>(kBulkCards);
+                                                                          : std::span<const OptionalCard>(kSolidCards);
   check_remaining(ctx, b, cards);
 }
 

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "keyword_card.hpp"
+#include "slideline/core/error.hpp"
 
 namespace slideline::keyword {
 namespace {
@@ -20,12 +21,18 @@ void read_control_hourglass(const Context& ctx, Block& b, Model& m) {
 }
 
 void read_control_bulk_viscosity(const Context& ctx, Block& b, Model& m) {
-  if (!b.done()) {
-    const Card k(ctx, b.cards[b.next], b.keyword, kStandard);
+  single_card(ctx, b, [&](const Card& k, const Line& l) {
     k.get_or_default(0, "Q1", m.bulk_viscosity.q1);
     k.get_or_default(1, "Q2", m.bulk_viscosity.q2);
-  }
-  check_control_fields(ctx, b);  // TYPE, BTYPE (keyword_contact_fields.cpp); a further card is refused
+    // TYPE (default 1): the bulk viscosity here acts on solids and on shells alike, which is
+    // LS-DYNA's -1 and -2 (-2 without its energy); 1 leaves shells out there (docs/keywords.md).
+    int type = 1;
+    k.get_or_default(2, "TYPE", type);
+    if (type != 1 && type != -1 && type != -2)
+      throw NotImplementedError(ctx.where(l.number) + b.keyword + " card 1: field TYPE = " + std::to_string(type) +
+                                " (bulk viscosity type) is not implemented; give 1, -1 or -2");
+    check_unread_fields(ctx, l, b.keyword, StoredCard::control_bulk_viscosity);
+  });
 }
 
 void read_control_fields(const Context& ctx, Block& b, Model&) { check_control_fields(ctx, b); }
@@ -38,13 +45,16 @@ void read_control_termination(const Context& ctx, Block& b, Model& m) {
     k.get(1, "ENDCYC", m.termination.endcyc);
     k.get(2, "DTMIN", m.termination.dtmin);
     k.get(3, "ENDENG", m.termination.endeng);
+    check_unread_fields(ctx, l, b.keyword, StoredCard::control_termination);
   });
 }
 
 void read_control_timestep(const Context& ctx, Block& b, Model& m) {
   auto& t = m.timestep;
   t.src = ctx.source(b.line);
-  single_card(ctx, b, [&](const Card& k, const Line& l) {
+  if (const Line* l1 = b.take()) {
+    const Line& l = *l1;
+    const Card k(ctx, l, b.keyword, kStandard);
     t.src = ctx.source(l.number);
     k.get(0, "DTINIT", t.dtinit);
     k.get_or_default(1, "TSSFAC", t.tssfac);
@@ -63,7 +73,11 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
     ignored(t.isdo != 0, "ISDO", "shell time-step length option");
     ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
-  });
+    check_unread_fields(ctx, l, b.keyword, StoredCard::control_timestep);
+  }
+  // Card 2: mass-scaling options (refused) and the solid time-step method (warned).
+  if (const Line* l2 = b.take()) check_unread_fields(ctx, *l2, b.keyword, StoredCard::control_timestep_card2);
+  warn_extra_cards(ctx, b);
 }
 
 void read_control_contact(const Context& ctx, Block& b, Model& m) {

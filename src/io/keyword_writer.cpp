@@ -201,6 +201,10 @@ void write_contacts(const model::Model& m, std::string& o) {
       o += "$#  OPTION      NFLS      SFLS\n";
       o += CardOut().i(c.option).r(c.nfls != 0.0 ? c.nfls : c.nflf).r(c.sfls != 0.0 ? c.sfls : c.sflf).str();
     }
+    if (c.ignore != 0) {
+      o += "$# optional cards A and B (defaults), C: IGAP IGNORE\n\n\n";
+      o += CardOut().blank().i(c.ignore).str();
+    }
   }
 }
 
@@ -236,6 +240,10 @@ void write_controls(const model::Model& m, std::string& o) {
   o += "*CONTROL_CONTACT\n$#  SLSFAC    RWPNAL    ISLCHK    SHLTHK    PENOPT    THKCHG     ORIEN    ENMASS\n";
   o += CardOut().r(cc.slsfac).r(cc.rwpnal).i(cc.islchk).i(cc.shlthk).i(cc.penopt).i(cc.thkchg).i(cc.orien)
            .i(cc.enmass).str();
+  if (cc.ignore != 0) {
+    o += "$# cards 2 and 3 (defaults), 4: IGNORE\n\n\n";
+    o += CardOut().i(cc.ignore).str();
+  }
 }
 
 /// The output cards.

@@ -75,6 +75,12 @@ struct InterfaceSpec {
   Real master_stiffness = 0.1;  ///< SLSFAC x SFM: Type 3's reverse pass
 
   bool sliding_only = false;    ///< Type 10 _SLIDING_ONLY: no separation once in contact
+  /// VDC / 100: viscous contact damping, fraction of each penalty pair's critical damping
+  /// (Types 3, 5, 10, 12 penalty; the reader refuses VDC elsewhere).
+  Real viscous_damping = 0.0;
+  /// IGNORE 1 or 2 (the card's optional card C, else *CONTROL_CONTACT card 4): penalty interfaces
+  /// keep initial penetrations as their springs' zero instead of moving the nodes out.
+  bool keep_initial_penetrations = false;
   bool mortar_coupling = false; ///< penalty coupling 1 (model::Contact::penalty_coupling)
   TiebreakFailure failure;
   ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)

@@ -35,6 +35,8 @@ inline PenaltyPassOptions penalty_pass_options(const InterfaceSpec& spec, Real s
   o.sliding_only = spec.sliding_only;
   o.automatic = spec.type == model::ContactType::automatic;
   o.coupling = spec.mortar_coupling ? PenaltyCoupling::mortar : PenaltyCoupling::node;
+  o.viscous_damping = spec.viscous_damping;
+  o.keep_initial_penetrations = spec.keep_initial_penetrations;
   return o;
 }
 

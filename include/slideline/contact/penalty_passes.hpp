@@ -47,7 +47,11 @@ class PenaltyPasses {
     }
     moved_ = moved;
     largest_move_ = largest;
-    if (initial_penetration_count() > 0) {
+    if (initial_penetration_count() > 0 && passes_.front()->keeps_initial_penetrations()) {
+      warn(diagnostics_,
+           "contact '%s': %ld initial penetration(s), largest %.6g: kept as the springs' zero (IGNORE)",
+           name_.c_str(), static_cast<long>(initial_penetration_count()), largest_initial_penetration());
+    } else if (initial_penetration_count() > 0) {
       warn(diagnostics_,
                    "contact '%s': %ld initial penetration(s), largest %.6g: %ld node(s) moved out to the "
                    "surface, largest move %.6g",

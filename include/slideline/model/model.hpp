@@ -390,6 +390,7 @@ struct ControlContact {
   int thkchg = 0;
   int orien = 1;
   int enmass = 0;
+  int ignore = 0;     ///< card 4: initial penetrations 0 moved out, 1 and 2 kept as the springs' zero
   bool operator==(const ControlContact&) const = default;
 };
 
@@ -466,6 +467,8 @@ struct Contact {
   Real sst = 0.0, mst = 0.0;    ///< optional thickness (0 = from the elements)
   Real sfst = 1.0, sfmt = 1.0;  ///< thickness scale factors
   Real fsf = 1.0, vsf = 1.0;
+  // Optional card C
+  int ignore = 0;  ///< IGNORE: 0 *CONTROL_CONTACT's; 1, 2 initial penetrations kept as the springs' zero
   // Card 4 (tiebreak)
   Real nflf = 0.0;  ///< normal failure force (type 8) / stress (type 9)
   Real sflf = 0.0;  ///< shear failure force (type 8) / stress (type 9)

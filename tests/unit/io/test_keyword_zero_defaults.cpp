@@ -13,6 +13,7 @@
 #include "slideline/contact/penalty_contact.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/io/keyword_writer.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/simulation.hpp"
 
@@ -38,7 +39,8 @@ std::string deck(const std::string& z) {
        card({"0.1", "Z", "Z", "Z", "Z", "Z", "Z", "Z"}, z);
   d += "*HOURGLASS\n" + card({"1", "Z", "Z", "", "Z", "Z", "Z", "Z"}, z);
   d += "*CONTROL_HOURGLASS\n" + card({"Z", "Z"}, z);
-  d += "*CONTROL_BULK_VISCOSITY\n" + card({"Z", "Z"}, z);
+  d += "*CONTROL_BULK_VISCOSITY\n" + card({"Z", "Z", "Z"}, z);  // TYPE: default 1
+  d += "*CONTROL_TERMINATION\n" + card({"1.0", "", "", "", "Z"}, z);  // ENDMAS: default 1e8
   d += "*CONTROL_TIMESTEP\n" + card({"", "Z"}, z);
   d += "*CONTROL_CONTACT\n" + card(zeros, z);
   for (int k = 2; k <= 6; ++k) d += card(zeros, z);  // cards 2-6 (RWGAPS, RWKSF, XPENE: defaults not 0)
@@ -153,7 +155,10 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
   const std::string c2 = card({}, ""), c3 = card({}, "");
   const std::vector<Refused> cases = {
       {contact_deck(card({"", "", "", "5.0"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field VC = 5"},
-      {contact_deck(card({"", "", "", "", "20"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field VDC = 20"},
+      {contact_deck(card({"", "", "", "", "20"}, ""), c3, "", "TIEBREAK_SURFACE_TO_SURFACE"),
+       "u.k:4: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE card 2: field VDC = 20"},
+      {contact_deck(card({"", "", "", "", "20"}, ""), c3, "", "SURFACE_TO_SURFACE_LAGRANGE"),
+       "u.k:4: *CONTACT_SURFACE_TO_SURFACE_LAGRANGE card 2: field VDC = 20"},
       {contact_deck(card({"", "", "", "", "", "1"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field PENCHK = 1"},
       {contact_deck(card({"-1"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: FS, FD or DC < 0"},
       {contact_deck(c2, card({"", "", "", "", "", "", "0.5"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field FSF = 0.5"},
@@ -161,7 +166,7 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {contact_deck(c2, c3, card({"1"}, "")), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 1"},
       {contact_deck(c2, c3, card({"", "", "", "", "", "", "", "3"}, "")), "optional card A: field FRCFRQ = 3"},
       {contact_deck(c2, c3, card({}, "") + card({"0.5"}, "")), "u.k:7: *CONTACT_SURFACE_TO_SURFACE optional card B: field PENMAX = 0.5"},
-      {contact_deck(c2, c3, card({}, "") + card({}, "") + card({"", "1"}, "")), "u.k:8: *CONTACT_SURFACE_TO_SURFACE optional card C: field IGNORE = 1"},
+      {contact_deck(c2, c3, card({}, "") + card({}, "") + card({"", "", "0.5"}, "")), "u.k:8: *CONTACT_SURFACE_TO_SURFACE optional card C: field DPRFAC = 0.5"},
       {contact_deck(c2, c3, std::string(6, '\n') + card({"1"}, "")), "a card after optional card F"},
       {contact_deck(c2, card({"10", "5"}, ""), "", "NODES_TO_SURFACE"), "u.k:5: *CONTACT_NODES_TO_SURFACE card 3: field SFM = 5"},
       {contact_deck(c2, card({"", "", "0.1"}, ""), "", "TIED_SURFACE_TO_SURFACE"), "card 3: field SST = 0.1"},
@@ -176,13 +181,46 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field THKCHG = 1"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "", "2"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field ORIEN = 2"},
       {"*CONTROL_CONTACT\n" + card({}, "") + card({"", "", "", "", "3.0"}, ""), "u.k:3: *CONTROL_CONTACT card 2: field XPENE = 3"},
-      {"*CONTROL_CONTACT\n" + card({}, "") + card({}, "") + card({}, "") + card({"1"}, ""),
-       "u.k:5: *CONTROL_CONTACT card 4: field IGNORE = 1"},
+      {"*CONTROL_CONTACT\n" + card({}, "") + card({}, "") + card({}, "") + card({}, "") + card({"1"}, ""),
+       "u.k:6: *CONTROL_CONTACT card 5: field ISYM = 1"},
+      // Fields of the other cards that the model does not store (they were read and dropped).
+      {"*PART\n\n" + card({"1", "1", "1", "", "", "", "1"}, ""), "u.k:3: *PART card 2: field ADPOPT = 1"},
+      {"*CONTROL_TERMINATION\n" + card({"1", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_TERMINATION card 1: field NOSOL = 1"},
+      {"*CONTROL_TIMESTEP\n" + card({"", "", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_TIMESTEP card 1: field ERODE = 1"},
+      {"*CONTROL_TIMESTEP\n" + card({}, "") + card({"", "", "1"}, ""), "u.k:3: *CONTROL_TIMESTEP card 2: field IMSCL = 1"},
+      {"*CONTROL_TIMESTEP\n" + card({}, "") + card({"0.5"}, ""), "u.k:3: *CONTROL_TIMESTEP card 2: field DT2MSF = 0.5"},
+      {"*CONTROL_BULK_VISCOSITY\n" + card({"", "", "2"}, ""), "u.k:2: *CONTROL_BULK_VISCOSITY card 1: field TYPE = 2"},
   };
   for (const auto& c : cases) {
     const std::string msg = refusal(c.deck);
     EXPECT_NE(msg.find(c.expected), std::string::npos) << "expected '" << c.expected << "', got '" << msg << "'\n" << c.deck;
   }
+}
+
+TEST(KeywordContactFields, IgnoreIsReadFromOptionalCardCAndControlCard4) {
+  const std::string blank = card({}, "");
+  const std::string card_c = blank + blank + card({"", "2"}, "");
+  const std::string control = "*CONTROL_CONTACT\n" + blank + blank + blank + card({"1"}, "");
+  const auto m = read_keyword_string("*KEYWORD\n" + control + contact_deck(blank, blank, card_c).substr(9), "u.k");
+  EXPECT_EQ(m.contacts[0].ignore, 2);
+  EXPECT_EQ(m.control_contact.ignore, 1);
+  // The writer keeps them (optional card C, *CONTROL_CONTACT card 4).
+  const auto back = read_keyword_string(write_keyword_string(m), "w.k");
+  EXPECT_EQ(back.contacts[0].ignore, 2);
+  EXPECT_EQ(back.control_contact.ignore, 1);
+  // Another value is an input error naming file, line and field.
+  try {
+    read_keyword_string(contact_deck(blank, blank, blank + blank + card({"", "3"}, "")), "u.k");
+    ADD_FAILURE() << "IGNORE = 3 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("u.k:8: *CONTACT_SURFACE_TO_SURFACE optional card C: field IGNORE must be 0, 1 or 2"),
+              std::string::npos) << e.what();
+  }
+  // A tied interface ties its nodes where they are: warned.
+  std::vector<Diagnostic> w;
+  read_keyword_string(contact_deck(blank, blank, card_c, "TIED_SURFACE_TO_SURFACE"), "u.k", &w);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].message.find("field IGNORE = 2"), std::string::npos) << w[0].message;
 }
 
 TEST(KeywordSectionFields, HourglassQbQwEqualToQmAreAccepted) {
@@ -202,9 +240,18 @@ TEST(KeywordContactFields, OutputSpeedAndInertFieldsWarnAndStillRead) {
       {contact_deck(blank, blank, card({"", "", "", "", "", "", "100"}, "")), "field BSORT = 100 (cycles between bucket sorts) only tunes speed"},
       {"*KEYWORD\n*CONTACT_SURFACE_TO_SURFACE\n" + card({"1", "2", "3", "3", "", "", "1"}, ""), "field SPR = 1"},
       {contact_deck(card({"0.3"}, ""), blank, "", "TIED_SURFACE_TO_SURFACE"), "field FS = 0.3 (friction of a tied interface"},
+      {contact_deck(card({"", "", "", "", "20"}, ""), blank, "", "TIED_SURFACE_TO_SURFACE"),
+       "field VDC = 20 (viscous contact damping; this interface is a kinematic constraint"},
       {"*CONTROL_CONTACT\n" + blank + blank + card({"0.2"}, ""), "u.k:4: *CONTROL_CONTACT card 3: field SFRIC = 0.2"},
       {"*CONTROL_CONTACT\n" + card({"", "", "2"}, ""), "field ISLCHK = 2 (report of initial penetrations) only tunes output"},
       {"*SECTION_SHELL\n" + card({"1", "2", "", "", "2"}, ""), "u.k:2: *SECTION_SHELL card 1: field PROPT = 2"},
+      {"*MAT_ELASTIC\n" + card({"1", "1", "1", "0.3", "", "", "5"}, ""), "u.k:2: *MAT_ELASTIC card 1: field K = 5"},
+      {"*MAT_RIGID\n" + card({"1", "1", "1", "0.3", "1", "", "", "name"}, ""), "u.k:2: *MAT_RIGID card 1: field N = 1"},
+      {"*MAT_MOONEY-RIVLIN_RUBBER\n" + card({"1", "1", "0.49", "1", "0", "1"}, ""), "*MAT_MOONEY-RIVLIN_RUBBER card 1: field REF = 1"},
+      {"*PART\n\n" + card({"1", "1", "1", "", "", "", "", "3"}, ""), "u.k:3: *PART card 2: field TMID = 3"},
+      {"*CONTROL_TERMINATION\n" + card({"1", "", "", "", "10"}, ""), "field ENDMAS = 10"},
+      {"*CONTROL_TIMESTEP\n" + card({}, "") + card({"", "", "", "", "", "", "", "1"}, ""), "field IHDO = 1 (solid element time-step method) only chooses the time step"},
+      {"*DEFINE_CURVE\n" + card({"1", "", "", "", "", "", "", "100"}, "") + "0,0\n1,1\n", "u.k:2: *DEFINE_CURVE card 1: field LCINT = 100"},
   };
   for (const auto& c : cases) {
     std::vector<Diagnostic> w;

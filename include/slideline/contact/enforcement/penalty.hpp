@@ -21,6 +21,8 @@
 ///   master, and the gap and forces on mortar-weighted master points.
 ///   A slave beside its segment (default coupling), or deeper behind it than half its diagonal (a
 ///   solid face: also half its element's thickness V / A), has no force from it.
+/// - Damping (VDC > 0): f_n -= c v_n, v_n the relative normal velocity (separating > 0), c a
+///   fraction VDC/100 of the pair's critical damping; f_n >= 0 (no adhesion) unless sliding only.
 /// - Friction: trial = (previous tangential force turned into the current tangent plane)
 ///   - k_t du_t, du_t the tangential slave-minus-master-point displacement over the last step
 ///   (dt_prev v^{n-1/2}), k_t = k; mu = mu_k + (mu_s - mu_k) exp(-beta |du_t| / dt_prev);
@@ -78,6 +80,15 @@ struct PenaltyPassOptions {
   Real elastic_slip_fraction = 1e-3;
   Real stick_stiffness_cap = 4.0;    ///< k_t <= cap x k: the pair's stable step at most halved
   PenaltyCoupling coupling = PenaltyCoupling::node;  ///< stiffness rule and force distribution
+  /// Viscous contact damping (VDC / 100): a dashpot c = fraction x 2 m omega on the relative
+  /// normal velocity of each engaged pair, omega^2 = k (1/m_s + sum N_a^2 / m_a), m = min(m_s,
+  /// master point mass); the normal force stays compressive (docs/contact.md, "Viscous contact
+  /// damping"). 0: no dashpot (no arithmetic of it at all).
+  Real viscous_damping = 0.0;
+  /// IGNORE = 1 or 2 (*CONTACT_... optional card C, or *CONTROL_CONTACT card 4): initial
+  /// penetrations stay where they are as the springs' zero (the allowance g_0, shrinking as the
+  /// node moves out) instead of being moved out before the first step.
+  bool keep_initial_penetrations = false;
 };
 
 /// The per-slave result of one cycle, kept for the serial scatter.
@@ -114,7 +125,9 @@ class PenaltyPass {
   /// (LS-DYNA IGNORE = 0: no element starts strained), then re-reads the gaps at the new
   /// positions; a slave still below (a curved master) keeps its depth as the spring's zero.
   /// Returns the number of nodes moved; `largest` gets the largest move (length). Allocates nothing.
+  /// With keep_initial_penetrations (IGNORE = 1, 2) nothing moves and 0 is returned.
   Index resolve_initial_penetrations(NodalFields& nodes, Real& largest);
+  bool keeps_initial_penetrations() const { return opt_.keep_initial_penetrations; }
   /// Re-reads the initial penetrations at the current positions (after another pass moved nodes).
   void redetect_initial_penetrations(const NodalFields& nodes);
 
@@ -176,6 +189,13 @@ class PenaltyPass {
     Vec3 dx, dv;     ///< slave minus coupled master point: position (length), velocity
     Real inv_mass;   ///< 1/m_s + sum weight^2 / m_a (1 / mass)
   };
+  /// The normal force fn (force, > 0 compressive) with the viscous dashpot of the pair added
+  /// (opt_.viscous_damping > 0), and the factor r (<= 1) by which the dashpot shortens the pair's
+  /// stable step: 2 / omega x (sqrt(1 + zeta^2) - zeta).
+  struct Damped {
+    Real fn, step_factor;
+  };
+  Damped damp_normal_force(Real fn, Real k, const CoupledPoint& cp, const Vec3& n, Real slave_mass) const;
   static CoupledPoint coupled_point(Index node, const Projection& pr, const Index* c, const MortarWeights* mw,
                                     const NodalFields& nodes);
   /// What the stick spring of one slave needs: the oriented normal, the normal force (force), the

@@ -90,6 +90,7 @@ inline void PenaltyPass::redetect_initial_penetrations(const NodalFields& nodes)
 inline Index PenaltyPass::resolve_initial_penetrations(NodalFields& nodes, Real& largest) {
   Index moved = 0;
   largest = 0.0;
+  if (opt_.keep_initial_penetrations) return 0;  // IGNORE = 1, 2: g0_ keeps them as the zero
   const std::span<const ContactPoint> points = pairs_.points();
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!(g0_[i] > 0.0)) continue;
@@ -195,13 +196,35 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
     return;
   }
   touched_[i] = 1;
-  const Real fn = -k * gap;  // > 0 compressive
+  Real fn = -k * gap;  // > 0 compressive
+  Real step_factor = 1.0;
+  if (opt_.viscous_damping > 0.0) {
+    const Damped d = damp_normal_force(fn, k, cp, n, nodes.mass[static_cast<std::size_t>(node)]);
+    fn = d.fn;
+    step_factor = d.step_factor;
+  }
   Vec3 f = fn * n;
   if constexpr (Friction::enabled) add_friction(i, StickInputs{n, fn, k, inv_m, slip_seg_[su], cp.dv}, times, friction, rec, f);
+  if (step_factor < 1.0) rec.dt_inv2 /= step_factor * step_factor;
   rec.segment = s;
   rec.force = f;
   rec.shape = pr.shape;
   rec.mortar = mortar;
+}
+
+inline PenaltyPass::Damped PenaltyPass::damp_normal_force(Real fn, Real k, const CoupledPoint& cp, const Vec3& n,
+                                                          Real slave_mass) const {
+  // LS-DYNA's VDC: c = VDC/100 x 2 m omega, omega^2 = k (1/m_s + 1/m_m), m = min(m_s, m_m); here
+  // m_m is the mass of the coupled master point (1 / sum N_a^2 / m_a).
+  const Real inv_master = cp.inv_mass - 1.0 / slave_mass;
+  const Real m = inv_master > 0.0 ? std::min(slave_mass, 1.0 / inv_master) : slave_mass;
+  const Real omega = std::sqrt(k * cp.inv_mass);
+  const Real c = opt_.viscous_damping * 2.0 * m * omega;
+  const Real damped = fn - c * n.dot(cp.dv);  // n.dot(dv) > 0: separating
+  // The pair's damping ratio c / (2 sqrt(k m_eff)), m_eff = 1 / inv_mass; central differences
+  // with the velocity half a step behind are stable for omega dt <= 2 (sqrt(1 + zeta^2) - zeta).
+  const Real zeta = opt_.viscous_damping * m * cp.inv_mass;
+  return {opt_.sliding_only ? damped : std::max(Real(0), damped), std::sqrt(1.0 + zeta * zeta) - zeta};
 }
 
 /// The friction of slave i on its stick spring (Friction::enabled): adds the tangential force to
