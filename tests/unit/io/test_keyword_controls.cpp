@@ -26,7 +26,8 @@ TEST(KeywordControls, DefaultsAndZerosReadSilently) {
   const std::vector<std::string> decks = {
       "*CONTROL_SHELL\n" + zeros + zeros + zeros + zeros, "*CONTROL_SHELL\n20,0,-1,0,2,2,1,0\n1,0,0,1,0\n",
       "*CONTROL_ACCURACY\n0,1,0,0,0\n", "*CONTROL_ACCURACY\n\n", "*CONTROL_SOLID\n" + zeros + zeros,
-      "*CONTROL_SOLID\n0,0,4,1\n", "*CONTROL_BULK_VISCOSITY\n1.5,0.06,1,0\n", "*CONTROL_SHELL\n"};
+      "*CONTROL_SOLID\n0,0,4,1\n", "*CONTROL_BULK_VISCOSITY\n1.5,0.06,1,0\n", "*CONTROL_BULK_VISCOSITY\n1.5,0.06,-1\n",
+      "*CONTROL_BULK_VISCOSITY\n1.5,0.06,-2\n", "*CONTROL_SHELL\n"};
   for (const std::string& cards : decks) {
     std::vector<Diagnostic> warnings;
     EXPECT_NO_THROW(read_keyword_string("*KEYWORD\n" + cards + "*END\n", "c.k", &warnings)) << cards;
@@ -45,7 +46,7 @@ TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
       {"*CONTROL_ACCURACY\n1\n", "c.k:3: *CONTROL_ACCURACY card 1: field OSU = 1 (objective stress update"},
       {"*CONTROL_ACCURACY\n0,2\n", "c.k:3: *CONTROL_ACCURACY card 1: field INN = 2 (invariant node numbering"},
       {"*CONTROL_SOLID\n0,1\n", "c.k:3: *CONTROL_SOLID card 1: field FMATRX = 1"},
-      {"*CONTROL_BULK_VISCOSITY\n1.5,0.06,-2\n", "c.k:3: *CONTROL_BULK_VISCOSITY card 1: field TYPE = -2"},
+      {"*CONTROL_BULK_VISCOSITY\n1.5,0.06,2\n", "c.k:3: *CONTROL_BULK_VISCOSITY card 1: field TYPE = 2"},
       {"*CONTROL_ACCURACY\n0\n1\n", "c.k:4: *CONTROL_ACCURACY: a card after card 1 is not read"},
   };
   for (const auto& [cards, expected] : cases) {
