@@ -5,7 +5,10 @@
 /// Orientation-free like Type 12: a shell has two sides, found from the geometry, offset by half
 /// its thickness (SST/SFST on the slave side, MST/SFMT on the master side); a solid face meets
 /// only what it faces. One pass, so a node pair is never pushed twice. Its interface forces are
-/// the force on each side: exact equal and opposite totals. docs/contact.md, "Automatic cards".
+/// the force on each side: exact equal and opposite totals. The one-way automatic cards
+/// (*CONTACT_AUTOMATIC_NODES_TO_SURFACE, *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE) are the same
+/// class over the slave side's nodes and the master side's segments. docs/contact.md, "Automatic
+/// cards".
 #include <cstddef>
 #include <cstdint>
 #include <utility>
