@@ -7,6 +7,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/io/keyword_writer.hpp"
 #include "slideline/solver/material_registry.hpp"
 
 using namespace slideline;
@@ -106,4 +107,26 @@ TEST(KeywordPlasticity, NullMaterialFieldsAndRefusals) {
   EXPECT_TRUE(law.problem().empty());
   EXPECT_EQ(thrown("*MAT_009\n4,0.1,,0.5\n"),
             "p.k:2: *MAT_009: field MU is not implemented (it needs an equation of state); leave it blank");
+}
+
+// The writer gives the cards back: read -> write -> read keeps every field.
+TEST(KeywordPlasticity, CardsRoundTrip) {
+  const auto m = read_keyword_string(
+      "*MAT_PLASTIC_KINEMATIC\n5,7.8e-9,2.0e+5,0.3,250.0,2000.0,0.5\n40.4,5.0\n"
+      "*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\nsteel\n7,7.8e-9,2.0e+5,0.3,200.0,1000.0\n2.0,3.0,0,0,1.0\n"
+      "0.0,0.01,0.1\n200.0,220.0,300.0\n"
+      "*MAT_NULL\n4,0.1,,,,,1000.0,0.1\n",
+      "p.k", nullptr);
+  const auto again = read_keyword_string(write_keyword_string(m), "again.k", nullptr);
+  ASSERT_EQ(again.materials.size(), 3u);
+  EXPECT_EQ(std::get<model::MatPlasticKinematic>(again.materials[0]).srp, 5.0);
+  EXPECT_EQ(std::get<model::MatPiecewiseLinearPlasticity>(again.materials[1]).es[2], 300.0);
+  EXPECT_EQ(std::get<model::MatPiecewiseLinearPlasticity>(again.materials[1]).title, "steel");
+  EXPECT_EQ(std::get<model::MatNull>(again.materials[2]).ym, 1000.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    auto a = m.materials[i], b = again.materials[i];
+    std::visit([](auto& x) { x.src = {}; }, a);
+    std::visit([](auto& x) { x.src = {}; }, b);
+    EXPECT_TRUE(a == b) << i;
+  }
 }
