@@ -3,7 +3,6 @@
 // Mutations of the seed decks in tests/data/decks with a fixed seed, so failures reproduce.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -102,7 +101,6 @@ TEST(KeywordFuzz, MutatedDecksOnlyEverThrowSlidelineErrors) {
   const int mutations = 20000;
   int accepted = 0;
   int rejected = 0;
-  const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k < mutations; ++k) {
     std::string deck = seeds[std::size_t(k) % seeds.size()];
     const int rounds = 1 + int(rng() % 3);
@@ -120,12 +118,10 @@ TEST(KeywordFuzz, MutatedDecksOnlyEverThrowSlidelineErrors) {
       return;
     }
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(accepted + rejected, mutations);
   // Both outcomes must occur, else the mutations are too weak or too destructive to test anything.
   EXPECT_GT(accepted, mutations / 20);
   EXPECT_GT(rejected, mutations / 20);
-  EXPECT_LT(seconds, 20.0);
   RecordProperty("accepted", accepted);
   RecordProperty("rejected", rejected);
 }
