@@ -9,6 +9,7 @@
 #include "slideline/element/block_factory.hpp"
 #include "slideline/element/hex_block.hpp"
 #include "slideline/element/shell_block.hpp"
+#include "slideline/material/lane_math.hpp"
 #include "slideline/material/laws.hpp"
 #include "slideline/solver/material_registry.hpp"
 #include "test_support/block_eval.hpp"
@@ -24,13 +25,7 @@ static_assert(!PlaneStressMaterial<MooneyRivlin>);
 
 namespace {
 
-template <class T>
-T zero() {
-  if constexpr (std::is_same_v<T, Real>)
-    return 0.0;
-  else
-    return T::Zero();
-}
+using lane_math::zero;
 
 /// A law that records what the element hands it: the number of calls, the rate of deformation
 /// and dt of the last one (the stress it returns is zero).
