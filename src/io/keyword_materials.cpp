@@ -11,6 +11,15 @@ namespace slideline::keyword {
 
 using model::Model;
 
+namespace {
+
+/// A failure strain that no element reaches: 0 (LS-DYNA: "failure is not considered") or the
+/// manual's default 1e21 and anything from 1e20 up (deck writers print the default), which no
+/// plastic strain reaches before the run stops. Only those are accepted: erosion is not built.
+bool never_fails(Real strain) { return strain == 0.0 || strain >= 1e20; }
+
+}  // namespace
+
 void read_mat_plastic_kinematic(const Context& ctx, Block& b, Model& m, bool titled) {
   read_material<model::MatPlasticKinematic>(ctx, b, m, titled, [&](const Card& c, model::MatPlasticKinematic& mat) {
     c.get(0, "MID", mat.mid);
@@ -30,9 +39,10 @@ void read_mat_plastic_kinematic(const Context& ctx, Block& b, Model& m, bool tit
     c2.get(3, "VP", vp);
     // FS erodes elements at a plastic strain; VP = 1 (viscoplastic) and -1 (deviatoric rate) are
     // other rate formulations. Running without them would be another material: refused.
-    if (fs != 0.0)
-      throw NotImplementedError(ctx.where(l2->number) + b.keyword +
-                                ": field FS (failure strain, element erosion) is not implemented; leave it blank");
+    if (!never_fails(fs))
+      throw NotImplementedError(ctx.where(l2->number) + b.keyword + ": field FS = " + std::string(c2.raw(2)) +
+                                " (failure strain, element erosion) is not implemented; leave it blank, 0 or 1e21"
+                                " (no failure)");
     if (vp != 0.0)
       throw NotImplementedError(ctx.where(l2->number) + b.keyword +
                                 ": field VP = " + std::string(c2.raw(3)) +
@@ -49,14 +59,17 @@ void read_mat_piecewise_linear(const Context& ctx, Block& b, Model& m, bool titl
     c.get(3, "PR", mat.pr);
     c.get(4, "SIGY", mat.sigy);
     c.get(5, "ETAN", mat.etan);
-    // FAIL erodes elements at a plastic strain, TDEL at a time step: no erosion here, refused.
-    for (auto [i, name] : {std::pair{6, "FAIL"}, std::pair{7, "TDEL"}}) {
-      Real v = 0.0;
-      c.get(i, name, v);
-      if (v != 0.0)
-        throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field " + name +
-                                  " (element erosion) is not implemented; leave it blank");
-    }
+    // FAIL erodes elements at a plastic strain (0 and the default 1e21: never), TDEL at a time
+    // step: no erosion here, so any failure that could happen is refused.
+    Real fail = 0.0, tdel = 0.0;
+    c.get(6, "FAIL", fail);
+    c.get(7, "TDEL", tdel);
+    if (!never_fails(fail))
+      throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field FAIL = " + std::string(c.raw(6)) +
+                                " (element erosion) is not implemented; leave it blank, 0 or 1e21 (no failure)");
+    if (tdel != 0.0)
+      throw NotImplementedError(ctx.where(c.line()) + b.keyword +
+                                ": field TDEL (element erosion) is not implemented; leave it blank");
     const Line* l2 = b.take();
     if (!l2) return;
     Card c2 = Card(ctx, *l2, b.keyword, kStandard);

@@ -41,8 +41,9 @@ TEST(KeywordPlasticity, PlasticKinematicFields) {
   EXPECT_DOUBLE_EQ(k.srp, 5.0);
   const std::string card1 = "*MAT_003\n         5    7.8e-9    2.0e+5       0.3     250.0\n";
   EXPECT_EQ(thrown(card1 + ",,0.3\n"),
-            "p.k:3: *MAT_003: field FS (failure strain, element erosion) is not implemented; leave it "
-            "blank");
+            "p.k:3: *MAT_003: field FS = 0.3 (failure strain, element erosion) is not implemented; leave it "
+            "blank, 0 or 1e21 (no failure)");
+  EXPECT_NO_THROW(read_keyword_string(card1 + ",,1.0e+21\n", "p.k", nullptr));
   EXPECT_NE(thrown(card1 + ",,,1.0\n").find("p.k:3: *MAT_003: field VP = 1.0"),
             std::string::npos);
 }
@@ -83,7 +84,21 @@ TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
 
   const std::string card1 = "*MAT_024\n         8    7.8e-9    2.0e+5       0.3     200.0\n";
   EXPECT_EQ(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,0.2\n"),
-            "p.k:2: *MAT_024: field FAIL (element erosion) is not implemented; leave it blank");
+            "p.k:2: *MAT_024: field FAIL = 0.2 (element erosion) is not implemented; leave it blank, 0 or 1e21 "
+            "(no failure)");
+  EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,-1.0\n").find("field FAIL = -1.0"), std::string::npos);
+  EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,,1e-7\n").find("field TDEL"), std::string::npos);
+  // LS-DYNA's default FAIL (1e21, as deck writers print it) and 0 both mean no failure: read as
+  // the blank card.
+  const auto blank = read_keyword_string("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,10.0\n", "p.k", nullptr);
+  for (const char* fail : {"1.00000E21", "0.0", "1e20"}) {
+    const auto d = read_keyword_string(std::string("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,10.0,") + fail + "\n", "p.k",
+                                       nullptr);
+    const auto& a = std::get<model::MatPiecewiseLinearPlasticity>(d.materials.at(0));
+    const auto& z = std::get<model::MatPiecewiseLinearPlasticity>(blank.materials.at(0));
+    EXPECT_EQ(a.sigy, z.sigy) << fail;
+    EXPECT_EQ(a.etan, z.etan) << fail;
+  }
   EXPECT_NE(thrown(card1 + ",,,,-1.0\n").find("p.k:3: *MAT_024: field VP = -1.0"),
             std::string::npos);
   EXPECT_NE(thrown(card1 + "40.0,5.0,,4\n").find("p.k:3:"), std::string::npos);
