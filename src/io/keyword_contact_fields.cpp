@@ -546,9 +546,12 @@ constexpr OptionalCard kShellCards[] = {{"card 1", kShell1}, {"card 2", kShell2}
                                         {"card 4", kShell4}};
 
 constexpr Rule kAccuracy1[] = {
-    {"OSU", 0, Use::refuse, "objective stress update of large rotations"},
+    // OSU = 1 asks for objective (second-order) stress updates under large rotations; every update
+    // here is objective to all orders already (hyperelastic laws from F, J2 on the Green-Naghdi rate
+    // with R from the polar decomposition of F, shells in their co-rotational frame), for every part.
+    {"OSU", 0, Use::honoured, ""},
     {"INN", 1, Use::refuse, "invariant node numbering of shells and solids"},
-    {"PIDOSU", 0, Use::refuse, "part set of the objective stress update"},
+    {"PIDOSU", 0, Use::honoured, ""},
     {"IACC", 0, Use::refuse, "implicit accuracy option (also changes some explicit materials)"},
     {"EXACC", 0, Use::refuse, "explicit accuracy parameter"},
 };
