@@ -35,7 +35,9 @@ void print_counts(const std::string& deck, const slideline::model::Model& m) {
   fmt::print("  sets      {} ({} node, {} segment, {} part)\n",
              m.node_sets.size() + m.segment_sets.size() + m.part_sets.size(), m.node_sets.size(),
              m.segment_sets.size(), m.part_sets.size());
-  fmt::print("  supports  {} SPC, {} prescribed motion\n", m.spcs.size(), m.prescribed_motions.size());
+  const auto coded = std::count_if(m.nodes.begin(), m.nodes.end(), [](const auto& n) { return n.tc != 0 || n.rc != 0; });
+  fmt::print("  supports  {} SPC, {} prescribed motion, {} node(s) with *NODE TC/RC codes\n", m.spcs.size(),
+             m.prescribed_motions.size(), coded);
   fmt::print("  loads     {} body load(s), {} curve(s)\n", m.body_loads.size(), m.curves.size());
   fmt::print("  contacts  {}\n", m.contacts.size());
   for (const auto& c : m.contacts)
