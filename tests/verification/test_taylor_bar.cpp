@@ -112,8 +112,8 @@ void record(const char* tag, const TaylorResult& r) {
 }  // namespace
 
 // The coarse quarter model (4 x 4 cells across, 20 along: 320 hexahedra) against the published
-// band (docs/verification.md, "Taylor bar"): final length 21.26-21.48 mm, mushroom radius
-// 7.02-7.13 mm; the coarse mesh is allowed its measured discretisation distance, stated there.
+// band as issue 21 quotes it (docs/verification.md, "Taylor bar"): final length about 21.4-21.5 mm,
+// mushroom radius about 7.0-7.1 mm, with a margin for a coarse mesh set before the run.
 TEST(TaylorBar, CopperBarAgainstPublishedFigures) {
   const TaylorResult r = run_taylor(4, 20);
   record("coarse_4x20", r);
