@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -126,6 +127,21 @@ class HourglassWarnings {
 /// every cycle.
 constexpr long kClockEvery = 16;
 
+/// Mass scaling (DT2MS): the total added mass and, at the start (`per_part`), each part's.
+void print_added_mass(const slideline::Simulation& sim, const char* prefix, bool per_part = false) {
+  const auto& parts = sim.added_mass();
+  if (parts.empty()) return;
+  double mass = 0.0, added = 0.0;
+  for (const auto& p : parts) {
+    mass += p.mass;
+    added += p.added;
+    if (per_part) fmt::print("{}{}\n", prefix, slideline::describe(p));
+  }
+  fmt::print("{}DT2MS = {:g}: added mass {:.6g} ({:.3g}% of {:.6g}); step TSSFAC x |DT2MS| = {:.6g}\n", prefix,
+             sim.controls().dt2ms, added, mass > 0.0 ? 100.0 * added / mass : 0.0, mass,
+             sim.controls().dt_scale * std::abs(sim.controls().dt2ms));
+}
+
 /// The end of a completed run: the energy warning if one was raised, the cost and the balance.
 void print_run_end(const slideline::Simulation& sim, double wall) {
   if (const auto& w = sim.energy_warning())
@@ -138,6 +154,7 @@ void print_run_end(const slideline::Simulation& sim, double wall) {
              sim.cycle(), sim.time(), wall, element_cycles > 0 ? 1e9 * wall / element_cycles : 0.0,
              wall > 0 ? 100.0 * sim.contact_seconds() / wall : 0.0);
   fmt::print("energy balance error {:+.3e} (relative)\n", sim.energy().relative_balance_error());
+  print_added_mass(sim, "mass scaling: ");
 }
 
 int run_deck(const RunOptions& o) {
@@ -181,6 +198,7 @@ int run_deck(const RunOptions& o) {
   fmt::print("{}: {} nodes, {} elements, {} contact interface(s), end time {:g}, {} thread(s)\n", o.deck,
              model.nodes.size(), sim->element_count(), sim->contacts().size(), sim->controls().end_time,
              slideline::max_threads());
+  print_added_mass(*sim, "mass scaling: ", true);
   std::fflush(stdout);
   Progress progress(sim->controls().end_time);
   PeriodicFlush periodic_flush(sinks, o.flush_every);

@@ -280,6 +280,10 @@ void read_set_node_general(const Context& ctx, Block& block, model::Model& model
 /// for a part or box the deck does not define.
 void resolve_node_sets(const DeckState& deck, model::Model& model);
 
+// keyword_rigidwall.cpp: *RIGIDWALL_PLANAR and *RIGIDWALL_PLANAR_FINITE (`with_id`: the _ID option).
+void read_rigidwall_planar(const Context& ctx, Block& block, model::Model& model, bool with_id);
+void read_rigidwall_planar_finite(const Context& ctx, Block& block, model::Model& model, bool with_id);
+
 // keyword_controls.cpp: *CONTROL_HOURGLASS, _BULK_VISCOSITY, _TERMINATION, _TIMESTEP, _CONTACT.
 void read_control_hourglass(const Context& ctx, Block& block, model::Model& model);
 void read_control_bulk_viscosity(const Context& ctx, Block& block, model::Model& model);

@@ -183,9 +183,9 @@ constexpr Rule kControl4[] = {
 constexpr Rule kControl5[] = {
     {"ISYM", 0, Use::refuse, "symmetry planes of automatic contact"},
     {"NSEROD", 0, Use::inert, "eroding node-to-surface option (no erosion here)"},
-    {"RWGAPS", 1, Use::inert, "rigid-wall gap stiffness (no *RIGIDWALL here)"},
-    {"RWGDTH", 0, Use::inert, "rigid-wall gap death (no *RIGIDWALL here)"},
-    {"RWKSF", 1, Use::inert, "rigid-wall penalty scale (no *RIGIDWALL here)"},
+    {"RWGAPS", 1, Use::inert, "rigid-wall gap stiffness (penalty walls only; refused)"},
+    {"RWGDTH", 0, Use::inert, "rigid-wall gap death (penalty walls only; refused)"},
+    {"RWKSF", 1, Use::inert, "rigid-wall penalty scale (penalty walls only; refused)"},
     {"ICOV", 0, Use::refuse, "invariant node numbering of shell contact"},
     {"SWRADF", 0, Use::inert, "spot weld radius scale (no spot welds here)"},
     {"ITHOFF", 0, Use::inert, "thermal contact offset (no thermal analysis here)"},
@@ -353,14 +353,14 @@ constexpr Rule kControlBulkViscosity[] = {
 constexpr Rule kControlTermination[] = {
     {"ENDTIM", 0, Use::honoured, ""}, {"ENDCYC", 0, Use::honoured, ""}, {"DTMIN", 0, Use::honoured, ""},
     {"ENDENG", 0, Use::honoured, ""},
-    {"ENDMAS", 1e8, Use::inert, "stop on added mass of mass scaling; DT2MS is refused"},
+    {"ENDMAS", 1e8, Use::honoured, ""},
     {"NOSOL", 0, Use::refuse, "a run without solution (input check only)"},
 };
 constexpr Rule kControlTimestep1[] = {
     {"DTINIT", 0, Use::honoured, ""}, {"TSSFAC", 0.9, Use::honoured, ""}, {"ISDO", 0, Use::honoured, ""},
     {"TSLIMT", 0, Use::honoured, ""}, {"DT2MS", 0, Use::honoured, ""},   {"LCTM", 0, Use::honoured, ""},
     {"ERODE", 0, Use::refuse, "erosion of elements whose step falls below DTMIN"},
-    {"MS1ST", 0, Use::inert, "mass scaling at the first step only; DT2MS is refused"},
+    {"MS1ST", 0, Use::honoured, ""},
 };
 constexpr Rule kControlTimestep2[] = {
     {"DT2MSF", 0, Use::refuse, "mass scaling to a fraction of the initial step"},
@@ -481,7 +481,7 @@ void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c
 void read_control_contact_cards(const Context& ctx, Block& b, model::ControlContact& t, int line) {
   const Line card1{"", line, Format::standard};
   const std::string_view kw = b.keyword;
-  field(ctx, &card1, kw, "card 1", t.rwpnal, {"RWPNAL", 0, Use::inert, "rigid-wall penalty (no *RIGIDWALL here)"});
+  field(ctx, &card1, kw, "card 1", t.rwpnal, {"RWPNAL", 0, Use::inert, "penalty rigid walls; refused with a *RIGIDWALL"});
   field(ctx, &card1, kw, "card 1", t.islchk, {"ISLCHK", 1, Use::output, "report of initial penetrations"});
   if (t.shlthk < 0 || t.shlthk > 2)
     throw InputError(ctx.where(line) + b.keyword + " card 1: field SHLTHK must be 0, 1 or 2 (got " +

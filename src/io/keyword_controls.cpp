@@ -45,6 +45,7 @@ void read_control_termination(const Context& ctx, Block& b, Model& m) {
     k.get(1, "ENDCYC", m.termination.endcyc);
     k.get(2, "DTMIN", m.termination.dtmin);
     k.get(3, "ENDENG", m.termination.endeng);
+    k.get_or_default(4, "ENDMAS", m.termination.endmas);
     check_unread_fields(ctx, l, b.keyword, StoredCard::control_termination);
   });
 }
@@ -62,8 +63,9 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     k.get(3, "TSLIMT", t.tslimt);
     k.get(4, "DT2MS", t.dt2ms);
     k.get(5, "LCTM", t.lctm);
+    k.get(7, "MS1ST", t.ms1st);
     // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
-    // step (the stable step is always respected); DT2MS (mass scaling: physics) and LCTM are the
+    // step (the stable step is always respected); DT2MS (mass scaling), MS1ST and LCTM are the
     // builder's business.
     const auto ignored = [&](bool set, const char* field, const char* what) {
       if (set)
@@ -73,6 +75,13 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
     ignored(t.isdo != 0, "ISDO", "shell time-step length option");
     ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
+    if (t.dt2ms != 0.0 && t.ms1st == 0)  // docs/solver.md, "Mass scaling"
+      ctx.warn(l.number, "*CONTROL_TIMESTEP: DT2MS with MS1ST = 0: LS-DYNA re-scales the masses every cycle; "
+                         "slideline scales them once, at the start (MS1ST = 1), and where elements shrink later "
+                         "the step falls below TSSFAC x |DT2MS| instead of more mass being added");
+    if (t.ms1st != 0 && t.ms1st != 1)
+      throw InputError(ctx.where(l.number) + "*CONTROL_TIMESTEP card 1: field MS1ST = " + std::to_string(t.ms1st) +
+                       " must be 0 or 1");
     check_unread_fields(ctx, l, b.keyword, StoredCard::control_timestep);
   }
   // Card 2: mass-scaling options (refused) and the solid time-step method (warned).

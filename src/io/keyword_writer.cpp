@@ -219,7 +219,11 @@ void write_id_list(const Ids& ids, std::string& o) {
 
 /// The control cards (termination, time step, hourglass, bulk viscosity, contact).
 void write_controls(const model::Model& m, std::string& o) {
-  if (m.termination.endeng != 0.0) {
+  if (m.termination.endmas != 1e8) {
+    o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC     DTMIN    ENDENG    ENDMAS\n";
+    o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).r(m.termination.dtmin).r(m.termination.endeng)
+             .r(m.termination.endmas).str();
+  } else if (m.termination.endeng != 0.0) {
     o += "*CONTROL_TERMINATION\n$#  ENDTIM    ENDCYC     DTMIN    ENDENG\n";
     o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).r(m.termination.dtmin).r(m.termination.endeng).str();
   } else if (m.termination.dtmin != 0.0) {
@@ -230,8 +234,13 @@ void write_controls(const model::Model& m, std::string& o) {
     o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).str();
   }
   const auto& ts = m.timestep;
-  o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM\n";
-  o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).str();
+  if (ts.ms1st != 0) {
+    o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM     ERODE     MS1ST\n";
+    o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).i(0).i(ts.ms1st).str();
+  } else {
+    o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM\n";
+    o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).str();
+  }
   o += "*CONTROL_HOURGLASS\n$#     IHQ        QH\n";
   o += CardOut().i(m.control_hourglass.ihq).r(m.control_hourglass.qh).str();
   o += "*CONTROL_BULK_VISCOSITY\n$#      Q1        Q2\n";
@@ -303,6 +312,23 @@ void write_sets(const model::Model& m, std::string& o) {
 }
 
 /// Supports, prescribed motions, loads and initial velocities.
+void write_rigid_walls(const model::Model& m, std::string& o) {
+  for (const auto& w : m.rigid_walls) {
+    const bool with_id = w.id != 0 || !w.title.empty();
+    const std::string kw = w.finite ? "*RIGIDWALL_PLANAR_FINITE" : "*RIGIDWALL_PLANAR";
+    o += with_id ? kw + "_ID\n" + id_heading(w.id, w.title) : kw + "\n";
+    o += "$#    NSID    NSIDEX     BOXID    OFFSET     BIRTH     DEATH     RWKSF\n";
+    o += CardOut().i(w.nsid).i(w.nsidex).i(w.boxid).r(w.offset).r(w.birth).r(w.death).r(w.rwksf).str();
+    o += "$#      XT        YT        ZT        XH        YH        ZH      FRIC      WVEL\n";
+    o += CardOut().r(w.tail.x()).r(w.tail.y()).r(w.tail.z()).r(w.head.x()).r(w.head.y()).r(w.head.z()).r(w.fric)
+             .r(w.wvel).str();
+    if (w.finite) {
+      o += "$#    XHEV      YHEV      ZHEV      LENL      LENM\n";
+      o += CardOut().r(w.edge_head.x()).r(w.edge_head.y()).r(w.edge_head.z()).r(w.lenl).r(w.lenm).str();
+    }
+  }
+}
+
 void write_boundaries_and_loads(const model::Model& m, std::string& o) {
   for (const auto& s : m.spcs) {
     const bool with_id = s.id != 0 || !s.title.empty();
@@ -338,6 +364,7 @@ void write_boundaries_and_loads(const model::Model& m, std::string& o) {
     o += CardOut().i(l.lcid).r(l.sf).i(l.lciddr).r(l.xc).r(l.yc).r(l.zc).i(l.cid).str();
   }
   write_initial_velocities(m, o);
+  write_rigid_walls(m, o);
   if (m.body_load_parts) o += "*LOAD_BODY_PARTS\n$#    PSID\n" + CardOut().i(m.body_load_parts->psid).str();
 }
 

@@ -346,6 +346,14 @@ struct Builder {
     }
   }
 
+  /// *RIGIDWALL_PLANAR: after the supports (a wall leaves their components alone) and the rigid
+  /// parts; appended to the constraints, after the rigid bodies (build_rigid_wall.cpp).
+  void build_rigid_walls() {
+    const RigidWallContext ctx{setup.sets, setup.supports, rigid_node_part, setup.nodes.ids};
+    for (std::size_t k = 0; k < m.rigid_walls.size(); ++k)
+      setup.constraints.push_back(make_rigid_wall(m.rigid_walls[k], k + 1, ctx));
+  }
+
   /// v(0) from the *INITIAL_VELOCITY cards (initial_velocity.cpp): after the sets and supports.
   void build_initial_velocities() {
     apply_initial_velocities({m, node_index, setup.sets, rigid_node_part, setup.supports}, setup.nodes);
@@ -439,6 +447,8 @@ struct Builder {
       c.energy_error_warning = std::min(0.01, 0.2 * c.energy_error_limit);
     }
     c.dt_scale = m.timestep.tssfac > 0.0 ? m.timestep.tssfac : 0.9;
+    c.dt2ms = m.timestep.dt2ms;  // mass scaling at initialize (solver/mass_scaling.hpp)
+    c.added_mass_limit_percent = m.termination.endmas > 0.0 ? m.termination.endmas : 1e8;
     if (m.timestep.lctm != 0) {
       // The curve (positive, validate_model) bounds the step; the stable step is still respected below it.
       c.has_dt_max_curve = true;
@@ -475,6 +485,7 @@ SimulationSetup build_setup(const model::Model& model, const BuildOptions& optio
   b.build_sets();
   b.build_boundaries();
   b.build_initial_velocities();
+  b.build_rigid_walls();
   b.build_loads();
   b.build_nodal_loads();
   b.build_damping();

@@ -3,6 +3,7 @@
 // conversions and the field checks it needs. Moved out of build.cpp unchanged.
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -12,7 +13,10 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/model/model.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/mesh/mesh_sets.hpp"
+#include "slideline/solver/boundary.hpp"
 #include "slideline/solver/load_curve.hpp"
+#include "slideline/solver/nodal_constraint.hpp"
 
 namespace slideline {
 
@@ -63,6 +67,19 @@ std::map<Id, StiffnessDamping> stiffness_damping(const model::Model& m, const Id
 /// The hexahedron hourglass kind of an IHQ (1-3 viscous, 4-5 Flanagan-Belytschko stiffness, 6 assumed
 /// strain, 10 physical stiffness; 0 means the default); nothing for the other types (validate_model refuses them, naming the part).
 std::optional<HexHourglass::Kind> hex_hourglass_kind(int ihq);
+
+/// What the builder knows when it resolves a *RIGIDWALL_PLANAR (build_rigid_wall.cpp).
+struct RigidWallContext {
+  const MeshSets& sets;
+  const std::vector<SupportGroup>& supports;
+  const std::unordered_map<Index, Id>& rigid_node_part;  ///< node -> the rigid part that moves it
+  const std::vector<Id>& node_ids;                       ///< deck id of each node
+};
+
+/// The k-th (1-based) *RIGIDWALL_PLANAR card as a RigidWall (slave nodes, fixed components,
+/// geometry); throws InputError naming the card for what cannot be built.
+std::unique_ptr<NodalConstraint> make_rigid_wall(const model::RigidWallPlanar& card, std::size_t k,
+                                                 const RigidWallContext& ctx);
 
 /// The hexahedron hourglass control of a validated IHQ and its coefficient QM.
 HexHourglass hex_hourglass(int ihq, Real qm);

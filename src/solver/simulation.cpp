@@ -99,6 +99,7 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
     b->set_slot_base(fbase, mbase);
     before = nodes_.mass;
     b->initialize(nodes_);
+    if (controls_.dt2ms != 0.0) scale_block_mass(*b, before);
     block_mass.emplace_back(nodes_.mass);
     for (Index i = 0; i < n; ++i) block_mass.back()[i] -= before[i];
     const auto conn = b->connectivity();
@@ -118,7 +119,27 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
   has_rotations_ = std::any_of(nodes_.has_rotation.begin(), nodes_.has_rotation.end(),
                                [](std::uint8_t r) { return r != 0; });
+  check_added_mass();
   return block_mass;
+}
+
+void Simulation::scale_block_mass(ElementBlock& block, const std::vector<Real>& before) {
+  Real lumped = 0.0;  // the block's physical mass, in node order (thread-count independent)
+  for (std::size_t i = 0; i < before.size(); ++i) lumped += nodes_.mass[i] - before[i];
+  added_mass_.push_back(slideline::scale_block_mass(block, nodes_, lumped, controls_.dt2ms));
+}
+
+void Simulation::check_added_mass() const {
+  Real mass = 0.0, added = 0.0;
+  for (const auto& p : added_mass_) {
+    mass += p.mass;
+    added += p.added;
+  }
+  if (mass > 0.0 && 100.0 * added / mass > controls_.added_mass_limit_percent)
+    throw InputError("simulation: mass scaling (DT2MS of *CONTROL_TIMESTEP) adds " + std::to_string(added) + ", " +
+                     std::to_string(100.0 * added / mass) + "% of the model's mass " + std::to_string(mass) +
+                     ", more than ENDMAS of *CONTROL_TERMINATION allows (" +
+                     std::to_string(controls_.added_mass_limit_percent) + "%)");
 }
 
 void Simulation::check_nodal_moments() const {

@@ -91,10 +91,20 @@ void check_termination_and_step(const model::Model& m, Problems& p) {
   if (term.endeng < 0.0 || !std::isfinite(term.endeng))
     p.bad(describe(term.src) + ": field ENDENG of *CONTROL_TERMINATION must be 0 or a positive percentage (got " +
           std::to_string(term.endeng) + ")");
-  if (m.timestep.dt2ms != 0.0)
-    p.todo(describe(m.timestep.src) +
-           ": field DT2MS of *CONTROL_TIMESTEP (mass scaling) is not implemented; it adds mass, so running "
-           "without it would be a different model (set it to 0)");
+  if (!std::isfinite(m.timestep.dt2ms))
+    p.bad(describe(m.timestep.src) + ": field DT2MS of *CONTROL_TIMESTEP must be finite (got " +
+          std::to_string(m.timestep.dt2ms) + ")");
+  if (m.termination.endmas < 0.0 || !std::isfinite(m.termination.endmas))
+    p.bad(describe(term.src) + ": field ENDMAS of *CONTROL_TERMINATION must be 0 or a positive percentage (got " +
+          std::to_string(m.termination.endmas) + ")");
+}
+
+/// *RIGIDWALL_PLANAR: kinematic walls only (RWPNAL of *CONTROL_CONTACT = 0, its default).
+void check_rigid_walls(const model::Model& m, Problems& p) {
+  if (m.rigid_walls.empty() || m.control_contact.rwpnal == 0.0) return;
+  p.todo(describe(m.rigid_walls.front().src) + ": *RIGIDWALL_PLANAR with RWPNAL = " +
+         std::to_string(m.control_contact.rwpnal) +
+         " of *CONTROL_CONTACT (penalty rigid walls) is not implemented; the walls here are kinematic (RWPNAL = 0)");
 }
 
 void check_contact_titles(const model::Model& m, Problems& p) {
@@ -118,6 +128,7 @@ void check_loads(const model::Model& m, Problems& p) {
   check_curves(m, p);
   check_termination_and_step(m, p);
   check_contact_titles(m, p);
+  check_rigid_walls(m, p);
 }
 
 }  // namespace slideline::validation

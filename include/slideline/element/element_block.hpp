@@ -94,6 +94,24 @@ class ElementBlock : public MeshBlock {
   /// the nodes. Called once, before the first step.
   virtual void initialize(NodalFields& nodes) = 0;
 
+  /// Mass scaling (solver/mass_scaling.hpp): each element's stable step (before any scale factor)
+  /// at the reference geometry at rest, as compute_forces would vote it there, into `out`
+  /// (element_count() entries, time). A block without a step of its own writes +max.
+  virtual void reference_steps(const NodalFields& /*nodes*/, std::span<Real> out) const {
+    std::fill(out.begin(), out.end(), std::numeric_limits<Real>::max());
+  }
+
+  /// Mass scaling: multiplies the mass (and rotary inertia) element e lumps to its nodes by
+  /// factor[e] > 0, adding the difference to `nodes`, and the stable step it votes from now on by
+  /// sqrt(factor[e]). Called once, after initialize(). Returns the mass added (negative where mass
+  /// was removed). A block that cannot scale (no step of its own) accepts only factors of 1.
+  virtual Real scale_element_masses(std::span<const Real> factor, NodalFields& /*nodes*/) {
+    for (Real f : factor)
+      if (f != 1.0) throw NotImplementedError("part " + std::to_string(part_id()) + ": mass scaling of " + kind() +
+                                              " elements is not implemented");
+    return 0.0;
+  }
+
   /// Tells the block where its corner slots start in the shared buffer.
   void set_slot_base(Index force_base, Index moment_base) {
     force_base_ = force_base;

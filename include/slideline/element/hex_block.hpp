@@ -124,6 +124,34 @@ class HexBlock final : public ElementBlock {
     }
   }
 
+  /// ElementBlock::reference_steps: len / (q + sqrt(q^2 + c^2)), len = V / (largest face area) at
+  /// the reference geometry, q the stiffness-damping term only (no bulk viscosity at rest).
+  void reference_steps(const NodalFields& nodes, std::span<Real> out) const override {
+    const Real c = mat_.wave_speed();
+    for (Index e = 0; e < element_count(); ++e) {
+      const hex8::NodeMat X0 = gather(nodes.x0, e);
+      const Real len = hex8::volume(X0, hex8::volume_gradient(X0)) / hex8::max_face_area(X0);
+      const Real q = damping_.beta * c * c / len;
+      out[static_cast<std::size_t>(e)] = len / (q + std::sqrt(q * q + c * c));
+    }
+  }
+
+  /// ElementBlock::scale_element_masses: element e's rho V0 / 8 per corner times factor[e].
+  Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
+    const Index ne = element_count();
+    step_factor_.assign(padded(ne), 1.0);
+    Real added = 0.0;
+    for (Index e = 0; e < ne; ++e) {
+      const Real f = factor[static_cast<std::size_t>(e)];
+      const Real dm = mat_.density() * volume0_[e] / 8.0 * (f - 1.0);
+      for (int k = 0; k < 8; ++k) nodes.mass[conn_[8 * e + k]] += dm;
+      added += 8.0 * dm;
+      step_factor_[e] = std::sqrt(f);
+    }
+    std::fill(step_factor_.begin() + ne, step_factor_.end(), step_factor_[ne - 1]);  // spare lanes
+    return added;
+  }
+
   /// Internal forces of all elements into their corner slots of `corners` (residual form), the
   /// hourglass, bulk-viscosity and stiffness-damping powers into `energy`; returns the smallest
   /// element time step. Throws InstabilityError naming the first element (of the first chunk)
@@ -171,7 +199,7 @@ class HexBlock final : public ElementBlock {
         gather_batch(nodes, e0, bt);
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
-        accumulate<damped>(sums, bt, st, f, e0, valid, kc.c);
+        accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data());
         store_forces(f, e0, valid, out);
       }
       Index lane = 0;
@@ -397,12 +425,14 @@ class HexBlock final : public ElementBlock {
     hex8::hourglass_scatter(gam, Q, hx, hy, hz);
   }
 
-  /// Adds a batch's step, powers and failure to the chunk's sums; the spare lanes of a last
-  /// partial batch (lanes valid..kLanes-1) count for nothing.
+  /// Adds a batch's step (times `step_factor`, per element, when the masses are scaled), powers and
+  /// failure to the chunk's sums; the spare lanes of a last partial batch (lanes valid..kLanes-1)
+  /// count for nothing.
   template <bool damped>
   static void accumulate(ChunkSums& s, const Batch& bt, BatchStress& st, BatchForces& f, Index e0,
-                         int valid, Real c) {
+                         int valid, Real c, const Real* step_factor) {
     Lanes dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
+    if (step_factor) dt *= Lanes::Map(step_factor + e0);  // mass scaling (scale_element_masses)
     const LaneMask failed = !(bt.vol > 0.0) || !f.fsum.isFinite();
     if (valid < kLanes) {
       for (int l = valid; l < kLanes; ++l) {
@@ -478,6 +508,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Id> ids_;
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
+  std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor, padded; empty: no scaling
   std::vector<State> state_;       ///< the law's state, one per batch
   std::vector<Lanes> hg_force_;    ///< IHQ 4/5: generalised hourglass forces, 12 per batch (mode, component)
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;

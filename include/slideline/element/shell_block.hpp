@@ -109,6 +109,39 @@ class BasicShellBlock final : public ElementBlock {
     }
   }
 
+  /// ElementBlock::reference_steps: len / (q + sqrt(q^2 + c^2)) at the reference geometry, q the
+  /// stiffness-damping term only (no bulk viscosity at rest).
+  void reference_steps(const NodalFields& nodes, std::span<Real> out) const override {
+    const Real c = mat_.wave_speed();
+    for (Index e = 0; e < element_count(); ++e) {
+      const shell_bt::NodeMat X0 = gather(nodes.x0, e);
+      const Real len = shell_bt::characteristic_length(X0, area0_[e]);
+      const Real q = damping_.beta * c * c / len;
+      out[static_cast<std::size_t>(e)] = len / (q + std::sqrt(q * q + c * c));
+    }
+  }
+
+  /// ElementBlock::scale_element_masses: element e's mass rho A0 t / 4 and rotary inertia per
+  /// corner times factor[e].
+  Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
+    const Index ne = element_count();
+    const Real t = sec_.thickness;
+    step_factor_.assign(ne, 1.0);
+    Real added = 0.0;
+    for (Index e = 0; e < ne; ++e) {
+      const Real f = factor[static_cast<std::size_t>(e)];
+      const Real m = mat_.density() * area0_[e] * t / 4.0;
+      const Real dm = m * (f - 1.0), dj = m * std::max(t * t, area0_[e]) / 12.0 * (f - 1.0);
+      for (int k = 0; k < 4; ++k) {
+        nodes.mass[conn_[4 * e + k]] += dm;
+        nodes.rot_inertia[conn_[4 * e + k]] += dj;
+      }
+      added += 4.0 * dm;
+      step_factor_[e] = std::sqrt(f);
+    }
+    return added;
+  }
+
   /// Forces and moments at x^n with velocities and angular velocities at t^{n-1/2}: the stress
   /// increment uses the strain rate on the mid-step geometry x^n - dt/2 v (exactly zero for a
   /// rigid rotation), the forces the geometry at x^n. Returns the smallest element step
@@ -180,7 +213,8 @@ class BasicShellBlock final : public ElementBlock {
         if (qhg_ > 0.0) p_hg += add_hourglass(e, gm, Xm, V, W, f, m);
         if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
         p_all -= f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum();
-        const Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
+        Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
+        if (!step_factor_.empty()) dt_e *= step_factor_[e];  // mass scaling (scale_element_masses)
         if (dt_e < dtmin) {
           dtmin = dt_e;
           dtarg = e;
@@ -364,6 +398,7 @@ class BasicShellBlock final : public ElementBlock {
   shell_bt::ThicknessRule rule_;
   std::vector<Index> conn_;
   std::vector<Id> ids_;
+  std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
   std::vector<Real> area0_;
   std::vector<State> state_;  ///< the law's state, element-major, then point
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;

@@ -364,6 +364,10 @@ struct ControlTermination {
   /// the largest energy in play. LS-DYNA's field is a change of the energy ratio in percent; blank
   /// or 0 keeps slideline's default of 5%.
   Real endeng = 0.0;
+  /// ENDMAS: the run is refused when mass scaling (DT2MS) adds more than ENDMAS percent of the
+  /// model's mass (LS-DYNA terminates then; here the mass is set once, at the start). 0 or blank:
+  /// LS-DYNA's default 1e8, no limit.
+  Real endmas = 1e8;
   Source src;
   bool operator==(const ControlTermination&) const = default;
 };
@@ -374,8 +378,14 @@ struct ControlTimestep {
   Real tssfac = 0.9;  ///< time-step scale factor
   int isdo = 0;
   Real tslimt = 0.0;
+  /// Mass scaling (docs/solver.md, "Mass scaling"): < 0 the elements whose stable step is below
+  /// |DT2MS| get the mass that makes it |DT2MS|; > 0 every deformable element's mass is scaled so
+  /// that its step is DT2MS (mass added or removed). The run's step is then TSSFAC x |DT2MS|.
   Real dt2ms = 0.0;
   Id lctm = 0;
+  /// MS1ST: 1 mass scaling at the first step only (what slideline does); 0, LS-DYNA's default,
+  /// re-scales every cycle, which slideline does not (the reader warns; docs/solver.md).
+  int ms1st = 0;
   Source src;
   bool operator==(const ControlTimestep&) const = default;
 };
@@ -487,6 +497,31 @@ struct Contact {
   bool operator==(const Contact&) const = default;
 };
 
+/// *RIGIDWALL_PLANAR[_FINITE][_ID]: a stationary plane through the tail point that the slave nodes
+/// may not pass, enforced kinematically (docs/solver.md, "Rigid walls"). The normal points from
+/// the tail to the head, towards the side the nodes stay on.
+struct RigidWallPlanar {
+  Id id = 0;            ///< RWID of the _ID option (0 if absent)
+  std::string title;    ///< HEADING of the _ID option
+  Id nsid = 0;          ///< slave node set (0: every node)
+  Id nsidex = 0;        ///< node set excluded from the slaves (0: none)
+  Id boxid = 0;         ///< only slaves in this box (0: no box)
+  Real offset = 0.0;    ///< slaves within this normal distance (0: the set's nodes)
+  Real birth = 0.0;     ///< the wall acts from BIRTH
+  Real death = 1e20;    ///< to DEATH (0 or blank: never dies)
+  Real rwksf = 1.0;     ///< penalty scale (penalty walls only, RWPNAL > 0)
+  Vec3 tail = Vec3::Zero();  ///< XT YT ZT
+  Vec3 head = Vec3::Zero();  ///< XH YH ZH
+  Real fric = 0.0;      ///< 0 frictionless, 1 no sliding, between: Coulomb coefficient
+  Real wvel = 0.0;      ///< critical normal velocity for welding (0: none)
+  bool finite = false;  ///< _FINITE: the wall is the rectangle below
+  Vec3 edge_head = Vec3::Zero();  ///< XHEV YHEV ZHEV: head of the l edge, from the tail
+  Real lenl = 0.0;      ///< length of the l edge
+  Real lenm = 0.0;      ///< length of the m edge (m = n x l)
+  Source src;
+  bool operator==(const RigidWallPlanar&) const = default;
+};
+
 /// A card the reader saw and did not use because this version does not support it, kept so that
 /// messages can name the real cause ("part 1 uses *MAT_PIECEWISE_LINEAR_PLASTICITY (deck.k:72),
 /// not supported") and a run can list what it dropped.
@@ -532,6 +567,7 @@ struct Model {
   std::vector<InitialVelocity> initial_velocities;
   std::vector<InitialVelocityGeneration> initial_velocity_generations;
   std::vector<InitialVelocityNode> initial_velocity_nodes;
+  std::vector<RigidWallPlanar> rigid_walls;
   /// Physics cards the reader dropped (only with ReadOptions::ignore_unsupported; otherwise the
   /// reader refuses the deck).
   std::vector<UnsupportedCard> unsupported;

@@ -25,6 +25,7 @@
 #include "slideline/solver/central_difference.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/solver/exchange.hpp"
+#include "slideline/solver/mass_scaling.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
 #include "slideline/solver/node_roles.hpp"
 #include "slideline/solver/output_recorder.hpp"
@@ -105,6 +106,9 @@ class Simulation {
   /// Parts whose hourglass energy passed 10% of their internal energy, in the order it happened
   /// (one entry per part at most; part_energy_monitor.hpp).
   const std::vector<HourglassWarning>& hourglass_warnings() const { return part_energy_.hourglass_warnings(); }
+  /// What mass scaling (controls().dt2ms) did, one entry per element block (part), after
+  /// initialize(); empty without mass scaling.
+  const std::vector<PartAddedMass>& added_mass() const { return added_mass_; }
   /// Internal and hourglass energy per part.
   const PartEnergyMonitor& part_energies() const { return part_energy_; }
   /// |balance error| over the largest energy in play so far (the quantity the limits apply to).
@@ -120,6 +124,10 @@ class Simulation {
   /// Masses lumped by the blocks and the corner gather lists; returns the mass each block lumps
   /// to each node (for the body loads).
   std::vector<std::vector<Real>> lump_masses();
+  /// Mass scaling of one block just lumped (`before`: the nodal masses before it), into added_mass_.
+  void scale_block_mass(ElementBlock& block, const std::vector<Real>& before);
+  /// Refuses a model whose mass scaling added more than controls_.added_mass_limit_percent.
+  void check_added_mass() const;
   void check_nodal_moments() const;
   void resolve_body_loads(const std::vector<std::vector<Real>>& block_mass);
   void initialize_contacts();
@@ -178,6 +186,7 @@ class Simulation {
   std::vector<BlockEnergy> block_energy_;  // this cycle's element powers per block (exchange point 3)
   CornerBuffer corners_;
   std::vector<Real> alpha_;              // per-node mass-damping coefficient
+  std::vector<PartAddedMass> added_mass_;  // mass scaling per block (initialize)
   std::vector<Vec3> dictated_v_old_;     // the tied slaves' v^{n-1/2} (and omega) during a cycle
   std::vector<Vec3> dictated_w_old_;
   // Effective mass and total loads of the constraint phase (see ConstraintLoads). Without

@@ -25,6 +25,13 @@ struct SimulationControls {
   /// Stop when the step falls below this fraction of the first step (LS-DYNA's DTMIN of
   /// *CONTROL_TERMINATION; 0 = never), naming the part whose elements control the step.
   Real dt_min_fraction = 1e-4;
+  /// Mass scaling (LS-DYNA's DT2MS of *CONTROL_TIMESTEP; 0 = none), applied once at initialize()
+  /// (solver/mass_scaling.hpp): < 0 elements whose stable step is below |dt2ms| get mass to make
+  /// it |dt2ms|; > 0 every deformable element's mass is scaled to make its step dt2ms.
+  Real dt2ms = 0.0;
+  /// initialize() refuses a model whose mass scaling adds more than this percentage of its mass
+  /// (LS-DYNA's ENDMAS of *CONTROL_TERMINATION; its default 1e8 is no limit).
+  Real added_mass_limit_percent = 1e8;
 };
 
 /// The first cycle at which the energy balance is checked against the limits above.

@@ -65,5 +65,29 @@ TEST(KeywordControls, TuningFieldsWarnNamingTheField) {
   EXPECT_NE(to_string(warnings[1]).find("c.k:5: *CONTROL_SOLID card 1: field ESORT = 1"), std::string::npos);
 }
 
+// Mass scaling: DT2MS, MS1ST and ENDMAS are read; DT2MS with MS1ST = 0 (LS-DYNA re-scales every
+// cycle) warns that slideline scales once; MS1ST outside 0, 1 is refused naming line and field.
+TEST(KeywordControls, MassScalingFieldsAreReadAndMs1stZeroWarns) {
+  std::vector<Diagnostic> warnings;
+  auto m = read_keyword_string("*KEYWORD\n*CONTROL_TIMESTEP\n0,0.8,0,0,-1e-4,0,0,1\n*CONTROL_TERMINATION\n1,0,0,0,5\n*END\n",
+                               "c.k", &warnings);
+  EXPECT_EQ(m.timestep.dt2ms, -1e-4);
+  EXPECT_EQ(m.timestep.ms1st, 1);
+  EXPECT_EQ(m.termination.endmas, 5.0);
+  EXPECT_TRUE(warnings.empty()) << (warnings.empty() ? "" : to_string(warnings[0]));
+  m = read_keyword_string("*KEYWORD\n*CONTROL_TIMESTEP\n0,0.8,0,0,-1e-4\n*END\n", "c.k", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(to_string(warnings[0]).find("c.k:3"), std::string::npos) << to_string(warnings[0]);
+  EXPECT_NE(to_string(warnings[0]).find("MS1ST = 0"), std::string::npos) << to_string(warnings[0]);
+  EXPECT_EQ(m.termination.endmas, 1e8);
+  try {
+    read_keyword_string("*KEYWORD\n*CONTROL_TIMESTEP\n0,0.8,0,0,-1e-4,0,0,2\n*END\n", "c.k");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("c.k:3: *CONTROL_TIMESTEP card 1: field MS1ST = 2"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace slideline

@@ -249,7 +249,6 @@ TEST(KeywordContactFields, OutputSpeedAndInertFieldsWarnAndStillRead) {
       {"*MAT_RIGID\n" + card({"1", "1", "1", "0.3", "1", "", "", "name"}, ""), "u.k:2: *MAT_RIGID card 1: field N = 1"},
       {"*MAT_MOONEY-RIVLIN_RUBBER\n" + card({"1", "1", "0.49", "1", "0", "1"}, ""), "*MAT_MOONEY-RIVLIN_RUBBER card 1: field REF = 1"},
       {"*PART\n\n" + card({"1", "1", "1", "", "", "", "", "3"}, ""), "u.k:3: *PART card 2: field TMID = 3"},
-      {"*CONTROL_TERMINATION\n" + card({"1", "", "", "", "10"}, ""), "field ENDMAS = 10"},
       {"*CONTROL_TIMESTEP\n" + card({}, "") + card({"", "", "", "", "", "", "", "1"}, ""), "field IHDO = 1 (solid element time-step method) only chooses the time step"},
       {"*DEFINE_CURVE\n" + card({"1", "", "", "", "", "", "", "100"}, "") + "0,0\n1,1\n", "u.k:2: *DEFINE_CURVE card 1: field LCINT = 100"},
   };

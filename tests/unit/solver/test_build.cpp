@@ -292,17 +292,38 @@ TEST(Build, TimeStepLimitCurveBoundsTheStep) {
   }
 }
 
-// DT2MS (mass scaling) adds mass: a run without it would be another model, so it is refused.
-TEST(Build, MassScalingIsRefusedNotDropped) {
+// DT2MS < 0 on the shell plate: its nine elements (step len / c_plate, len = A / diagonal) all lie
+// below |DT2MS| and get (|DT2MS| / dt_e)^2 times their mass; the step is then |DT2MS| (x TSSFAC).
+TEST(Build, ShellMassScalingReachesTheRequestedStep) {
   model::Model m = plate_model(false);
-  m.timestep.dt2ms = -1e-4;
-  m.timestep.src = {"deck.k", 6};
+  m.timestep.dt2ms = -5e-3;
+  m.timestep.ms1st = 1;
+  auto sim = build_simulation(m);
+  sim->initialize();
+  const Real c = std::sqrt(1000.0 / (0.1 * (1.0 - 0.1 * 0.1)));
+  const Real dt_e = (1.0 / 9.0) / (std::sqrt(2.0) / 3.0) / c;
+  const Real f = (5e-3 / dt_e) * (5e-3 / dt_e);
+  ASSERT_EQ(sim->added_mass().size(), 1u);
+  const auto& p = sim->added_mass()[0];
+  EXPECT_EQ(p.scaled, 9);
+  EXPECT_NEAR(p.mass, 0.01, 1e-15);
+  EXPECT_NEAR(p.added, 0.01 * (f - 1.0), 1e-12);
+  EXPECT_NEAR(sim->stable_dt(), 5e-3, 1e-15);
+  Real mass = 0.0;
+  for (Real mm : sim->nodes().mass) mass += mm;
+  EXPECT_NEAR(mass, 0.01 * f, 1e-12);
+}
+
+// ENDMAS (percent of the model's mass) bounds what mass scaling may add: more is refused, naming it.
+TEST(Build, AddedMassAboveEndmasIsRefused) {
+  model::Model m = plate_model(false);
+  m.timestep.dt2ms = -5e-3;
+  m.termination.endmas = 10.0;
   try {
-    build_simulation(m);
-    FAIL() << "expected NotImplementedError";
-  } catch (const NotImplementedError& e) {
-    EXPECT_NE(std::string(e.what()).find("deck.k:6"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("DT2MS"), std::string::npos) << e.what();
+    build_simulation(m)->initialize();
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ENDMAS"), std::string::npos) << e.what();
   }
 }
 
