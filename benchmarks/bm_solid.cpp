@@ -4,9 +4,11 @@
 #include <benchmark/benchmark.h>
 
 #include "slideline/core/parallel.hpp"
+#include "slideline/element/block_factory.hpp"
 #include "slideline/element/hex_block.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
 #include "slideline/solver/simulation.hpp"
+#include "test_support/kuhn_tets.hpp"
 
 using namespace slideline;
 
@@ -122,6 +124,55 @@ void BM_FullStep(benchmark::State& state) {
   set_threads(max_threads());
 }
 
+/// The element kernel of each solid form on the n^3 cube of the spec's rubber, at rest after a
+/// small homogeneous stretch (argument: 1 the one-point hexahedron with the type 10 hourglass,
+/// 2 the fully integrated hexahedron, 10 the tetrahedron, six per cube cell). The counter is per
+/// element: a tetrahedron mesh has six times the elements of the hexahedron mesh on the same nodes.
+void BM_SolidForms(benchmark::State& state) {
+  set_threads(1);
+  const int n = static_cast<int>(state.range(0)), form = static_cast<int>(state.range(1)), m = n + 1;
+  NodalFields nodes;
+  nodes.resize(static_cast<std::size_t>(m) * m * m);
+  auto idx = [m](int i, int j, int k) { return static_cast<Index>(i + m * (j + m * k)); };
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const Vec3 x(Real(i) / n, Real(j) / n, Real(k) / n);
+        nodes.ids[idx(i, j, k)] = idx(i, j, k) + 1;
+        nodes.x0.set(idx(i, j, k), x);
+        nodes.x.set(idx(i, j, k), Vec3(1.01 * x[0], x[1], x[2]));
+      }
+  std::vector<Index> conn;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const auto corner = [&](int c) { return idx(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2)); };
+        if (form == 10)
+          for (const auto& t : test_support::kuhn_tets())
+            for (int c : t) conn.push_back(corner(c));
+        else
+          for (int c : {0, 1, 3, 2, 4, 5, 7, 6}) conn.push_back(corner(c));
+      }
+  std::vector<Id> ids(conn.size() / (form == 10 ? 4 : 8));
+  for (std::size_t e = 0; e < ids.size(); ++e) ids[e] = static_cast<Id>(e + 1);
+  const SolidLaw law = MooneyRivlin(0.01, 909.091, 0.0, 0.1);
+  std::unique_ptr<ElementBlock> block =
+      form == 10  ? make_tet_block(1, law, BulkViscosity{}, std::move(conn), std::move(ids))
+      : form == 2 ? make_full_hex_block(1, law, BulkViscosity{}, std::move(conn), std::move(ids))
+                  : make_hex_block(1, law, HexHourglass{HexHourglass::Kind::physical_stiffness, 1.0},
+                                   BulkViscosity{}, std::move(conn), std::move(ids));
+  block->initialize(nodes);
+  CornerBuffer cb;
+  cb.force.resize(block->connectivity().size());
+  BlockEnergy e;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(block->compute_forces(nodes, 1e-5, cb, e));
+    benchmark::ClobberMemory();
+  }
+  set_counters(state, block->element_count());
+  set_threads(max_threads());
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   for (int n : {10, 22, 46, 100})
     for (int t : {1, 2}) b->Args({n, t, 0});
@@ -144,3 +195,8 @@ BENCHMARK(BM_HexHourglassForms)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_FullStep)->Apply(sizes);
+BENCHMARK(BM_SolidForms)
+    ->ArgsProduct({{22}, {1, 2, 10}})
+    ->ArgNames({"n", "elform"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

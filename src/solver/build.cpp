@@ -150,7 +150,10 @@ struct Builder {
     for (const auto& e : m.solids) {
       const model::Source src{"*ELEMENT_SOLID " + std::to_string(e.id), 0};
       auto& g = group(e.pid);
-      for (Id nid : e.n) g.hex_conn.push_back(node(nid, src, "a node field"));
+      // A tetrahedron may leave N5-N8 blank: they stand for N4 (LS-DYNA's degenerate form).
+      const bool tail_blank = e.n[4] == 0 && e.n[5] == 0 && e.n[6] == 0 && e.n[7] == 0;
+      for (std::size_t k = 0; k < 8; ++k)
+        g.hex_conn.push_back(node(tail_blank && k >= 4 ? e.n[3] : e.n[k], src, "a node field"));
       g.hex_ids.push_back(e.id);
     }
     for (const auto& e : m.shells) {
@@ -161,11 +164,27 @@ struct Builder {
     }
   }
 
-  /// A deformable part of hexahedra: its section, hourglass type and law, into one HexBlock.
+  /// A deformable part of solids: its section, hourglass type and law, into one block: HexBlock
+  /// (ELFORM 1, the default), FullHexBlock (ELFORM 2) or TetBlock (ELFORM 10: validate_model
+  /// checked that every element of the part is a tetrahedron N1 N2 N3 N4 N4 N4 N4 N4, and that no
+  /// other form reaches here).
   void build_solid_part(const model::Part& part, const MaterialLaws& laws, PartElements& g,
-                        [[maybe_unused]] const model::SectionSolid& sec, int ihq, Real qm, BulkViscosity bv,
+                        const model::SectionSolid& sec, int ihq, Real qm, BulkViscosity bv,
                         StiffnessDamping damping) {
     const Id pid = part.pid;
+    if (sec.elform == 10) {
+      std::vector<Index> tets;
+      tets.reserve(g.hex_conn.size() / 2);
+      for (std::size_t e = 0; e < g.hex_ids.size(); ++e)
+        tets.insert(tets.end(), g.hex_conn.begin() + 8 * e, g.hex_conn.begin() + 8 * e + 4);
+      setup.blocks.push_back(make_tet_block(pid, *laws.solid, bv, std::move(tets), std::move(g.hex_ids), damping));
+      return;
+    }
+    if (sec.elform == 2) {
+      setup.blocks.push_back(
+          make_full_hex_block(pid, *laws.solid, bv, std::move(g.hex_conn), std::move(g.hex_ids), damping));
+      return;
+    }
     const HexHourglass hg = hex_hourglass(ihq, qm);
     setup.blocks.push_back(make_hex_block(pid, *laws.solid, hg, bv, std::move(g.hex_conn),
                                          std::move(g.hex_ids), damping));

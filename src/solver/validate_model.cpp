@@ -25,6 +25,10 @@ using validation::Problems;
 // energies): no consistent unit system needs them.
 constexpr Real kMaxConstant = 1e30;
 
+/// degenerate_kind of a tetrahedron (compared by address).
+constexpr const char* kTetrahedra =
+    "4-node tetrahedra (written as degenerate *ELEMENT_SOLID, N4 = N5 = ... = N8 or N5..N8 blank)";
+
 void positive(Problems& p, const model::Source& src, const char* card, const char* field, Real v) {
   if (!(v > 0.0) || !std::isfinite(v))
     p.bad(src, std::string("field ") + field + " of " + card + " must be positive (got " + num(v) + ")");
@@ -195,8 +199,7 @@ const char* degenerate_kind(const std::array<Id, 8>& n) {
   if (distinct.size() == 8) return nullptr;
   const bool tail_blank = n[4] == 0 && n[5] == 0 && n[6] == 0 && n[7] == 0;
   const bool tail_n4 = n[4] == n[3] && n[5] == n[3] && n[6] == n[3] && n[7] == n[3];
-  if ((tail_blank || tail_n4) && std::set<Id>(n.begin(), n.begin() + 4).size() == 4)
-    return "4-node tetrahedra (written as degenerate *ELEMENT_SOLID, N4 = N5 = ... = N8 or N5..N8 blank)";
+  if ((tail_blank || tail_n4) && std::set<Id>(n.begin(), n.begin() + 4).size() == 4) return kTetrahedra;
   if (n[4] == n[5] && n[6] == n[7] && distinct.size() == 6)
     return "6-node pentahedra (degenerate *ELEMENT_SOLID, N5 = N6 and N7 = N8)";
   if (n[4] == n[5] && n[5] == n[6] && n[6] == n[7] && distinct.size() == 5)
@@ -204,42 +207,67 @@ const char* degenerate_kind(const std::array<Id, 8>& n) {
   return nullptr;
 }
 
+/// The ELFORM of each part's *SECTION_SOLID (parts without one are left out: check_references
+/// reports them).
+std::unordered_map<Id, int> solid_forms(const model::Model& m) {
+  std::unordered_map<Id, int> form_of_section, form;
+  for (const auto& s : m.solid_sections) form_of_section.emplace(s.secid, s.elform);
+  for (const auto& part : m.parts)
+    if (const auto f = form_of_section.find(part.secid); f != form_of_section.end()) form.emplace(part.pid, f->second);
+  return form;
+}
+
+/// The shape of one *ELEMENT_SOLID against its part's ELFORM: a tetrahedron (N1 N2 N3 N4 N4 N4 N4
+/// N4, or N5-N8 blank) in an ELFORM 10 part, eight distinct nodes in any other; then its volume.
+void check_solid(const model::Model& m, const model::SolidElement& e, int elform,
+                 const std::unordered_map<Id, std::size_t>& node_of, IssueGroups& bad, IssueGroups& unimplemented) {
+  const auto src = model::element_source(m, e);
+  const std::string id = std::to_string(e.id);
+  const char* kind = degenerate_kind(e.n);
+  const bool tet_form = elform == 10;
+  if (tet_form != (kind == kTetrahedra)) {
+    if (tet_form)
+      bad.add("*ELEMENT_SOLID: elements of an ELFORM 10 (tetrahedron) part that are not tetrahedra "
+              "(N1 N2 N3 N4 N4 N4 N4 N4)",
+              "*ELEMENT_SOLID " + id + " is in a part of *SECTION_SOLID ELFORM 10 but is not a tetrahedron "
+              "(N1 N2 N3 N4 N4 N4 N4 N4)", id, src);
+    else if (kind)
+      unimplemented.add(std::string("*ELEMENT_SOLID: ") + kind + " are not supported in a part of ELFORM " +
+                            std::to_string(elform) + (kind == kTetrahedra ? " (use ELFORM 10)" : " (only 8-node hexahedra)"),
+                        "*ELEMENT_SOLID " + id + " is one of the " + kind + ", which are not supported in a part of "
+                        "ELFORM " + std::to_string(elform), id, src);
+    else if (std::set<Id>(e.n.begin(), e.n.end()).size() != 8)
+      bad.add("*ELEMENT_SOLID: degenerate hexahedra (repeated nodes in a form slideline does not know)",
+              "*ELEMENT_SOLID " + id + " repeats a node", id, src);
+    return;
+  }
+  const int nn = tet_form ? 4 : 8;
+  hex8::NodeMat X;
+  for (int k = 0; k < nn; ++k) {
+    const auto f = node_of.find(e.n[static_cast<std::size_t>(k)]);
+    if (f == node_of.end()) return;  // check_references reports it
+    X.row(k) = m.nodes[f->second].x.transpose();
+  }
+  const Real v = tet_form ? (X.row(1) - X.row(0)).dot((X.row(2) - X.row(0)).cross(X.row(3) - X.row(0))) / 6.0
+                          : hex8::volume(X, hex8::volume_gradient(X));
+  if (!(v > 0.0))
+    bad.add(std::string("*ELEMENT_SOLID: non-positive volume (inverted ") +
+                (tet_form ? "tetrahedra: list N1-N3 counter-clockwise seen from N4)"
+                          : "hexahedra: list N1-N4 counter-clockwise seen from the face N5-N8)"),
+            "*ELEMENT_SOLID " + id + " has non-positive volume " + num(v) +
+                (tet_form ? " (inverted: list N1-N3 counter-clockwise seen from N4)"
+                          : " (inverted: list N1-N4 counter-clockwise seen from the face N5-N8)"),
+            id, src);
+}
+
 void check_elements(const model::Model& m, Problems& p) {
   std::unordered_map<Id, std::size_t> node_of;
   for (std::size_t i = 0; i < m.nodes.size(); ++i) node_of.emplace(m.nodes[i].id, i);
+  const std::unordered_map<Id, int> forms = solid_forms(m);
   IssueGroups unimplemented, bad;
   for (const auto& e : m.solids) {
-    const auto src = model::element_source(m, e);
-    const std::string id = std::to_string(e.id);
-    if (const char* kind = degenerate_kind(e.n)) {
-      unimplemented.add(std::string("*ELEMENT_SOLID: ") + kind + " are not supported (only 8-node hexahedra)",
-                        "*ELEMENT_SOLID " + id + " is one of the " + kind + ", which are not supported",
-                        id, src);
-      continue;
-    }
-    if (std::set<Id>(e.n.begin(), e.n.end()).size() != 8) {
-      bad.add("*ELEMENT_SOLID: degenerate hexahedra (repeated nodes in a form slideline does not know)",
-              "*ELEMENT_SOLID " + id + " repeats a node", id, src);
-      continue;
-    }
-    hex8::NodeMat X;
-    bool known = true;
-    for (int k = 0; k < 8; ++k) {
-      const auto f = node_of.find(e.n[static_cast<std::size_t>(k)]);
-      if (f == node_of.end()) {
-        known = false;
-        break;
-      }
-      X.row(k) = m.nodes[f->second].x.transpose();
-    }
-    if (!known) continue;  // check_references reports it
-    const Real v = hex8::volume(X, hex8::volume_gradient(X));
-    if (!(v > 0.0))
-      bad.add("*ELEMENT_SOLID: non-positive volume (inverted hexahedra: list N1-N4 counter-clockwise seen "
-              "from the face N5-N8)",
-              "*ELEMENT_SOLID " + id + " has non-positive volume " + num(v) +
-                  " (inverted: list N1-N4 counter-clockwise seen from the face N5-N8)",
-              id, src);
+    const auto f = forms.find(e.pid);
+    check_solid(m, e, f == forms.end() ? 1 : f->second, node_of, bad, unimplemented);
   }
   for (const auto& e : m.shells) {
     const auto src = model::element_source(m, e);

@@ -89,10 +89,14 @@ void check_shell_part(const model::Part& part, const model::SectionShell* sec, c
 /// A deformable part of hexahedra: its section, the hourglass type, the material's solid law.
 void check_solid_part(const model::Part& part, const model::SectionSolid* sec, const MaterialLaws& laws, int ihq,
                       Problems& p) {
-  if (sec && sec->elform != 1 && sec->elform != 0)
-    p.todo(describe(sec->src) + ": *SECTION_SOLID ELFORM " + std::to_string(sec->elform) +
-           " is not implemented (only 1, the one-point hexahedron)");
-  if (!hex_hourglass_kind(ihq))
+  const int elform = sec ? sec->elform : 1;
+  if (elform != 1 && elform != 0 && elform != 2 && elform != 10)
+    p.todo(describe(sec->src) + ": field ELFORM of *SECTION_SOLID: " + std::to_string(elform) +
+           " is not implemented (1 the one-point hexahedron, 2 the fully integrated selective-reduced "
+           "hexahedron, 10 the one-point tetrahedron)");
+  // Tetrahedra and fully integrated hexahedra have no hourglass modes: IHQ and QM do not act on
+  // them (nor in LS-DYNA).
+  if ((elform == 0 || elform == 1) && !hex_hourglass_kind(ihq))
     p.todo(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) + " of part " +
            std::to_string(part.pid) + " is not implemented (use 1-3 viscous, 4-5 Flanagan-Belytschko stiffness, 6 assumed strain or 10 physical "
            "stiffness)");
@@ -231,6 +235,9 @@ void check_parts(const model::Model& m, Problems& p) {
     if (laws.rigid) {
       rigid.insert(pid);
       check_rigid(std::get<model::MatRigid>(*mat), p);
+      if (const model::SectionSolid* sec = use.solids ? find(ssec, part->secid) : nullptr; sec && sec->elform == 10)
+        p.todo(describe(sec->src) + ": field ELFORM of *SECTION_SOLID: 10 (tetrahedra) in *MAT_RIGID part " +
+               std::to_string(pid) + " is not implemented (rigid parts take hexahedra and shells)");
       if (shell_sec) check_shell_section(*shell_sec, p);
     } else if (use.shells) {
       check_shell_part(*part, shell_sec, laws, ihq, p);

@@ -21,6 +21,18 @@ std::unique_ptr<ElementBlock> make_hex_block(Id part_id, const SolidLaw& materia
                                              std::vector<Id> element_ids,
                                              StiffnessDamping damping = {});
 
+/// A block of one-point tetrahedra (TetBlock<law>, *SECTION_SOLID ELFORM 10) of part `part_id`.
+/// `connectivity`: 4 internal node indices per element, N1-N3 counter-clockwise seen from N4.
+std::unique_ptr<ElementBlock> make_tet_block(Id part_id, const SolidLaw& material, BulkViscosity bulk,
+                                             std::vector<Index> connectivity, std::vector<Id> element_ids,
+                                             StiffnessDamping damping = {});
+
+/// A block of fully integrated selective-reduced hexahedra (FullHexBlock<law>, *SECTION_SOLID
+/// ELFORM 2) of part `part_id`: connectivity as make_hex_block's; no hourglass control.
+std::unique_ptr<ElementBlock> make_full_hex_block(Id part_id, const SolidLaw& material, BulkViscosity bulk,
+                                                  std::vector<Index> connectivity, std::vector<Id> element_ids,
+                                                  StiffnessDamping damping = {});
+
 /// A block of Belytschko-Tsay shells (BasicShellBlock<law>) of part `part_id`. `connectivity`: 4 internal
 /// node indices per element (counter-clockwise seen from the side the normal points to).
 /// Throws InputError on a bad value (non-positive density, modulus, thickness or shear factor,
