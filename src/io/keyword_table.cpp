@@ -183,7 +183,7 @@ std::string contact_description(const model::ContactKeyword& k) {
   std::string s = "contact, DYNA3D type " + std::to_string(k.dyna3d_type) + " " + std::string(k.name) + "; " +
                   std::string(model::enforcement_name(k.enforcement)) + " unless _LAGRANGE";
   if (k.sliding_option) s += "; _SLIDING_ONLY: no separation";
-  if (k.mortar_option) s += "; _MORTAR: mortar coupling (penalty)";
+  if (k.mortar_option) s += "; _MORTAR: mortar coupling";
   return s;
 }
 
