@@ -64,9 +64,29 @@ Surface segments_in_box(const Surface& surf, const model::Box& box, const NodalF
   return out;
 }
 
+/// The mortar coupling (penalty_coupling 1, a deck's _MORTAR) is built for the penalty passes with
+/// a slave surface (Types 3, 5, 10 and 12) and for the Lagrange constraints of Types 3, 5 and 10
+/// (Type 12's mutual-pair rule is per segment); anywhere else it is refused, not ignored.
+void check_coupling(const model::Contact& card) {
+  if (card.penalty_coupling == 0) return;
+  if (card.penalty_coupling != 1)
+    throw InputError(where(card) + ": penalty coupling " + std::to_string(card.penalty_coupling) +
+                     " is neither 0 (DYNA3D's rule) nor 1 (mortar)");
+  const bool penalty_type = card.type == T::surface_to_surface || card.type == T::one_way ||
+                            card.type == T::nodes_to_surface || card.type == T::automatic;
+  if (!penalty_type)
+    throw_contact_not_implemented(card, "the mortar coupling (_MORTAR) of a tied, tiebreak or sliding-only interface");
+  if (card.enforcement == model::Enforcement::lagrange && card.type == T::automatic)
+    throw_contact_not_implemented(card, "_MORTAR with _LAGRANGE on a type 12 (automatic) interface");
+  if (card.sstyp == 4)
+    throw_contact_not_implemented(card, "_MORTAR with a node-set slave side (SSTYP 4): the mortar coupling "
+                                        "integrates over the slave segments");
+}
+
 /// The one table of what runs: throws NotImplementedError (or InputError for a combination that
 /// means nothing) before anything is built.
 void check_runs(const model::Contact& card) {
+  check_coupling(card);
   const bool lagrange = card.enforcement == model::Enforcement::lagrange;
   const bool penalty = card.enforcement == model::Enforcement::penalty;
   switch (card.type) {

@@ -42,6 +42,7 @@ std::unique_ptr<ContactAlgorithm> make_lagrange_contact(InterfaceSpec& spec, con
   s.one_constraint_per_mutual_pair = automatic;  // no over-constrained pairs (lagrange_contact.hpp)
   s.rigid_fixed_translations = rigid_fixed_translations(ctx.model);
   s.transmitted_output = spec.transmitted_output;
+  s.mortar = spec.mortar_coupling;  // _MORTAR (check_runs refuses it on Type 12 and node sets)
   std::vector<Index> first;
   if (automatic && !spec.slave.parts.empty())
     first = ctx.sets.nodes_of_part(spec.slave.parts.front(), spec.where + ": SSID");

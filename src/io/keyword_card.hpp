@@ -148,7 +148,7 @@ namespace slideline::keyword {
 
 /// How a keyword as written matched its row of the keyword table (keyword_table.cpp): whether it
 /// carries the row's final option (_TITLE, _ID, _SET or _LOCAL) and which of the row's other
-/// options (bit k: the k-th; the contact rows' _LAGRANGE and _SLIDING_ONLY) it carries.
+/// options (bit k: the k-th; the contact rows' _LAGRANGE, _SLIDING_ONLY and _MORTAR) it carries.
 struct KeywordMatch {
   bool option = false;
   unsigned modifiers = 0;
@@ -163,10 +163,17 @@ bool read_block(const Context& ctx, Block& block, model::Model& model);
 /// True when read_block handles this keyword (so its cards are worth keeping in memory).
 bool is_supported(std::string_view keyword);
 
+/// The options of a contact keyword as written (before its _ID / _TITLE).
+struct ContactOptions {
+  bool lagrange = false;  ///< _LAGRANGE
+  bool sliding = false;   ///< _SLIDING_ONLY
+  bool mortar = false;    ///< _MORTAR
+};
+
 /// A *CONTACT_... card of the contact keyword table's row `row` (keyword_contacts.cpp); `heading`
-/// for the _ID / _TITLE option, `lagrange` and `sliding` for the _LAGRANGE and _SLIDING_ONLY options.
+/// for the _ID / _TITLE option.
 void read_contact(const Context& ctx, Block& block, model::Model& model, const model::ContactKeyword& row,
-                  bool heading, bool lagrange, bool sliding);
+                  bool heading, ContactOptions options);
 
 // keyword_initial.cpp: *INITIAL_VELOCITY, _NODE and _GENERATION.
 void read_initial_velocity(const Context& ctx, Block& block, model::Model& model);

@@ -64,17 +64,37 @@ void read_tiebreak_card4(const Card& k, model::Contact& c) {
   }
 }
 
+/// "*CONTACT_SURFACE_TO_SURFACE, ... and *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE": the rows that
+/// take _MORTAR.
+std::string mortar_keywords() {
+  std::string s;
+  std::string_view last;
+  for (const auto& k : model::kContactKeywords) {
+    if (!k.mortar_option) continue;
+    if (!last.empty()) s += (s.empty() ? "" : ", ") + std::string(last);
+    last = k.keyword;
+  }
+  return s + " and " + std::string(last);
+}
+
 }  // namespace
 
 void read_contact(const Context& ctx, Block& b, model::Model& m, const model::ContactKeyword& row,
-                  bool with_heading, bool lagrange, bool sliding) {
+                  bool with_heading, ContactOptions options) {
   model::Contact c;
   c.keyword = b.keyword;
   c.type = row.type;
   c.automatic_general = row.automatic_general;
   c.form = row.form;
-  c.enforcement = lagrange ? Enforcement::lagrange : row.enforcement;
-  if (sliding) {
+  c.enforcement = options.lagrange ? Enforcement::lagrange : row.enforcement;
+  if (options.mortar) {
+    // The coupling changes the physics: refuse it where it is not built (the model build refuses
+    // it on a type 12 _LAGRANGE card and with a node-set slave side).
+    if (!row.mortar_option)
+      throw InputError(ctx.where(b.line) + b.keyword + ": _MORTAR is an option of " + mortar_keywords() + " only");
+    c.penalty_coupling = 1;
+  }
+  if (options.sliding) {
     if (row.sliding_option)
       c.sliding_only_option = true;
     else

@@ -21,7 +21,7 @@ struct Entry {
   /// The final option, '|' between alternatives ("_ID|_TITLE"); "" when none.
   std::string_view options;
   /// Options that come before the final one, each at most once, in any order (the contacts'
-  /// _LAGRANGE and _SLIDING_ONLY); bit k of KeywordMatch::modifiers is the k-th.
+  /// _LAGRANGE, _SLIDING_ONLY and _MORTAR); bit k of KeywordMatch::modifiers is the k-th.
   std::string_view modifiers;
   std::string description;
   Handler read;
@@ -70,13 +70,14 @@ void parameters(const Context& c, Block& b, Model&, const KeywordMatch&) {
 
 void nothing(const Context&, Block&, Model&, const KeywordMatch&) {}
 
-// The contact rows' modifiers: bit 0 _LAGRANGE, bit 1 _SLIDING_ONLY. Every contact row takes both,
-// so that _SLIDING_ONLY where it means nothing is an error naming it (read_contact), not an
-// unknown keyword.
-constexpr std::string_view kContactModifiers = "_LAGRANGE|_SLIDING_ONLY";
+// The contact rows' modifiers: bit 0 _LAGRANGE, bit 1 _SLIDING_ONLY, bit 2 _MORTAR. Every contact
+// row takes all three, so that _SLIDING_ONLY or _MORTAR where it means nothing is an error naming
+// it (read_contact), not an unknown keyword.
+constexpr std::string_view kContactModifiers = "_LAGRANGE|_SLIDING_ONLY|_MORTAR";
 
 void contact(const Context& c, Block& b, Model& m, const KeywordMatch& k) {
-  read_contact(c, b, m, *k.contact, k.option, (k.modifiers & 1u) != 0, (k.modifiers & 2u) != 0);
+  read_contact(c, b, m, *k.contact, k.option, ContactOptions{(k.modifiers & 1u) != 0, (k.modifiers & 2u) != 0,
+                                                             (k.modifiers & 4u) != 0});
 }
 
 using Target = model::PrescribedMotion::Target;
@@ -181,10 +182,12 @@ std::string contact_description(const model::ContactKeyword& k) {
   // An LS-DYNA card without a DYNA3D number (model::ContactForm): runs with the type's pass.
   if (k.form != model::ContactForm::dyna3d)
     return "contact, LS-DYNA " + std::string(k.name) + " on DYNA3D type " + std::to_string(k.dyna3d_type) +
-           "'s automatic pass; penalty (_LAGRANGE is refused when the model is built)";
+           "'s automatic pass; penalty (_LAGRANGE is refused when the model is built)" +
+           (k.mortar_option ? "; _MORTAR: mortar coupling" : "");
   std::string s = "contact, DYNA3D type " + std::to_string(k.dyna3d_type) + " " + std::string(k.name) + "; " +
                   std::string(model::enforcement_name(k.enforcement)) + " unless _LAGRANGE";
   if (k.sliding_option) s += "; _SLIDING_ONLY: no separation";
+  if (k.mortar_option) s += "; _MORTAR: mortar coupling";
   return s;
 }
 
@@ -238,11 +241,12 @@ const Entry* find_entry(std::string_view kw, KeywordMatch& match) {
   return nullptr;
 }
 
-/// "[_SLIDING_ONLY][_LAGRANGE][_ID|_TITLE]": what a reader of the deck may write after the name
-/// (a contact's _SLIDING_ONLY only where it means something).
+/// "[_SLIDING_ONLY][_MORTAR][_LAGRANGE][_ID|_TITLE]": what a reader of the deck may write after the
+/// name (a contact's _SLIDING_ONLY and _MORTAR only where they mean something).
 std::string option_text(const Entry& e) {
   std::string s;
   if (e.contact && e.contact->sliding_option) s += "[_SLIDING_ONLY]";
+  if (e.contact && e.contact->mortar_option) s += "[_MORTAR]";
   if (e.contact) s += "[_LAGRANGE]";
   if (!e.options.empty()) s.append("[").append(e.options).append("]");
   return s;

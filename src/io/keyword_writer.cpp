@@ -181,6 +181,11 @@ void write_contacts(const model::Model& m, std::string& o) {
     const model::ContactKeyword& row = contact_row(c);
     std::string kw(row.keyword);
     if (row.sliding_option && c.sliding_only_option) kw += "_SLIDING_ONLY";
+    // The mortar coupling is written wherever it is set: the reader refuses it, by name, on a card
+    // that does not take it, rather than a deck losing it.
+    if (c.penalty_coupling == 1) kw += "_MORTAR";
+    else if (c.penalty_coupling != 0)
+      throw Error("contact penalty_coupling " + std::to_string(c.penalty_coupling) + " has no keyword (0 or 1)");
     if (c.enforcement == model::Enforcement::lagrange) kw += "_LAGRANGE";
     const bool with_id = c.cid != 0 || !c.title.empty();
     o += kw + (with_id ? "_ID\n" : "\n");

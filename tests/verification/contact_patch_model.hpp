@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "slideline/contact/lagrange_contact.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/material/elastic.hpp"
 #include "slideline/model/model.hpp"
@@ -25,6 +26,7 @@ namespace slideline::patch_test {
 struct PatchOptions {
   int lower_cells = 5;                       ///< n: the lower block is n x n in x-z
   model::ContactType type = model::ContactType::surface_to_surface;
+  model::ContactForm form = model::ContactForm::dyna3d;  ///< Type 12's LS-DYNA card (two sides or one)
   model::Enforcement enforcement = model::Enforcement::penalty;
   Real sfs = 1.0;                            ///< SFS = SFM (x SLSFAC 0.1)
   Real margin = 1e-3;                        ///< lower footprint wider by this on each side
@@ -35,7 +37,7 @@ struct PatchOptions {
   Real end_time = 1.5;
   int ihq = 10;                              ///< hourglass: 10 stiffness, 1 viscous
   bool lower_is_slave = false;               ///< Types 3, 10: the finer (lower) block as slave
-  int coupling = 0;                          ///< model::Contact::penalty_coupling
+  int coupling = 0;                          ///< model::Contact::penalty_coupling (1: _MORTAR)
 };
 
 /// Ids of the nodes of an (nx, ny, nz)-cell grid created by PatchModel, i fastest, then j, k.
@@ -118,9 +120,10 @@ inline PatchModel make_patch_model(const PatchOptions& o) {
   model::Contact c;
   c.title = "patch";
   c.type = o.type;
+  c.form = o.form;
   c.enforcement = o.enforcement;
   c.sfs = c.sfm = o.sfs;
-  if (o.type == model::ContactType::automatic) {
+  if (o.type == model::ContactType::automatic && o.form == model::ContactForm::dyna3d) {
     m.part_sets.push_back({1, "both", {1, 2}, {}});
     c.ssid = 1;
     c.sstyp = 2;
@@ -173,15 +176,16 @@ inline std::vector<Real> normal_stresses(const Simulation& sim, const model::Mod
 struct PatchResult {
   Real upper_min = 1e30, upper_max = -1e30, lower_min = 1e30, lower_max = -1e30;
   Real drift = 0.0;  ///< largest |ratio change| over the last third of the run (static check)
+  LagrangeSolveStats solves;  ///< the Gauss-Seidel solves of a Lagrange interface (else zeros)
   Real worst() const {
     return std::max({std::abs(upper_min - 1.0), std::abs(upper_max - 1.0), std::abs(lower_min - 1.0),
                      std::abs(lower_max - 1.0)});
   }
 };
 
-/// Runs the patch test to o.end_time; the spread at the end and its drift over the last third.
-inline PatchResult run_patch(const PatchOptions& o) {
-  const PatchModel p = make_patch_model(o);
+/// Runs the patch test `p` (made by make_patch_model(o), or that model written as a deck and read
+/// back) to o.end_time; the spread at the end and its drift over the last third.
+inline PatchResult run_patch(const PatchModel& p, const PatchOptions& o) {
   auto sim = build_simulation(p.model);
   sim->initialize();
   const ElasticSolid law(o.density, o.youngs, o.poisson);
@@ -206,9 +210,13 @@ inline PatchResult run_patch(const PatchOptions& o) {
   }
   PatchResult r;
   ratios(r);
+  if (const auto* lagrange = dynamic_cast<const LagrangeContact*>(&sim->contacts()[0])) r.solves = lagrange->solve_stats();
   r.drift = std::max({std::abs(r.upper_min - before.upper_min), std::abs(r.upper_max - before.upper_max),
                       std::abs(r.lower_min - before.lower_min), std::abs(r.lower_max - before.lower_max)});
   return r;
 }
+
+/// Runs the patch test of `o` built with the model API.
+inline PatchResult run_patch(const PatchOptions& o) { return run_patch(make_patch_model(o), o); }
 
 }  // namespace slideline::patch_test

@@ -81,7 +81,7 @@ struct InterfaceSpec {
   /// IGNORE 1 or 2 (the card's optional card C, else *CONTROL_CONTACT card 4): penalty interfaces
   /// keep initial penetrations as their springs' zero instead of moving the nodes out.
   bool keep_initial_penetrations = false;
-  bool mortar_coupling = false; ///< penalty coupling 1 (model::Contact::penalty_coupling)
+  bool mortar_coupling = false; ///< _MORTAR (model::Contact::penalty_coupling 1): penalty and Lagrange
   TiebreakFailure failure;
   ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)
   /// Type 12: write interfaces/<title>/transmitted_force (the force between its parts).

@@ -37,11 +37,13 @@
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/enforcement/lagrange.hpp"
+#include "slideline/contact/enforcement/mortar_weights.hpp"
 #include "slideline/contact/enforcement/rigid_master_groups.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/search/fcl_broad_phase.hpp"
 #include "slideline/contact/shell_offset.hpp"
+#include "slideline/core/error.hpp"
 #include "slideline/mesh/mesh_sets.hpp"
 
 namespace slideline {
@@ -72,6 +74,13 @@ struct LagrangeContactSettings {
   /// Translations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON1), by part id: the
   /// solve keeps the body immovable in them. Rigid parts not listed translate freely.
   std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations;
+  /// Mortar transfer (a deck's _MORTAR with _LAGRANGE; needs the slave surface, and not the
+  /// mutual-pair rule): each slave node's constraint holds the weighted master point
+  /// sum_a w_a x_a of its mortar weights (enforcement/mortar_weights.hpp: the nodes of every master
+  /// segment under the node's tributary area) and the weights' normal, instead of its closest
+  /// point on one segment; it engages when part of its area is over the master. A uniform pressure
+  /// then reaches the master as consistent nodal forces (docs/contact.md, "The contact patch test").
+  bool mortar = false;
 };
 
 /// Totals of the Gauss-Seidel solves of a run.
@@ -145,6 +154,14 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     workspace_.rows.reserve(ns);
     in_first_.assign(c.nodes.size(), 0);
     for (Index n : first_part_nodes_) in_first_[static_cast<std::size_t>(n)] = 1;
+    mortar_.clear();
+    if (s_.mortar) {
+      static_assert(MortarWeights::capacity <= LagrangeConstraint::max_masters);
+      if (!std::ranges::equal(slave_surface_.nodes, pairs_.slaves()) || s_.one_constraint_per_mutual_pair)
+        throw Error("LagrangeInterface::initialize: the mortar transfer needs the slaves' own surface and "
+                    "no mutual-pair rule");
+      mortar_.assign(ns, MortarWeights{});
+    }
   }
 
   void enforce(ConstraintView view, const StepTimes& times) override {
@@ -223,7 +240,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     for (std::size_t i = 0; i < points.size(); ++i) {
       const ContactPoint& p = points[i];
       bool formed = false;
-      if (p.segment >= 0) formed = try_constraint(i, p, x);
+      if (p.segment >= 0) formed = s_.mortar ? try_mortar_constraint(i, p, x) : try_constraint(i, p, x);
       if (!formed) {
         lambda_[i] = 0.0;
         tau_[i].setZero();
@@ -256,6 +273,45 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     if (master().is_triangle(seg)) k.shape[3] = 0.0;
     k.normal = n;
     k.target = target;
+    add_constraint(i, k, gap);
+    return true;
+  }
+
+  /// The mortar constraint of slave i (LagrangeContactSettings::mortar): on its weighted master
+  /// point, whether or not its own closest point is over the segment.
+  bool try_mortar_constraint(std::size_t i, const ContactPoint& p, const Vec3Field& x) {
+    const Index seg = p.segment;
+    const Index slave = p.node;
+    MortarWeights& mw = mortar_[i];
+    if (!mortar_weights(slave_surface_, static_cast<Index>(i), slave, master(), seg, x, mw)) return false;
+    Vec3 q = x.get(slave);
+    for (int a = 0; a < mw.count; ++a) {
+      if (mw.node[static_cast<std::size_t>(a)] == slave) return false;
+      q -= mw.weight[static_cast<std::size_t>(a)] * x.get(mw.node[static_cast<std::size_t>(a)]);
+    }
+    const Real target = p.offset;
+    const Real raw = mw.normal.dot(q);
+    const Real side = static_cast<Real>(pairs_.orient(i, seg, raw, target));
+    const Real gap = side * raw - target;
+    if (gap < -pairs_.depth_limit(seg, p.projection)) return false;  // far behind the master
+    if (Kind::bilateral ? std::abs(gap) > pairs_.allowance() : gap > pairs_.allowance()) return false;
+    LagrangeConstraint k;
+    k.slave = slave;
+    const Index* conn = &master().conn[4 * static_cast<std::size_t>(seg)];
+    for (int a = 0; a < 4; ++a) k.master[static_cast<std::size_t>(a)] = conn[a];  // the pair's segment
+    k.mortar_node = mw.node.data();
+    k.mortar_weight = mw.weight.data();
+    k.mortar_count = mw.count;
+    k.normal = side * mw.normal;
+    k.target = target;
+    add_constraint(i, k, gap);
+    return true;
+  }
+
+  /// Completes constraint k of slave i (gap `gap` at x^n) and adds it: friction coefficient and
+  /// the warm start from the previous cycle.
+  void add_constraint(std::size_t i, LagrangeConstraint& k, Real gap) {
+    const Vec3& n = k.normal;
     k.bilateral = Kind::bilateral;
     k.mu = Kind::bilateral ? 0.0 : s_.friction.coefficient(slip_speed_[i]);
     // Warm start from the previous cycle's multipliers, turned into the current tangent plane.
@@ -267,7 +323,6 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     else max_penetration_ = std::max(max_penetration_, std::abs(gap));
     constraints_.push_back(k);
     owner_.push_back(static_cast<Index>(i));
-    return true;
   }
 
   /// See LagrangeContactSettings::one_constraint_per_mutual_pair. No allocation (storage reserved).
@@ -328,6 +383,10 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
       const Index seg = sp.segment;
       const Index* conn = &master().conn[4 * static_cast<std::size_t>(seg)];
       if (conn[0] == c.slave || conn[1] == c.slave || conn[2] == c.slave || conn[3] == c.slave) continue;
+      if (s_.mortar) {
+        reproject_mortar(c, i, seg);
+        continue;
+      }
       pairs_.move_to(i, seg);
       for (int a = 0; a < 4; ++a) c.master[static_cast<std::size_t>(a)] = conn[a];
       c.shape = sp.projection.shape;
@@ -336,6 +395,21 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
       c.target = pairs_.offset(i, seg);
       if (c.mu > 0.0) c.tau = rotate_into_plane(c.tau, c.normal);
     }
+  }
+
+  /// reproject() of mortar constraint c (slave i, now over segment seg): the weights at the
+  /// predicted positions; the constraint stays as it was where they cannot be formed.
+  void reproject_mortar(LagrangeConstraint& c, std::size_t i, Index seg) {
+    MortarWeights w;
+    if (!mortar_weights(slave_surface_, static_cast<Index>(i), c.slave, master(), seg, predicted_, w)) return;
+    for (int a = 0; a < w.count; ++a)
+      if (w.node[static_cast<std::size_t>(a)] == c.slave) return;
+    pairs_.move_to(i, seg);
+    mortar_[i] = w;
+    c.mortar_count = w.count;
+    c.normal = static_cast<Real>(pairs_.side(i)) * w.normal;
+    c.target = pairs_.offset(i, seg);
+    if (c.mu > 0.0) c.tau = rotate_into_plane(c.tau, c.normal);
   }
 
   /// The segment slave i is on (its contact point's).
@@ -368,13 +442,10 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
       slave_force_ += f;
       if (s_.transmitted_output && in_first_[static_cast<std::size_t>(c.slave)]) transmitted_ += f;
       Vec3 v_rel = view.nodes.v.get(c.slave);
-      for (int a = 0; a < 4; ++a) {
-        if (c.shape[static_cast<std::size_t>(a)] == 0.0) continue;
-        const Vec3 fm = -c.shape[static_cast<std::size_t>(a)] * f;
-        if (s_.transmitted_output && in_first_[static_cast<std::size_t>(c.master[static_cast<std::size_t>(a)])])
-          transmitted_ += fm;
-        v_rel -= c.shape[static_cast<std::size_t>(a)] * view.nodes.v.get(c.master[static_cast<std::size_t>(a)]);
-      }
+      for_each_master(c, [&](int, Index m, Real w) {
+        if (s_.transmitted_output && in_first_[static_cast<std::size_t>(m)]) transmitted_ += -w * f;
+        v_rel -= w * view.nodes.v.get(m);
+      });
       // Trapezoidal work of the friction force on the relative sliding, as the energy ledger
       // books the contact forces: half with v^{n-1/2} over dt_prev, half with v^{n+1/2} over dt_next.
       if (c.mu > 0.0) {
@@ -407,6 +478,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   std::vector<std::uint8_t> keep_;
   std::vector<Real> master_size_;
   LagrangeWorkspace workspace_;  ///< scratch of the solve, sized in initialize()
+  std::vector<MortarWeights> mortar_;  ///< per slave: its mortar weights (LagrangeContactSettings::mortar)
   DiagnosticSink* diagnostics_ = nullptr;  ///< from the ContactContext
 };
 

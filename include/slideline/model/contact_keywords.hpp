@@ -21,6 +21,9 @@ struct ContactKeyword {
   /// An LS-DYNA card with no DYNA3D number runs as the family `type` with this form
   /// (Contact::form); the DYNA3D cards leave it at dyna3d.
   ContactForm form = ContactForm::dyna3d;
+  /// takes the _MORTAR option (Contact::penalty_coupling = 1, the mortar coupling of the penalty
+  /// springs; docs/contact.md, "The contact patch test")
+  bool mortar_option = false;
 };
 
 inline constexpr ContactKeyword kContactKeywords[] = {
@@ -29,7 +32,7 @@ inline constexpr ContactKeyword kContactKeywords[] = {
     {"*CONTACT_TIED_SURFACE_TO_SURFACE", ContactType::tied_surface, false, 2, Enforcement::kinematic, false,
      "tied surface"},
     {"*CONTACT_SURFACE_TO_SURFACE", ContactType::surface_to_surface, false, 3, Enforcement::penalty, false,
-     "surface to surface"},
+     "surface to surface", ContactForm::dyna3d, true},
     {"*CONTACT_NODES_TO_SURFACE", ContactType::nodes_to_surface, false, 5, Enforcement::penalty, false,
      "nodes to surface"},
     {"*CONTACT_TIED_NODES_TO_SURFACE", ContactType::tied_nodes, false, 6, Enforcement::kinematic, false,
@@ -41,12 +44,12 @@ inline constexpr ContactKeyword kContactKeywords[] = {
     {"*CONTACT_TIEBREAK_SURFACE_TO_SURFACE", ContactType::tiebreak_surface, false, 9, Enforcement::penalty, false,
      "tiebreak surface"},
     {"*CONTACT_ONE_WAY_SURFACE_TO_SURFACE", ContactType::one_way, false, 10, Enforcement::penalty, true,
-     "one way"},
+     "one way", ContactForm::dyna3d, true},
     {"*CONTACT_AUTOMATIC_SINGLE_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
-     "automatic"},
+     "automatic", ContactForm::dyna3d, true},
     {"*CONTACT_AUTOMATIC_GENERAL", ContactType::automatic, true, 12, Enforcement::penalty, false, "automatic"},
     {"*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
-     "automatic surface to surface", ContactForm::automatic_surface_to_surface},
+     "automatic surface to surface", ContactForm::automatic_surface_to_surface, true},
     {"*CONTACT_AUTOMATIC_NODES_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
      "automatic nodes to surface", ContactForm::automatic_nodes_to_surface},
     {"*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,

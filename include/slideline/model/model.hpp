@@ -487,11 +487,11 @@ struct Contact {
   int option = 0;   ///< tiebreak OPTION
   Real nfls = 0.0, sfls = 0.0;
   Real radius = 0.0;  ///< nodal contact radius for discrete nodes (type 5)
-  /// Penalty coupling (Types 3, 10, 12 with surface slaves; a slideline option, not an LS-DYNA
-  /// field, set from C++): 0 DYNA3D's rule (each slave node gets its master segment's spring
-  /// f K A^2 / V at its closest point), 1 mortar (the same stiffness per unit area times the slave
-  /// node's tributary area over the master, gap and master forces on mortar weights); see
-  /// docs/contact.md, "The contact patch test".
+  /// Slave-master coupling (Types 3, 5, 10, 12 with surface slaves; the keyword's _MORTAR option
+  /// sets 1, docs/keywords.md): 0 DYNA3D's rule (each slave node on its master segment's closest
+  /// point; penalty spring f K A^2 / V), 1 mortar (penalty: the same stiffness per unit area times
+  /// the node's tributary area over the master; gap, forces and Lagrange constraints on mortar
+  /// weights); docs/contact.md, "The contact patch test".
   int penalty_coupling = 0;
   Source src;
   bool operator==(const Contact&) const = default;

@@ -124,5 +124,24 @@ TEST(InterfaceSpec, AutomaticCardsRefuseLagrangeAndANodeSetSurface) {
       << node_set;
 }
 
+// The mortar coupling (a deck's _MORTAR, penalty_coupling 1) runs on the penalty passes with slave
+// segments; elsewhere the build refuses it, naming the card, instead of running without it.
+TEST(InterfaceSpec, MortarCouplingIsRefusedWhereItIsNotBuilt) {
+  const auto refusal = [](const char* problem, int coupling, auto error) {
+    model::Model m = scenarios::make_sslide_problem(problem).model;
+    m.contacts.front().penalty_coupling = coupling;
+    m.contacts.front().src = {"deck.k", 9};
+    const std::string what = build_error<decltype(error)>(m);
+    EXPECT_NE(what.find("deck.k:9: "), std::string::npos) << what;
+    return what;
+  };
+  EXPECT_NE(refusal("sslide12l", 1, NotImplementedError("")).find("_MORTAR with _LAGRANGE on a type 12"),
+            std::string::npos);
+  EXPECT_NE(refusal("sslide2kc", 1, NotImplementedError("")).find("tied, tiebreak or sliding-only"), std::string::npos);
+  EXPECT_NE(refusal("sslide9ps", 1, NotImplementedError("")).find("tied, tiebreak or sliding-only"), std::string::npos);
+  EXPECT_NE(refusal("sslide5p", 1, NotImplementedError("")).find("node-set slave side (SSTYP 4)"), std::string::npos);
+  EXPECT_NE(refusal("sslide3p", 2, InputError("")).find("neither 0 (DYNA3D's rule) nor 1 (mortar)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace slideline

@@ -4,6 +4,7 @@
 // constraints, friction on, some components fixed.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -106,6 +107,49 @@ TEST(LagrangeSolve, MasterAddedIsTheForceTheMasterNodesReceived) {
     EXPECT_LT((on_slaves + on_masters).norm(), 1e-12 * on_slaves.norm()) << cached;
     withdraw_constraint_forces(p.cs, p.view(), t, nullptr, &master_added);
     EXPECT_LT(master_added.norm(), 1e-12 * on_slaves.norm()) << cached;
+  }
+}
+
+// A mortar constraint (LagrangeConstraint::mortar_count > 0) whose node list is its segment's
+// nodes with their shape functions is the segment constraint: the same multipliers, forces and
+// accelerations, bit for bit, on both paths.
+TEST(LagrangeSolve, MortarListOfOneSegmentIsTheSegmentConstraint) {
+  for (const bool cached : {false, true}) {
+    Plate ref(6), mortar(6);
+    std::vector<std::array<Index, 4>> nodes(mortar.cs.size());
+    std::vector<std::array<Real, 4>> weights(mortar.cs.size());
+    for (std::size_t k = 0; k < mortar.cs.size(); ++k) {
+      LagrangeConstraint& c = mortar.cs[k];
+      nodes[k] = c.master;
+      weights[k] = c.shape;
+      c.master = {0, 0, 0, 0};  // not used by a mortar constraint
+      c.shape = {0.0, 0.0, 0.0, 0.0};
+      c.mortar_node = nodes[k].data();
+      c.mortar_weight = weights[k].data();
+      c.mortar_count = 4;
+    }
+    const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100};
+    LagrangeWorkspace ws1, ws2;
+    for (auto* w : {&ws1, &ws2}) {
+      w->dx.assign(ref.nodes.size(), Vec3::Zero());
+      w->rows.reserve(ref.cs.size());
+    }
+    Vec3 added_ref = Vec3::Zero(), added_mortar = Vec3::Zero();
+    const auto r1 = solve_forward_increment(ref.cs, ref.view(), t, {}, nullptr, cached ? &ws1 : nullptr, &added_ref);
+    const auto r2 =
+        solve_forward_increment(mortar.cs, mortar.view(), t, {}, nullptr, cached ? &ws2 : nullptr, &added_mortar);
+    EXPECT_EQ(r1.sweeps, r2.sweeps) << cached;
+    ASSERT_GT(r1.sweeps, 1) << cached;
+    for (std::size_t k = 0; k < ref.cs.size(); ++k) {
+      EXPECT_EQ(ref.cs[k].lambda, mortar.cs[k].lambda) << k;
+      EXPECT_EQ(ref.cs[k].tau, mortar.cs[k].tau) << k;
+      EXPECT_EQ(ref.cs[k].slip, mortar.cs[k].slip) << k;
+    }
+    for (Index i = 0; i < static_cast<Index>(ref.nodes.size()); ++i) {
+      EXPECT_EQ(ref.a.get(i), mortar.a.get(i)) << i;
+      EXPECT_EQ(ref.fc.get(i), mortar.fc.get(i)) << i;
+    }
+    EXPECT_EQ(added_ref, added_mortar);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/io/keyword_table.hpp"
 #include "slideline/io/keyword_writer.hpp"
@@ -19,6 +20,7 @@ using model::Enforcement;
 struct Spelling {
   std::string keyword;
   bool lagrange, sliding, heading;
+  bool mortar = false;
 };
 
 std::vector<Spelling> spellings(const ContactKeyword& k) {
@@ -30,6 +32,13 @@ std::vector<Spelling> spellings(const ContactKeyword& k) {
   if (k.sliding_option) {
     s.push_back({base + "_SLIDING_ONLY", false, true, false});
     s.push_back({base + "_LAGRANGE_SLIDING_ONLY_ID", true, true, true});
+  }
+  if (k.mortar_option) {
+    s.push_back({base + "_MORTAR", false, false, false, true});
+    s.push_back({base + "_MORTAR_ID", false, false, true, true});
+    // Read (the model build refuses _MORTAR with _LAGRANGE, by name).
+    s.push_back({base + "_LAGRANGE_MORTAR", true, false, false, true});
+    if (k.sliding_option) s.push_back({base + "_MORTAR_SLIDING_ONLY_TITLE", false, true, true, true});
   }
   return s;
 }
@@ -48,6 +57,7 @@ TEST(ContactKeywords, EachRowReadsAsItSaysAndIsWrittenUnderItsName) {
       EXPECT_EQ(c.automatic_general, k.automatic_general);
       EXPECT_EQ(c.enforcement, s.lagrange ? Enforcement::lagrange : k.enforcement);
       EXPECT_EQ(c.sliding_only_option, s.sliding);
+      EXPECT_EQ(c.penalty_coupling, s.mortar ? 1 : 0);
       EXPECT_EQ(model::contact_keyword(c), &k);
       const std::string written = write_keyword_string(m);
       EXPECT_NE(written.find("\n" + std::string(k.keyword)), std::string::npos);
@@ -57,11 +67,34 @@ TEST(ContactKeywords, EachRowReadsAsItSaysAndIsWrittenUnderItsName) {
       EXPECT_EQ(again.contacts[0].enforcement, c.enforcement);
       EXPECT_EQ(again.contacts[0].automatic_general, k.automatic_general);
       EXPECT_EQ(again.contacts[0].sliding_only_option, s.sliding);
+      EXPECT_EQ(again.contacts[0].penalty_coupling, c.penalty_coupling);
       EXPECT_EQ(again.contacts[0].cid, c.cid);
       EXPECT_EQ(again.contacts[0].title, c.title);
       ++checked;
     }
-  EXPECT_GE(checked, 4 * 11);
+  EXPECT_GE(checked, 4 * 11 + 3 * 4 + 1);
+}
+
+// _MORTAR on a card that does not take it is an input error naming the file, the line and the
+// option, not a card read without it.
+TEST(ContactKeywords, MortarWhereItIsNotBuiltIsRefusedByName) {
+  int refused = 0;
+  for (const auto& k : model::kContactKeywords) {
+    if (k.mortar_option) continue;
+    const std::string kw = std::string(k.keyword) + "_MORTAR_ID";
+    SCOPED_TRACE(kw);
+    try {
+      read_keyword_string("*KEYWORD\n" + kw + "\n         7\n1,2\n*END\n", "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("c.k:2: " + kw + ": _MORTAR is an option of *CONTACT_SURFACE_TO_SURFACE, "), std::string::npos)
+          << what;
+      EXPECT_NE(what.find(" and *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE only"), std::string::npos) << what;
+      ++refused;
+    }
+  }
+  EXPECT_EQ(refused, 10);
 }
 
 // The CLI's names (blockcontact check) and the DYNA3D numbers, from the table.
@@ -80,19 +113,23 @@ TEST(ContactKeywords, NamesAndTypeNumbers) {
   EXPECT_EQ(model::enforcement_name(Enforcement::lagrange), "Lagrange");
 }
 
-// The reader's table takes a contact's options in its grammar only: _LAGRANGE and _SLIDING_ONLY
-// once each, in either order, then at most one of _ID / _TITLE; other keywords their one option.
+// The reader's table takes a contact's options in its grammar only: _LAGRANGE, _SLIDING_ONLY and
+// _MORTAR once each, in any order, then at most one of _ID / _TITLE; other keywords their one option.
 TEST(ContactKeywords, TheReadersTableKeepsTheOptionGrammar) {
   for (const char* kw : {"*CONTACT_SURFACE_TO_SURFACE", "*CONTACT_SURFACE_TO_SURFACE_LAGRANGE_ID",
                          "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_SLIDING_ONLY_LAGRANGE_TITLE",
                          "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_LAGRANGE_SLIDING_ONLY", "*CONTACT_SLIDING_ONLY",
-                         "*CONTACT_SLIDING_ONLY_LAGRANGE", "*SET_NODE_LIST_TITLE", "*PARAMETER_EXPRESSION_LOCAL",
+                         "*CONTACT_SLIDING_ONLY_LAGRANGE", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_ID",
+                         "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_MORTAR_SLIDING_ONLY",
+                         "*SET_NODE_LIST_TITLE", "*PARAMETER_EXPRESSION_LOCAL",
                          "*DAMPING_PART_MASS_SET", "*BOUNDARY_SPC_SET_ID"})
     EXPECT_TRUE(reads_keyword(kw)) << kw;
   for (const char* kw : {"*CONTACT_SURFACE_TO_SURFACE_ID_LAGRANGE", "*CONTACT_SURFACE_TO_SURFACE_LAGRANGE_LAGRANGE",
                          "*CONTACT_SURFACE_TO_SURFACE_ID_TITLE", "*CONTACT_SURFACE", "*CONTACT_",
                          "*SET_NODE_LIST_ID", "*SET_NODE_LIST_TITLE_TITLE", "*NODE_TITLE", "*PARAMETER_DUPLICATION",
-                         "*MAT_ELASTIC_LAGRANGE", "*CONTROL_CONTACT_TITLE"})
+                         "*MAT_ELASTIC_LAGRANGE", "*CONTROL_CONTACT_TITLE", "*CONTACT_SURFACE_TO_SURFACE_MORTAR_MORTAR",
+                         "*CONTACT_SURFACE_TO_SURFACE_ID_MORTAR", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_TIED",
+                         "*CONTACT_FORMING_SURFACE_TO_SURFACE_MORTAR"})
     EXPECT_FALSE(reads_keyword(kw)) << kw;
 }
 

@@ -16,6 +16,10 @@
 ///                |tau| = mu lambda (Coulomb; mu set per constraint by the caller).
 /// The force on the slave is lambda n + tau, on master node a -N_a (lambda n + tau): the slave and
 /// master totals are equal and opposite to round-off.
+/// Mortar transfer (LagrangeConstraint::mortar_count > 0): the master point is sum_a w_a x_a over
+/// the nodes of several master segments, w_a the slave node's mortar weights
+/// (enforcement/mortar_weights.hpp), in place of one segment's N_a; everything above holds with
+/// w_a for N_a, so a uniform pressure reaches the master as consistent nodal forces.
 ///
 /// The coupled system (the constraints share master nodes, and in single-surface contact a node
 /// may be slave and master at once) is solved by projected Gauss-Seidel over the constraints in
@@ -57,7 +61,28 @@ struct LagrangeConstraint {
   Real lambda = 0.0;               ///< normal force on the slave (force; > 0 compression)
   Vec3 tau = Vec3::Zero();         ///< tangential (friction) force on the slave (force)
   Vec3 slip = Vec3::Zero();        ///< after the solve: predicted tangential relative increment (length)
+  /// Mortar transfer (see the file comment): when mortar_count > 0 the master nodes and weights
+  /// are these (storage the interface owns and keeps unchanged during the solve; at most
+  /// max_masters), and master / shape are not used.
+  static constexpr int max_masters = 48;
+  const Index* mortar_node = nullptr;
+  const Real* mortar_weight = nullptr;
+  int mortar_count = 0;
 };
+
+/// Calls f(a, node, weight) for each master node of `k` with a nonzero weight, a its place in the
+/// constraint's list (a < 4 for a segment's nodes).
+template <class F>
+inline void for_each_master(const LagrangeConstraint& k, F&& f) {
+  if (k.mortar_count > 0) {
+    for (int a = 0; a < k.mortar_count; ++a)
+      if (k.mortar_weight[a] != 0.0) f(a, k.mortar_node[a], k.mortar_weight[a]);
+    return;
+  }
+  for (int a = 0; a < 4; ++a)
+    if (k.shape[static_cast<std::size_t>(a)] != 0.0)
+      f(a, k.master[static_cast<std::size_t>(a)], k.shape[static_cast<std::size_t>(a)]);
+}
 
 struct LagrangeSolveOptions {
   Real tolerance = 1e-11;  ///< largest position correction in the last sweep (length)
@@ -80,7 +105,7 @@ struct LagrangeWorkspace {
     Vec3 t1 = Vec3::Zero(), t2 = Vec3::Zero();
     Real a11 = 0.0, a12 = 0.0, a22 = 0.0, det = 0.0;
     Vec3 cs = Vec3::Zero();        ///< the slave node's compliance
-    std::array<Vec3, 4> cm{};      ///< the master nodes' compliances
+    std::array<Vec3, 4> cm{};      ///< the master nodes' compliances (a segment's; mortar: not cached)
     Vec3 applied = Vec3::Zero();   ///< force already in the view (the warm start)
   };
   std::vector<Vec3> dx;  ///< per node (global index): predicted increment x^{n+1} - x^n during the solve
@@ -134,36 +159,32 @@ struct Predictor {
   }
   void apply(const LagrangeConstraint& k, const Vec3& df) const {
     apply(k.slave, df);
-    for (int a = 0; a < 4; ++a) {
-      if (k.shape[a] == 0.0) continue;
-      const Vec3 fm = -k.shape[a] * df;
-      apply(k.master[a], fm);
+    for_each_master(k, [&](int, Index m, Real w) {
+      const Vec3 fm = -w * df;
+      apply(m, fm);
       if (master_added) *master_added += fm;
-    }
+    });
   }
   /// Relative predicted increment of the slave against its master point (length).
   Vec3 relative_increment(const LagrangeConstraint& k) const {
     Vec3 r = increment(k.slave);
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) r -= k.shape[a] * increment(k.master[a]);
+    for_each_master(k, [&](int, Index m, Real w) { r -= w * increment(m); });
     return r;
   }
   Vec3 relative_position(const LagrangeConstraint& k) const {
     Vec3 r = view.nodes.x.get(k.slave);
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) r -= k.shape[a] * view.nodes.x.get(k.master[a]);
+    for_each_master(k, [&](int, Index m, Real w) { r -= w * view.nodes.x.get(m); });
     return r;
   }
   /// Diagonal of the constraint's compliance (per component, length / force).
   Vec3 pair_compliance(const LagrangeConstraint& k) const {
     Vec3 c = compliance(k.slave);
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) c += k.shape[a] * k.shape[a] * compliance(k.master[a]);
+    for_each_master(k, [&](int, Index m, Real w) { c += w * w * compliance(m); });
     if (rigid == nullptr || rigid->group.empty()) return c;
     // A rigid group moves as one: its share is (sum of the weights on its nodes)^2 c_g, the
     // slave counting +1 and the masters -N_a.
-    std::array<Index, 5> gs{};
-    std::array<Real, 5> ws{};
+    std::array<Index, 1 + LagrangeConstraint::max_masters> gs{};
+    std::array<Real, 1 + LagrangeConstraint::max_masters> ws{};
     int ng = 0;
     const auto add = [&](Index node, Real w) {
       const Index g = group(node);
@@ -177,8 +198,7 @@ struct Predictor {
       ws[ng++] = w;
     };
     add(k.slave, 1.0);
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) add(k.master[a], -k.shape[a]);
+    for_each_master(k, [&](int, Index m, Real w) { add(m, -w); });
     for (int j = 0; j < ng; ++j) c += ws[j] * ws[j] * rigid->compliance[static_cast<std::size_t>(gs[j])];
     return c;
   }
@@ -246,22 +266,22 @@ inline LagrangeSolveResult solve_cached(std::span<LagrangeConstraint> cs, const 
     w.det = w.a11 * w.a22 - w.a12 * w.a12;
     w.cs = p.compliance(k.slave);
     dx[static_cast<std::size_t>(k.slave)] = p.increment(k.slave);
-    for (int a = 0; a < 4; ++a) {
-      w.cm[a] = p.compliance(k.master[a]);
-      if (k.shape[a] != 0.0) dx[static_cast<std::size_t>(k.master[a])] = p.increment(k.master[a]);
-    }
+    if (k.mortar_count == 0)
+      for (int a = 0; a < 4; ++a) w.cm[static_cast<std::size_t>(a)] = p.compliance(k.master[static_cast<std::size_t>(a)]);
+    for_each_master(k, [&](int, Index m, Real) { dx[static_cast<std::size_t>(m)] = p.increment(m); });
     w.applied = k.lambda * k.normal + k.tau;
   }
   const auto rel = [&](const LagrangeConstraint& k) {
     Vec3 r = dx[static_cast<std::size_t>(k.slave)];
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) r -= k.shape[a] * dx[static_cast<std::size_t>(k.master[a])];
+    for_each_master(k, [&](int, Index m, Real wt) { r -= wt * dx[static_cast<std::size_t>(m)]; });
     return r;
   };
   const auto move = [&](const LagrangeConstraint& k, const LagrangeWorkspace::Row& w, const Vec3& df) {
     dx[static_cast<std::size_t>(k.slave)] += w.cs.cwiseProduct(df);
-    for (int a = 0; a < 4; ++a)
-      if (k.shape[a] != 0.0) dx[static_cast<std::size_t>(k.master[a])] -= k.shape[a] * w.cm[a].cwiseProduct(df);
+    for_each_master(k, [&](int a, Index m, Real wt) {
+      const Vec3 cm = k.mortar_count > 0 ? p.compliance(m) : w.cm[static_cast<std::size_t>(a)];
+      dx[static_cast<std::size_t>(m)] -= wt * cm.cwiseProduct(df);
+    });
   };
   for (int sweep = 0; sweep < opt.max_sweeps; ++sweep) {
     Real worst = 0.0;
