@@ -140,11 +140,15 @@ const MeshKind kMeshes[] = {{"quads", test_support::no_split},
 
 }  // namespace
 
-// 8 x 8 meshes (128 triangles), a / t = 100. Measured (this build): see the printed errors; the
-// bounds are what a first-order plate element gives at this density.
+// 8 x 8 meshes (128 triangles), a / t = 100; the triangle mesh also turned by 0.5 rad about the
+// normal (same numbers to round-off). Measured: quads +2.66 %, triangles -2.18 %, mixed +2.78 %
+// (triangles -0.06 % at 16 x 16; without the stabilised shear factor -23.5 % at 8 x 8 and -2.7 %
+// at 16 x 16: residual shear locking, shell_c0tri.hpp). 5 % is the first-order elements' error at
+// this density, not a margin.
 TEST(ShellTriangleVerification, SimplySupportedPlateAgainstNavier) {
   for (const MeshKind& mk : kMeshes)
     for (Real turn : {0.0, 0.5}) {
+      if (turn != 0.0 && mk.split != test_support::all_split) continue;
       const PlateRun r = simply_supported(8, mk.split, turn);
       const Real err = r.w / r.w_theory - 1.0;
       std::printf("simply supported plate 8x8 %-9s turned %.1f: w_c %.6e vs Navier %.6e (%+.2f%%), "
@@ -155,12 +159,14 @@ TEST(ShellTriangleVerification, SimplySupportedPlateAgainstNavier) {
     }
 }
 
+// 8 x 2 meshes, nu = 0, L / t = 50. Measured: see the printed errors; 16 x 2: 0.02-0.08 %.
 TEST(ShellTriangleVerification, ClampedStripAgainstBeamTheory) {
   for (const MeshKind& mk : kMeshes)
     for (Real turn : {0.0, 0.5}) {
-      const PlateRun r = cantilever(16, mk.split, turn);
+      if (turn != 0.0 && mk.split != test_support::all_split) continue;
+      const PlateRun r = cantilever(8, mk.split, turn);
       const Real err = r.w / r.w_theory - 1.0;
-      std::printf("clamped strip 16x2 %-9s turned %.1f: tip %.6e vs qL^4/8EI %.6e (%+.2f%%), reaction/load %.5f\n",
+      std::printf("clamped strip 8x2 %-9s turned %.1f: tip %.6e vs qL^4/8EI %.6e (%+.2f%%), reaction/load %.5f\n",
                   mk.name, turn, r.w, r.w_theory, 100 * err, r.reaction);
       EXPECT_LT(std::abs(err), 0.05) << mk.name << " turned " << turn;
       EXPECT_NEAR(r.reaction, 1.0, 2e-3) << mk.name;

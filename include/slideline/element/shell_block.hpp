@@ -176,7 +176,7 @@ class BasicShellBlock final : public ElementBlock {
         }
         const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
         shell_bt::Resultants r;
-        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r);
+        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r, sec_.shear_factor);
         // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
         const Real len = shell_bt::characteristic_length(X, g.area);
         Real qdt = bulk_viscosity(sr, len, g.area, r, p_visc);
@@ -249,14 +249,22 @@ class BasicShellBlock final : public ElementBlock {
     }
     const shell_c0tri::StrainRates sr = shell_c0tri::strain_rates(gm, V * gm.e, W * gm.e);
     shell_bt::Resultants r;
-    [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr.s, dt, r);
+    const Real kappa = shell_c0tri::stabilised_shear_factor(gm, sec_.shear_factor, sec_.thickness);
+    [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr.s, dt, r, kappa);
     // The shear's rotational part: elastic, kappa G t I_p / A per unit area (shell_c0tri.hpp).
-    const Real kc = sec_.shear_factor * mat_.shear_modulus() * sec_.thickness * gm.polar;
+    const Real kc = kappa * mat_.shear_modulus() * sec_.thickness * gm.polar;
     Real& c_int = tri_c_[static_cast<std::size_t>(e - nq_)];
     c_int += dt * sr.shear_c;
     Real qc = kc * c_int;
     const Real c = mat_.wave_speed();
-    const Real len = shell_c0tri::characteristic_length(g);
+    const PlaneStressStiffness cs = mat_.stiffness();
+    const Real len = shell_c0tri::characteristic_length(g, cs.c11, cs.g);
+    // The bending / shear modes' bound, as a length for the same formula (2 c / omega).
+    const Real t = sec_.thickness;
+    const Real m_node = mat_.density() * area0_[e] * t / 3.0;
+    const Real w2 = shell_c0tri::bending_omega2_bound(g, cs.c11, cs.g, kappa, t, m_node,
+                                                      m_node * std::max(t * t, area0_[e]) / 12.0);
+    const Real len_dt = std::min(len, 2.0 * c / std::sqrt(w2));
     Real qdt = bulk_viscosity(sr.s, len, g.area, r, out.p_visc);
     if constexpr (damped) {
       const Real dc = damping_.beta * kc * sr.shear_c;
@@ -270,7 +278,7 @@ class BasicShellBlock final : public ElementBlock {
     const shell_c0tri::NodeMat m = ml * g.e.transpose();
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
-    out.dt = len / (qdt + std::sqrt(qdt * qdt + c * c));
+    out.dt = len_dt / (qdt + std::sqrt(qdt * qdt + c * c));
     const Index s0 = force_slot_base() + 4 * nq_ + 3 * (e - nq_);
     const Index m0 = moment_slot_base() + 4 * nq_ + 3 * (e - nq_);
     for (int k = 0; k < 3; ++k) {
@@ -327,9 +335,9 @@ class BasicShellBlock final : public ElementBlock {
   /// damped, adds the Rayleigh stiffness-damping stress beta (C : strain rate) to the resultants
   /// only, and returns its power per unit area.
   template <bool damped>
-  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r) {
+  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r,
+                           Real kappa) {
     const Real half_t = 0.5 * sec_.thickness;
-    const Real kappa = sec_.shear_factor;
     [[maybe_unused]] const Real beta = damping_.beta;
     [[maybe_unused]] const PlaneStressStiffness cs = mat_.stiffness();
     [[maybe_unused]] const Real gs = kappa * cs.g;
