@@ -273,11 +273,10 @@ void check_elements(const model::Model& m, Problems& p) {
     const auto src = model::element_source(m, e);
     const std::string id = std::to_string(e.id);
     const std::set<Id> distinct(e.n.begin(), e.n.end());
-    if (e.n[2] == e.n[3] && distinct.size() == 3)
-      unimplemented.add("*ELEMENT_SHELL: triangular shells (N3 = N4) are not implemented",
-                        "*ELEMENT_SHELL " + id + " is a triangle (N3 = N4), which is not implemented",
-                        id, src);
-    else if (distinct.size() != 4)
+    // A triangle (N3 = N4, three distinct nodes) runs as the C0 triangle (check_parts refuses it
+    // in a rigid part).
+    if (e.n[2] == e.n[3] && distinct.size() == 3) continue;
+    if (distinct.size() != 4)
       bad.add("*ELEMENT_SHELL: degenerate quadrilaterals (repeated nodes)",
               "*ELEMENT_SHELL " + id + " repeats a node", id, src);
   }

@@ -18,6 +18,8 @@ namespace {
 /// kinds of element it has: the order build_elements builds them in.
 struct PartUse {
   bool solids = false, shells = false;
+  const model::ShellElement* triangle = nullptr;  ///< the part's first triangular shell (N3 = N4)
+  bool quads = false;                             ///< the part has quadrilateral shells
 };
 
 std::vector<std::pair<Id, PartUse>> parts_in_use(const model::Model& m) {
@@ -29,7 +31,12 @@ std::vector<std::pair<Id, PartUse>> parts_in_use(const model::Model& m) {
     return out[it->second].second;
   };
   for (const auto& e : m.solids) use(e.pid).solids = true;
-  for (const auto& e : m.shells) use(e.pid).shells = true;
+  for (const auto& e : m.shells) {
+    PartUse& u = use(e.pid);
+    u.shells = true;
+    if (e.n[2] != e.n[3]) u.quads = true;
+    else if (!u.triangle) u.triangle = &e;
+  }
   return out;
 }
 
@@ -46,10 +53,17 @@ auto find(const Map& map, Id id) -> decltype(map.begin()->second) {
   return f == map.end() ? nullptr : f->second;
 }
 
-void check_shell_section(const model::SectionShell& sec, Problems& p) {
-  if (sec.elform != 2 && sec.elform != 0)
-    p.todo(describe(sec.src) + ": *SECTION_SHELL ELFORM " + std::to_string(sec.elform) +
-           " is not implemented (only 2, Belytschko-Tsay)");
+/// The section of a shell part with quadrilaterals (`quads`) and/or triangles: ELFORM 2 (0) runs
+/// quads as Belytschko-Tsay and triangles as the C0 triangle, as LS-DYNA does; ELFORM 4 (the C0
+/// triangle) is taken for a part of triangles only.
+void check_shell_section(const model::SectionShell& sec, bool quads, Problems& p) {
+  if (sec.elform == 4 && quads)
+    p.todo(describe(sec.src) + ": field ELFORM of *SECTION_SHELL: 4 (C0 triangle) on a part with quadrilateral "
+                               "shells is not implemented (ELFORM 2 runs quadrilaterals as Belytschko-Tsay and "
+                               "triangles, N3 = N4, as C0 triangles)");
+  else if (sec.elform != 2 && sec.elform != 0 && sec.elform != 4)
+    p.todo(describe(sec.src) + ": field ELFORM of *SECTION_SHELL: " + std::to_string(sec.elform) +
+           " is not implemented (only 2, Belytschko-Tsay quadrilaterals and C0 triangles, and 4, C0 triangles)");
   if (!(sec.t[0] > 0.0))
     p.bad(describe(sec.src) + ": field T1 of *SECTION_SHELL must be positive (got " + std::to_string(sec.t[0]) +
           ")");
@@ -72,9 +86,9 @@ void check_rigid(const model::MatRigid& mat, Problems& p) {
 }
 
 /// A deformable part of shells: its section, the material's shell law, the hourglass type.
-void check_shell_part(const model::Part& part, const model::SectionShell* sec, const MaterialLaws& laws, int ihq,
-                      Problems& p) {
-  if (sec) check_shell_section(*sec, p);
+void check_shell_part(const model::Part& part, const model::SectionShell* sec, bool quads, const MaterialLaws& laws,
+                      int ihq, Problems& p) {
+  if (sec) check_shell_section(*sec, quads, p);
   if (!laws.shell)
     p.todo(describe(part.src) + ": part " + std::to_string(part.pid) +
            " combines shells with " + laws.keyword + ", which is not implemented");
@@ -238,9 +252,14 @@ void check_parts(const model::Model& m, Problems& p) {
       if (const model::SectionSolid* sec = use.solids ? find(ssec, part->secid) : nullptr; sec && sec->elform == 10)
         p.todo(describe(sec->src) + ": field ELFORM of *SECTION_SOLID: 10 (tetrahedra) in *MAT_RIGID part " +
                std::to_string(pid) + " is not implemented (rigid parts take hexahedra and shells)");
-      if (shell_sec) check_shell_section(*shell_sec, p);
+      if (use.triangle)
+        p.todo(model::element_source(m, *use.triangle),
+               "*ELEMENT_SHELL " + std::to_string(use.triangle->id) + " of rigid part " + std::to_string(pid) +
+                   " is a triangle (N3 = N4): triangles in rigid parts are not implemented (deformable "
+                   "shell parts run them as C0 triangles)");
+      if (shell_sec) check_shell_section(*shell_sec, use.quads, p);
     } else if (use.shells) {
-      check_shell_part(*part, shell_sec, laws, ihq, p);
+      check_shell_part(*part, shell_sec, use.quads, laws, ihq, p);
     } else {
       check_solid_part(*part, find(ssec, part->secid), laws, ihq, p);
     }

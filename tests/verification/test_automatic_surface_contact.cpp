@@ -30,10 +30,12 @@ struct PlateCase {
   bool rotated = false;
   /// The card: two-sided automatic, or one way (the block's nodes on the plate: a forming tool).
   model::ContactForm form = model::ContactForm::automatic_surface_to_surface;
+  bool triangles = false;  ///< each plate quad split into two triangles (N3 = N4) on its diagonal
   std::string name() const {
     const bool two_sided = form == model::ContactForm::automatic_surface_to_surface;
     return std::string(two_sided ? "s2s_" : "forming_") + (below ? "below" : "above") +
-           (normal_down ? "_normal_down" : "_normal_up") + (rotated ? "_rotated" : "");
+           (normal_down ? "_normal_down" : "_normal_up") + (rotated ? "_rotated" : "") +
+           (triangles ? "_triangles" : "");
   }
 };
 
@@ -72,7 +74,13 @@ PlateResult run_plate(const PlateCase& pc) {
     for (int i = 0; i < n; ++i) {
       const Id a = first + i + (n + 1) * k, b = a + 1, c = b + (n + 1), d = a + (n + 1);
       // Counter-clockwise seen from +y (normal up) is a, d, c, b.
-      m.shells.push_back({eid++, 2, pc.normal_down ? std::array<Id, 4>{a, b, c, d} : std::array<Id, 4>{a, d, c, b}, {}});
+      const std::array<Id, 4> quad = pc.normal_down ? std::array<Id, 4>{a, b, c, d} : std::array<Id, 4>{a, d, c, b};
+      if (pc.triangles) {  // the two halves on the diagonal a-c, in the quad's orientation
+        m.shells.push_back({eid++, 2, {quad[0], quad[1], quad[2], quad[2]}, {}});
+        m.shells.push_back({eid++, 2, {quad[0], quad[2], quad[3], quad[3]}, {}});
+      } else {
+        m.shells.push_back({eid++, 2, quad, {}});
+      }
     }
   m.node_sets.push_back({3, "plate", plate, {}});
   m.part_sets.push_back({4, "loaded", {1}, {}});
@@ -141,6 +149,10 @@ std::vector<PlateCase> plate_cases() {
     for (bool below : {false, true})
       for (bool down : {false, true})
         for (bool rotated : {false, true}) out.push_back({below, down, rotated, form});
+  // Triangular shells (the C0 triangle): the segment is the triangle (its third node repeated).
+  for (bool below : {false, true})
+    for (bool rotated : {false, true})
+      out.push_back({below, below, rotated, model::ContactForm::automatic_surface_to_surface, true});
   return out;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
-/// A block of 4-node Belytschko-Tsay shells of one part, one plane-stress law and one section.
+/// A block of 4-node Belytschko-Tsay shells of one part, one plane-stress law and one section,
+/// and of its 3-node C0 triangles (N3 = N4 in the deck; element/shell_c0tri.hpp), which LS-DYNA
+/// runs in a form-2 part: the block holds its quadrilaterals, then its triangles.
 ///
 /// The law (material/shell_material.hpp) works in the element's co-rotational frame: its state,
 /// stored per element and through-thickness point, turns with the element (Belytschko, Lin & Tsay
@@ -16,6 +18,7 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/shell_bt.hpp"
+#include "slideline/element/shell_c0tri.hpp"
 #include "slideline/material/elastic_shell.hpp"
 #include "slideline/material/shell_material.hpp"
 
@@ -29,7 +32,7 @@ class BasicShellBlock final : public ElementBlock {
   using State = typename Law::State;
 
   /// `connectivity`: 4 internal node indices per element (counter-clockwise seen from the side
-  /// the normal points to); `damping.beta` > 0 adds the stiffness-proportional damping stress
+  /// the normal points to; a triangle repeats its third node, N3 = N4); `damping.beta` > 0 adds the stiffness-proportional damping stress
   /// beta (C : strain rate) with the law's plane-stress and transverse-shear moduli.
   BasicShellBlock(Id part_id, Law material, ShellSection section,
                   std::vector<Index> connectivity, std::vector<Id> element_ids,
@@ -54,6 +57,7 @@ class BasicShellBlock final : public ElementBlock {
                        ": the stiffness damping coefficient beta must not be negative");
     if (conn_.size() != 4 * ids_.size())
       throw InputError("shell part " + std::to_string(part_id_) + ": connectivity needs 4 nodes per element");
+    move_triangles_last();
     const Index ne = element_count();
     const Index nc = chunk_count(ne);
     chunk_dt_.assign(nc, 0.0);
@@ -70,7 +74,11 @@ class BasicShellBlock final : public ElementBlock {
   std::string kind() const override { return "shell_bt"; }
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return static_cast<Index>(ids_.size()); }
-  BlockTopology topology() const override { return {quad4_topology, element_count(), sec_.thickness}; }
+  BlockTopology topology() const override {
+    return BlockTopology(quad4_topology, nq_, sec_.thickness).add(tri3_topology, element_count() - nq_, sec_.thickness);
+  }
+  /// Number of quadrilaterals: elements 0 .. nq - 1; the triangles follow.
+  Index quad_count() const { return nq_; }
   std::span<const Index> connectivity() const override { return conn_; }
   Id element_id(Index e) const override { return ids_[e]; }
   Id smallest_step_element() const override {
@@ -91,7 +99,8 @@ class BasicShellBlock final : public ElementBlock {
   void initialize(NodalFields& nodes) override {
     const Index ne = element_count();
     const Real t = sec_.thickness;
-    for (Index e = 0; e < ne; ++e) {
+    for (Index e = nq_; e < ne; ++e) initialize_triangle(nodes, e);  // rho A t / 3 per node
+    for (Index e = 0; e < nq_; ++e) {
       const shell_bt::LocalGeometry g = shell_bt::local_geometry(gather(nodes.x0, e));
       if (!(g.area > 0.0))
         throw InputError("shell element " + std::to_string(ids_[e]) + " of part " +
@@ -163,14 +172,25 @@ class BasicShellBlock final : public ElementBlock {
   template <bool damped>
   void compute_chunks(const NodalFields& nodes, Real dt, CornerBuffer& corners) {
     const Real c = mat_.wave_speed();
-    const Real rho = mat_.density();
-    const Real t = sec_.thickness;
     parallel_for_chunks(element_count(), [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
       Index dtarg = b;
       Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
       Index bad = -1;
       for (Index e = b; e < end; ++e) {
+        if (e >= nq_) {
+          const TriangleResult tr = triangle_forces<damped>(nodes, dt, e, corners);
+          if (tr.bad && bad < 0) bad = e;
+          if (tr.bad) continue;
+          p_visc += tr.p_visc;
+          p_damp += tr.p_damp;
+          p_all += tr.p_all;
+          if (tr.dt < dtmin) {
+            dtmin = tr.dt;
+            dtarg = e;
+          }
+          continue;
+        }
         const shell_bt::NodeMat X = gather(nodes.x, e);
         const shell_bt::NodeMat V = gather(nodes.v, e);
         const shell_bt::NodeMat W = gather(nodes.omega, e);
@@ -189,18 +209,10 @@ class BasicShellBlock final : public ElementBlock {
         }
         const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
         shell_bt::Resultants r;
-        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r);
+        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r, sec_.shear_factor);
         // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
         const Real len = shell_bt::characteristic_length(X, g.area);
-        const Real trd = sr.membrane[0] + sr.membrane[1];
-        Real qdt = 0.0;
-        if (trd < 0.0) {
-          const Real q = rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
-          r.n[0] -= q * t;
-          r.n[1] -= q * t;
-          p_visc += -q * trd * g.area * t;
-          qdt = bulk_.linear * c + bulk_.quadratic * len * (-trd);
-        }
+        Real qdt = bulk_viscosity(sr, len, g.area, r, p_visc);
         if constexpr (damped) {
           p_damp += damp * g.area;
           qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
@@ -231,14 +243,135 @@ class BasicShellBlock final : public ElementBlock {
     });
   }
 
+  /// Bulk viscosity on the membrane dilatation rate of `sr` (a pressure over the thickness) of an
+  /// element of characteristic length `len` and area `area`: subtracted from the resultants `r`,
+  /// its power added to `p_visc`; returns its term of the step's (len / (q + sqrt(q^2 + c^2))) q.
+  Real bulk_viscosity(const shell_bt::StrainRates& sr, Real len, Real area, shell_bt::Resultants& r,
+                      Real& p_visc) const {
+    const Real trd = sr.membrane[0] + sr.membrane[1];
+    if (!(trd < 0.0)) return 0.0;
+    const Real c = mat_.wave_speed();
+    const Real t = sec_.thickness;
+    const Real q = mat_.density() * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
+    r.n[0] -= q * t;
+    r.n[1] -= q * t;
+    p_visc += -q * trd * area * t;
+    return bulk_.linear * c + bulk_.quadratic * len * (-trd);
+  }
+
+  /// What one triangle adds to its chunk's sums.
+  struct TriangleResult {
+    Real dt = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
+    bool bad = false;
+  };
+
+  /// Forces and moments of triangle e (e >= nq_) into its corner slots, as compute_chunks does for
+  /// a quad (mid-step geometry for the rates, the geometry at x^n for the forces), without
+  /// hourglass control (the element has no spurious mode; shell_c0tri.hpp).
+  template <bool damped>
+  TriangleResult triangle_forces(const NodalFields& nodes, Real dt, Index e, CornerBuffer& corners) {
+    TriangleResult out;
+    const shell_c0tri::NodeMat X = gather_triangle(nodes.x, e);
+    const shell_c0tri::NodeMat V = gather_triangle(nodes.v, e);
+    const shell_c0tri::NodeMat W = gather_triangle(nodes.omega, e);
+    const shell_c0tri::LocalGeometry g = shell_c0tri::local_geometry(X);
+    const shell_c0tri::NodeMat Xm = dt > 0.0 ? shell_c0tri::NodeMat(X - 0.5 * dt * V) : X;
+    const shell_c0tri::LocalGeometry gm = dt > 0.0 ? shell_c0tri::local_geometry(Xm) : g;
+    if (!(g.area > 0.0) || !(gm.area > 0.0)) {
+      out.bad = true;
+      return out;
+    }
+    const shell_c0tri::StrainRates sr = shell_c0tri::strain_rates(gm, V * gm.e, W * gm.e);
+    shell_bt::Resultants r;
+    const Real kappa = shell_c0tri::stabilised_shear_factor(gm, sec_.shear_factor, sec_.thickness);
+    [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr.s, dt, r, kappa);
+    // The shear's rotational part: elastic, kappa G t I_p / A per unit area (shell_c0tri.hpp).
+    const Real kc = kappa * mat_.shear_modulus() * sec_.thickness * gm.polar;
+    Real& c_int = tri_c_[static_cast<std::size_t>(e - nq_)];
+    c_int += dt * sr.shear_c;
+    Real qc = kc * c_int;
+    const Real c = mat_.wave_speed();
+    const PlaneStressStiffness cs = mat_.stiffness();
+    const Real len = shell_c0tri::characteristic_length(g, cs.c11, cs.g);
+    // The bending / shear modes' bound, as a length for the same formula (2 c / omega).
+    const Real t = sec_.thickness;
+    const Real m_node = mat_.density() * area0_[e] * t / 3.0;
+    const Real w2 = shell_c0tri::bending_omega2_bound(g, cs.c11, cs.g, kappa, t, m_node,
+                                                      m_node * std::max(t * t, area0_[e]) / 12.0);
+    const Real len_dt = std::min(len, 2.0 * c / std::sqrt(w2));
+    Real qdt = bulk_viscosity(sr.s, len, g.area, r, out.p_visc);
+    if constexpr (damped) {
+      const Real dc = damping_.beta * kc * sr.shear_c;
+      qc += dc;
+      out.p_damp = (damp + dc * sr.shear_c) * g.area;
+      qdt += damping_.beta * c * c / len;
+    }
+    shell_c0tri::NodeMat fl, ml;
+    shell_c0tri::resultant_forces(g, r, qc, fl, ml);
+    const shell_c0tri::NodeMat f = fl * g.e.transpose();
+    const shell_c0tri::NodeMat m = ml * g.e.transpose();
+    out.bad = !f.allFinite() || !m.allFinite();
+    out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
+    out.dt = len_dt / (qdt + std::sqrt(qdt * qdt + c * c));
+    const Index s0 = force_slot_base() + 4 * nq_ + 3 * (e - nq_);
+    const Index m0 = moment_slot_base() + 4 * nq_ + 3 * (e - nq_);
+    for (int k = 0; k < 3; ++k) {
+      corners.force.x[s0 + k] = f(k, 0);
+      corners.force.y[s0 + k] = f(k, 1);
+      corners.force.z[s0 + k] = f(k, 2);
+      corners.moment.x[m0 + k] = m(k, 0);
+      corners.moment.y[m0 + k] = m(k, 1);
+      corners.moment.z[m0 + k] = m(k, 2);
+    }
+    return out;
+  }
+
+  /// Triangle e's lumped mass rho A t / 3 per node and the quad's rotary inertia scaling.
+  void initialize_triangle(NodalFields& nodes, Index e) {
+    const Real t = sec_.thickness;
+    const shell_c0tri::LocalGeometry g = shell_c0tri::local_geometry(gather_triangle(nodes.x0, e));
+    if (!(g.area > 0.0))
+      throw InputError("shell element " + std::to_string(ids_[e]) + " of part " + std::to_string(part_id_) +
+                       " (a triangle, N3 = N4) has zero area (its three nodes are on a line)");
+    area0_[e] = g.area;
+    const Real m = mat_.density() * g.area * t / 3.0;
+    const Real j = m * std::max(t * t, g.area) / 12.0;
+    const Index* c = triangle_nodes(e);
+    for (int k = 0; k < 3; ++k) {
+      nodes.mass[c[k]] += m;
+      nodes.rot_inertia[c[k]] += j;
+      nodes.has_rotation[c[k]] = 1;
+    }
+  }
+
+  /// Moves the triangles (N3 = N4) after the quadrilaterals, each group in the deck's order, and
+  /// stores a triangle's three nodes only.
+  void move_triangles_last() {
+    std::vector<Index> conn, tri;
+    std::vector<Id> ids, tri_ids;
+    for (std::size_t e = 0; e < ids_.size(); ++e) {
+      const Index* n = conn_.data() + 4 * e;
+      const bool triangle = n[2] == n[3];
+      (triangle ? tri : conn).insert((triangle ? tri : conn).end(), n, n + (triangle ? 3 : 4));
+      (triangle ? tri_ids : ids).push_back(ids_[e]);
+    }
+    nq_ = static_cast<Index>(ids.size());
+    if (tri_ids.empty()) return;
+    conn.insert(conn.end(), tri.begin(), tri.end());
+    ids.insert(ids.end(), tri_ids.begin(), tri_ids.end());
+    conn_ = std::move(conn);
+    ids_ = std::move(ids);
+    tri_c_.assign(tri_ids.size(), 0.0);
+  }
+
   /// Advances the law's state at every through-thickness point of element e with the strain rates
   /// `sr` over dt and integrates the stresses into the resultants `r` (which start at zero). When
   /// damped, adds the Rayleigh stiffness-damping stress beta (C : strain rate) to the resultants
   /// only, and returns its power per unit area.
   template <bool damped>
-  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r) {
+  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r,
+                           Real kappa) {
     const Real half_t = 0.5 * sec_.thickness;
-    const Real kappa = sec_.shear_factor;
     [[maybe_unused]] const Real beta = damping_.beta;
     [[maybe_unused]] const PlaneStressStiffness cs = mat_.stiffness();
     [[maybe_unused]] const Real gs = kappa * cs.g;
@@ -361,12 +494,12 @@ class BasicShellBlock final : public ElementBlock {
     const int n = rule_.n;
     const int lo = (n - 1) / 2, hi = n / 2;  // the middle point(s)
     for (Index e = 0; e < element_count(); ++e) {
-      const shell_bt::LocalGeometry g = shell_bt::local_geometry(gather(nodes.x, e));
+      const Mat3 ge = frame(nodes.x, e);
       const State* st = state_.data() + static_cast<std::size_t>(e) * n;
       CellOutput& c = out[static_cast<std::size_t>(e)];
-      c.stress_bottom = global_stress(g.e, stress(e, 0));
-      c.stress_top = global_stress(g.e, stress(e, n - 1));
-      const SymTensor6 a = global_stress(g.e, stress(e, lo)), b = global_stress(g.e, stress(e, hi));
+      c.stress_bottom = global_stress(ge, stress(e, 0));
+      c.stress_top = global_stress(ge, stress(e, n - 1));
+      const SymTensor6 a = global_stress(ge, stress(e, lo)), b = global_stress(ge, stress(e, hi));
       for (int k = 0; k < 6; ++k) c.stress[k] = 0.5 * (a[k] + b[k]);
       c.plastic_strain = 0.5 * (plastic_strain_of(st[lo]) + plastic_strain_of(st[hi]));
       c.energy_density = 0.0;
@@ -388,6 +521,16 @@ class BasicShellBlock final : public ElementBlock {
   shell_bt::NodeMat gather(const Vec3Field& f, Index e) const {
     return gather_rows<4>(f, conn_.data() + 4 * static_cast<std::size_t>(e));
   }
+  const Index* triangle_nodes(Index e) const {
+    return conn_.data() + 4 * static_cast<std::size_t>(nq_) + 3 * static_cast<std::size_t>(e - nq_);
+  }
+  shell_c0tri::NodeMat gather_triangle(const Vec3Field& f, Index e) const {
+    return gather_rows<3>(f, triangle_nodes(e));
+  }
+  /// Element e's co-rotational frame (columns e1, e2, e3) at the coordinates `x`.
+  Mat3 frame(const Vec3Field& x, Index e) const {
+    return e < nq_ ? shell_bt::local_geometry(gather(x, e)).e : shell_c0tri::local_geometry(gather_triangle(x, e)).e;
+  }
 
   Id part_id_;
   Law mat_;
@@ -400,6 +543,8 @@ class BasicShellBlock final : public ElementBlock {
   std::vector<Id> ids_;
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
   std::vector<Real> area0_;
+  Index nq_ = 0;              ///< quadrilaterals; the triangles follow them
+  std::vector<Real> tri_c_;   ///< per triangle, the time integral of the shear's rotational part c
   std::vector<State> state_;  ///< the law's state, element-major, then point
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step

@@ -92,26 +92,54 @@ TEST(ValidateModel, TetrahedralMeshIsOneLineNamingTheElementKind) {
 
 TEST(ValidateModel, ShellTrianglesAndMixedProblems) {
   model::Model m = read_keyword_file(deck("unit_cube.k"));
-  // In a part of their own (its card is check_references' to ask for): shells in the solid part 1
-  // would add "part 1 has both solid and shell elements".
+  // Triangles (N3 = N4) in an elastic shell part pass (they run as C0 triangles); a shell with
+  // another repeated node does not.
+  m.materials.push_back(model::MatElastic{2, 1.0, 1e5, 0.3, "plate", {}});
+  model::SectionShell sec;
+  sec.secid = 2;
+  sec.t = {0.1, 0.1, 0.1, 0.1};
+  sec.src = {"s.k", 30};
+  m.shell_sections.push_back(sec);
+  m.parts.push_back({2, "plate", 2, 2, 0, 0, {}});
   m.shells.push_back({7, 2, {1, 2, 3, 3}, 40, 0});
-  m.shells.push_back({8, 2, {1, 2, 3, 3}, 41, 0});
-  try {
-    validate_model(m);
-    FAIL() << "no exception";
-  } catch (const NotImplementedError& e) {
-    EXPECT_EQ(std::string(e.what()), deck("unit_cube.k") +
-                                         ":40: *ELEMENT_SHELL: triangular shells (N3 = N4) are not implemented: 2 "
-                                         "elements (first: 7, 8)");
-  }
-  std::get<model::MatElastic>(m.materials[0]).pr = 0.7;  // now a bad input as well: InputError, both listed
+  m.shells.push_back({8, 2, {1, 3, 4, 4}, 41, 0});
+  EXPECT_NO_THROW(validate_model(m));
+  m.shells.push_back({9, 2, {1, 1, 3, 4}, 42, 0});
   try {
     validate_model(m);
     FAIL() << "no exception";
   } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), deck("unit_cube.k") + ":42: *ELEMENT_SHELL 9 repeats a node");
+  }
+  m.shells.pop_back();
+  // ELFORM 4 (C0 triangle) on a part of triangles passes; on a part with a quadrilateral, and any
+  // other form, are refused naming the section's line and field.
+  m.shell_sections.back().elform = 4;
+  EXPECT_NO_THROW(validate_model(m));
+  for (int form : {4, 16}) {
+    m.shell_sections.back().elform = form;
+    if (form == 4) m.shells.push_back({9, 2, {1, 2, 3, 4}, 42, 0});
+    try {
+      validate_model(m);
+      FAIL() << "no exception";
+    } catch (const NotImplementedError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("s.k:30: field ELFORM of *SECTION_SHELL: " + std::to_string(form)), std::string::npos) << what;
+    }
+  }
+  // Triangles in a rigid part are refused, naming the element and its line (the deck's SPC on
+  // node 1, now a rigid part's node, is reported too, so the error is the input one).
+  m.shells.pop_back();
+  m.shell_sections.back().elform = 2;
+  m.materials.back() = model::MatRigid{2, 1.0, 1e5, 0.3, 0.0, 0, 0, "rigid", {}};
+  try {
+    validate_model(m);
+    FAIL() << "no exception";
+  } catch (const std::exception& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("field PR of *MAT_ELASTIC must be in (-1, 0.5) (got 0.7)\n"), std::string::npos) << what;
-    EXPECT_NE(what.find("triangular shells"), std::string::npos) << what;
+    EXPECT_NE(what.find(deck("unit_cube.k") + ":40: *ELEMENT_SHELL 7 of rigid part 2 is a triangle (N3 = N4)"),
+              std::string::npos)
+        << what;
   }
 }
 
