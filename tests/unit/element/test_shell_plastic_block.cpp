@@ -63,7 +63,10 @@ struct Plate {
   void rotate(const Vec3& axis, Real angle, int n) {
     const Real dt = 1e-3, w = angle / (n * dt);
     std::vector<Vec3> x(4), v(4);
-    for (Index k = 0; k < 4; ++k) nodes.omega.set(k, w * axis);  // the shell's rotation rate
+    // The chords' rotation rate about the mid-step geometry (Cayley: 2 tan(w dt / 2) / dt), so that
+    // the nodal rotations turn with the chords and the transverse shear rate vanishes.
+    const Real w_chord = 2.0 * std::tan(0.5 * w * dt) / dt;
+    for (Index k = 0; k < 4; ++k) nodes.omega.set(k, w_chord * axis);
     for (int s = 1; s <= n; ++s) {
       // Chord velocities: x^s - x^{s-1} = dt v, so the mid-step geometry is the chord's midpoint.
       const Mat3 r1 = Eigen::AngleAxis<Real>(w * s * dt, axis).toRotationMatrix();
