@@ -12,6 +12,7 @@
 #include "slideline/element/hex_block.hpp"
 #include "slideline/material/j2_plasticity.hpp"
 #include "slideline/material/piecewise_plasticity.hpp"
+#include "test_support/bilinear_curve.hpp"
 #include "test_support/hex_grid.hpp"
 #include "test_support/staged_simulation.hpp"
 
@@ -19,25 +20,7 @@ using namespace slideline;
 
 namespace {
 
-/// The uniaxial bilinear curve with mixed hardening, in closed form along a path that loads to
-/// strain e1 > 0 and then reverses (strains below e1 after the peak).
-struct Bilinear {
-  Real e, et, sy, beta;
-  Real ep() const { return e * et / (e - et); }
-  /// Monotonic loading.
-  Real loading(Real eps) const { return eps <= sy / e ? e * eps : sy + et * (eps - sy / e); }
-  /// After loading to e1, unloading to eps <= e1: elastic until the reverse yield stress (isotropic:
-  /// -sigma_1; kinematic: sigma_1 - 2 sigma_y; mixed: the back stress minus the grown radius), then
-  /// slope Et.
-  Real reversed(Real e1, Real eps) const {
-    const Real s1 = loading(e1);
-    const Real eps_p = e1 - s1 / e;
-    const Real back = (1.0 - beta) * ep() * eps_p, radius = sy + beta * ep() * eps_p;
-    const Real s_rev = back - radius;
-    const Real s_el = s1 + e * (eps - e1);
-    return s_el >= s_rev ? s_el : s_rev + et * (eps - (e1 - (s1 - s_rev) / e));
-  }
-};
+using test_support::Bilinear;
 
 /// A bar of n x 1 x 1 cubic hexahedra of side 1 along x, of J2Plasticity with E = 1000, nu = 0.3,
 /// sigma_y = 1 (or of `piecewise`); symmetry supports on x = 0, y = 0, z = 0 and the end x = n driven in x by a

@@ -49,7 +49,7 @@ enum class ThicknessRuleKind : std::uint8_t {
 /// and the part's viscous hourglass coefficient and membrane bulk viscosity.
 struct ShellSection {
   Real thickness = 0.0;  ///< length
-  int nip = 5;           ///< through-thickness points (Gauss 1..5, Lobatto 2..5)
+  int nip = 5;           ///< through-thickness points (Gauss 1..10, Lobatto 2..10)
   shell_bt::ThicknessRuleKind rule = shell_bt::ThicknessRuleKind::gauss;
   Real shear_factor = 5.0 / 6.0;  ///< SHRF: scales the transverse shear modulus
   /// Viscous hourglass coefficient: fraction of the critical damping of each hourglass mode

@@ -81,7 +81,8 @@ class HexBlock final : public ElementBlock {
 
   /// ElementBlock::cell_outputs: the law's stress at the current geometry (its state advanced
   /// over a zero step on a copy, so the output never moves the law), the state's effective plastic
-  /// strain and, for a law with a strain energy W(F) (`energy_density`), W per reference volume.
+  /// strain and, for a law with a strain energy W(F) (`energy_density`), W per reference volume; for a
+  /// law with a state energy (`energy_density(state)`: the J2 laws' elastic energy plus plastic work), that.
   void cell_outputs(const NodalFields& nodes, std::span<CellOutput> out) const override {
     const Index ne = element_count();
     Tensor3<Lanes> no_rate;
@@ -96,6 +97,7 @@ class HexBlock final : public ElementBlock {
       const Tensor3<Lanes> sigma = mat_.update(copy, F, no_rate, 0.0);
       Lanes w = Lanes::Zero();
       if constexpr (requires { { mat_.energy_density(F) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(F);
+      else if constexpr (requires { { mat_.energy_density(held) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(held);
       const int valid = static_cast<int>(std::min<Index>(kLanes, ne - e0));
       for (int l = 0; l < valid; ++l) {
         CellOutput& c = out[static_cast<std::size_t>(e0 + l)];

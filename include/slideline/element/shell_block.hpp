@@ -488,8 +488,9 @@ class BasicShellBlock final : public ElementBlock {
 
   /// ElementBlock::cell_outputs: global stress at the mid surface (the middle through-thickness
   /// point; the mean of the two middle points for an even count) and at the outermost points,
-  /// the plastic strain at the mid surface (the law state's `eps`, where it has one) and the
-  /// thickness average of the law's energy density (`energy_density(state, shear factor)`).
+  /// the largest plastic strain of the through-thickness points (the law state's `eps`, where it
+  /// has one: in bending the mid surface stays elastic) and the thickness average of the law's
+  /// energy density (`energy_density(state, shear factor)`).
   void cell_outputs(const NodalFields& nodes, std::span<CellOutput> out) const override {
     const int n = rule_.n;
     const int lo = (n - 1) / 2, hi = n / 2;  // the middle point(s)
@@ -501,7 +502,8 @@ class BasicShellBlock final : public ElementBlock {
       c.stress_top = global_stress(ge, stress(e, n - 1));
       const SymTensor6 a = global_stress(ge, stress(e, lo)), b = global_stress(ge, stress(e, hi));
       for (int k = 0; k < 6; ++k) c.stress[k] = 0.5 * (a[k] + b[k]);
-      c.plastic_strain = 0.5 * (plastic_strain_of(st[lo]) + plastic_strain_of(st[hi]));
+      c.plastic_strain = 0.0;
+      for (int ip = 0; ip < n; ++ip) c.plastic_strain = std::max(c.plastic_strain, plastic_strain_of(st[ip]));
       c.energy_density = 0.0;
       if constexpr (requires { { mat_.energy_density(st[0], sec_.shear_factor) } -> std::convertible_to<Real>; })
         for (int ip = 0; ip < n; ++ip) c.energy_density += 0.5 * rule_.w[ip] * mat_.energy_density(st[ip], sec_.shear_factor);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
@@ -134,15 +135,18 @@ inline void resultant_forces(const LocalGeometry& g, const Resultants& r, NodeMa
 /// Through-thickness integration rule on [-1, 1] (weights sum to 2).
 struct ThicknessRule {
   using Kind = ThicknessRuleKind;  // gauss, lobatto (block_options.hpp)
-  static constexpr int kMaxPoints = 5;
+  static constexpr int kMaxPoints = 10;
   int n = 0;
   std::array<Real, kMaxPoints> xi{};
   std::array<Real, kMaxPoints> w{};
 
-  /// The rule with `nip` points (Gauss 1..5, Lobatto 2..5). Throws InputError otherwise.
+  /// The rule with `nip` points (Gauss 1..10, Lobatto 2..10, LS-DYNA's ranges). Throws InputError
+  /// otherwise. Up to 5 points the abscissae and weights are the closed forms; beyond, the roots of
+  /// P_n (Gauss) or of (1 - x^2) P'_{n-1} (Lobatto) by Newton's method, to round-off.
   static ThicknessRule make(int nip, Kind kind) {
     ThicknessRule r;
     r.n = nip;
+    if (nip > 5 && nip <= kMaxPoints) return computed(nip, kind);
     if (kind == Kind::gauss) {
       switch (nip) {
         case 1: r.xi = {0.0}; r.w = {2.0}; return r;
@@ -173,7 +177,52 @@ struct ThicknessRule {
       }
     }
     throw InputError("shell: unsupported number of through-thickness integration points " +
-                     std::to_string(nip) + (kind == Kind::gauss ? " (Gauss: 1..5)" : " (Lobatto: 2..5)"));
+                     std::to_string(nip) + (kind == Kind::gauss ? " (Gauss: 1..10)" : " (Lobatto: 2..10)"));
+  }
+
+ private:
+  /// Legendre P_n(x) and P_{n-1}(x) by the three-term recurrence.
+  static std::pair<Real, Real> legendre(int n, Real x) {
+    Real p0 = 1.0, p1 = x;
+    for (int k = 2; k <= n; ++k) {
+      const Real p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+      p0 = p1;
+      p1 = p2;
+    }
+    return {p1, p0};
+  }
+  /// Gauss: x_i the roots of P_n, w_i = 2 / ((1 - x^2) P_n'(x)^2). Lobatto: +-1 and the roots of
+  /// P'_{n-1}, w_i = 2 / (n (n - 1) P_{n-1}(x)^2).
+  static ThicknessRule computed(int n, Kind kind) {
+    ThicknessRule r;
+    r.n = n;
+    const Real pi = 3.14159265358979323846;
+    const int m = kind == Kind::gauss ? n : n - 1;  // the Legendre degree whose roots (or turns) are used
+    for (int i = 0; i < n; ++i) {
+      Real x = -std::cos(pi * (i + (kind == Kind::gauss ? 0.75 : 0.0)) / (m + (kind == Kind::gauss ? 0.5 : 0.0)));
+      if (kind == Kind::lobatto && (i == 0 || i == n - 1)) {
+        r.xi[i] = i == 0 ? -1.0 : 1.0;
+        r.w[i] = 2.0 / (n * (n - 1.0));
+        continue;
+      }
+      for (int it = 0; it < 100; ++it) {
+        const auto [p, q] = legendre(m, x);
+        const Real dp = m * (x * p - q) / (x * x - 1.0);  // P_m'
+        Real step;
+        if (kind == Kind::gauss) {
+          step = p / dp;
+        } else {  // Newton on P_m' using P_m'' = (2 x P_m' - m (m + 1) P_m) / (1 - x^2)
+          step = dp / ((2.0 * x * dp - m * (m + 1.0) * p) / (1.0 - x * x));
+        }
+        x -= step;
+        if (std::abs(step) < 1e-16) break;
+      }
+      const auto [p, q] = legendre(m, x);
+      const Real dp = m * (x * p - q) / (x * x - 1.0);
+      r.xi[i] = x;
+      r.w[i] = kind == Kind::gauss ? 2.0 / ((1.0 - x * x) * dp * dp) : 2.0 / (n * (n - 1.0) * p * p);
+    }
+    return r;
   }
 };
 

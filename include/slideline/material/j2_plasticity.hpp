@@ -62,6 +62,30 @@ class J2Plasticity : public IsotropicModuli {
     return 1.0 + lane_math::power(rate / k_.rate_c, 1.0 / k_.rate_p);
   }
 
+  /// The yield stress phi (sigma_0 + beta Ep eps) at the rate factor `phi` and the effective
+  /// plastic strain `eps` (force/length^2).
+  template <class T>
+  T yield_radius(const T& phi, const T& eps) const {
+    return phi * (k_.yield + k_.beta * ep_ * eps);
+  }
+  /// The yield stress after a plastic increment `d_eps` from `eps` at the effective total strain
+  /// rate `rate` (1/time); dt unused (the J2 plane-stress return, shell_plasticity.hpp, asks every
+  /// law the same way).
+  Real flow_stress(Real eps, Real d_eps, Real rate, Real /*dt*/) const {
+    return yield_radius(rate_factor(rate), eps + d_eps);
+  }
+  /// The kinematic hardening modulus (1 - beta) Ep: the back stress moves by it times d_eps along
+  /// the flow direction.
+  Real kinematic_modulus() const { return (1.0 - k_.beta) * ep_; }
+  /// Whether the yield stress depends on the strain rate.
+  bool rate_dependent() const { return k_.rate_c > 0.0; }
+
+  /// Internal energy per unit volume of a state (j2_return.hpp), force/length^2.
+  template <class T>
+  T energy_density(const State<T>& s) const {
+    return j2_energy_density(s, shear_modulus(), bulk_modulus());
+  }
+
   /// The SolidMaterial step: advances the state over dt by D (1/time), rotated into the frame of
   /// F's polar rotation (j2_return.hpp), and returns the Cauchy stress R sigma_hat R^T.
   template <class T>
@@ -69,7 +93,7 @@ class J2Plasticity : public IsotropicModuli {
     const Real mu = shear_modulus();
     const J2Trial<T> t = j2_predict(s, F, D, dt, mu, lame_lambda());
     const T phi = rate_factor(t.rate);
-    const T over = t.vm - phi * (k_.yield + k_.beta * ep_ * s.eps);
+    const T over = t.vm - yield_radius(phi, s.eps);
     const T d_eps = lane_math::larger(over, lane_math::zero<T>()) /
                     (3.0 * mu + phi * k_.beta * ep_ + (1.0 - k_.beta) * ep_);
     return j2_correct(s, t, d_eps, mu, (1.0 - k_.beta) * ep_);

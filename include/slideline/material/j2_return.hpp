@@ -24,7 +24,22 @@ struct J2State {
   Tensor3<T> sigma = lane_math::zero_tensor<T>();  ///< unrotated Cauchy stress R^T sigma R (force/length^2)
   Tensor3<T> back = lane_math::zero_tensor<T>();   ///< unrotated back stress (deviatoric)
   T eps = lane_math::zero<T>();                    ///< effective plastic strain
+  T work = lane_math::zero<T>();                   ///< plastic work density sigma : d eps_p (force/length^2)
 };
+
+/// Internal energy per unit volume of a J2 state (force/length^2): the elastic energy its stress
+/// holds, s':s' / (4 G) + p^2 / (2 K) (small elastic strains), plus the plastic work.
+template <class T>
+T j2_energy_density(const J2State<T>& s, Real mu, Real bulk) {
+  const T p = (s.sigma[0][0] + s.sigma[1][1] + s.sigma[2][2]) / 3.0;
+  T dev2 = lane_math::zero<T>();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const T d = i == j ? T(s.sigma[i][j] - p) : s.sigma[i][j];
+      dev2 += d * d;
+    }
+  return dev2 / (4.0 * mu) + p * p / (2.0 * bulk) + s.work;
+}
 
 /// The elastic predictor of a step: the rotation, xi, its von Mises measure and the effective total
 /// strain rate sqrt(2/3 D':D') (1/time).
@@ -70,12 +85,15 @@ Tensor3<T> j2_correct(J2State<T>& s, const J2Trial<T>& t, const T& d_eps, Real m
   // xi's share that flows: d_eps / |xi|_vm (0 when elastic, so a zero xi is never divided by).
   const T k = d_eps / lane_math::larger(t.vm, lane_math::zero<T>() + std::numeric_limits<Real>::min());
   const T ks = 3.0 * mu * k, kb = hk * k;
+  T power = lane_math::zero<T>();  // sigma : xi after the return; d eps_p = 3/2 k xi
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       s.sigma[i][j] -= ks * t.xi[i][j];
       if (hk != 0.0) s.back[i][j] += kb * t.xi[i][j];
+      power += s.sigma[i][j] * t.xi[i][j];
     }
   s.eps += d_eps;
+  s.work += 1.5 * k * power;
   return rotate_to_current(t.R, s.sigma);
 }
 

@@ -11,6 +11,7 @@
 #include "slideline/material/null_shell.hpp"
 #include "slideline/material/piecewise_plasticity.hpp"
 #include "slideline/material/shell_material.hpp"
+#include "slideline/material/shell_plasticity.hpp"
 #include "slideline/material/solid_material.hpp"
 
 namespace slideline {
@@ -19,7 +20,7 @@ namespace slideline {
 using SolidLaw = std::variant<ElasticSolid, MooneyRivlin, J2Plasticity, PiecewisePlasticity>;
 
 /// The law of a shell block.
-using ShellLaw = std::variant<ElasticShell, NullShell>;
+using ShellLaw = std::variant<ElasticShell, NullShell, ShellPlasticity<J2Plasticity>, ShellPlasticity<PiecewisePlasticity>>;
 
 namespace detail {
 template <class V>

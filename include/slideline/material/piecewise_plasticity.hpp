@@ -95,16 +95,26 @@ class PiecewisePlasticity : public IsotropicModuli {
     return a.second + (b.second - a.second) * (rate - a.first) / (b.first - a.first);
   }
 
+  /// The yield stress after a plastic increment `d_eps` from `eps` (force/length^2): phi curve(eps +
+  /// d_eps), phi at the total strain rate `rate` (1/time), or with VP = 1 at d_eps / dt.
+  Real flow_stress(Real eps, Real d_eps, Real rate, Real dt) const {
+    return rate_factor(k_.viscoplastic ? d_eps / dt : rate) * yield_stress(eps + d_eps);
+  }
+  /// Isotropic hardening only: no back stress.
+  Real kinematic_modulus() const { return 0.0; }
+  /// Whether the yield stress depends on the strain rate.
+  bool rate_dependent() const { return k_.rate_c > 0.0 || !k_.rate_curve.empty(); }
+
   /// The plastic strain increment of one element: `vm` the trial von Mises stress, `eps` the
   /// plastic strain, `rate` the total strain rate, dt the step.
   Real increment(Real vm, Real eps, Real rate, Real dt) const {
     const Real g3 = 3.0 * shear_modulus();
     if (k_.viscoplastic) {
-      if (!(vm > rate_factor(0.0) * yield_stress(eps))) return 0.0;
+      if (!(vm > flow_stress(eps, 0.0, 0.0, 1.0))) return 0.0;
       Real lo = 0.0, hi = vm / g3;  // the residual is positive at lo and not positive at hi
       for (int it = 0; it < 60; ++it) {
         const Real mid = 0.5 * (lo + hi);
-        (vm - g3 * mid - rate_factor(mid / dt) * yield_stress(eps + mid) > 0.0 ? lo : hi) = mid;
+        (vm - g3 * mid - flow_stress(eps, mid, rate, dt) > 0.0 ? lo : hi) = mid;
       }
       return 0.5 * (lo + hi);
     }
@@ -115,6 +125,12 @@ class PiecewisePlasticity : public IsotropicModuli {
       const Real d = (vm - phi * (h[k].second + slope(k) * (eps - h[k].first))) / (g3 + phi * slope(k));
       if (k + 1 >= h.size() || eps + d <= h[k + 1].first) return d;
     }
+  }
+
+  /// Internal energy per unit volume of a state (j2_return.hpp), force/length^2.
+  template <class T>
+  T energy_density(const State<T>& s) const {
+    return j2_energy_density(s, shear_modulus(), bulk_modulus());
   }
 
   /// The SolidMaterial step (j2_return.hpp); the increment is solved one element (lane) at a time.

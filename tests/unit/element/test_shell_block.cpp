@@ -77,7 +77,7 @@ Mat3 tilted_frame() {
 
 TEST(ShellKernel, ThicknessRulesIntegratePolynomials) {
   using K = shell_bt::ThicknessRule::Kind;
-  for (auto [kind, lo, hi] : {std::tuple{K::gauss, 1, 5}, std::tuple{K::lobatto, 2, 5}}) {
+  for (auto [kind, lo, hi] : {std::tuple{K::gauss, 1, 10}, std::tuple{K::lobatto, 2, 10}}) {
     for (int n = lo; n <= hi; ++n) {
       const auto r = shell_bt::ThicknessRule::make(n, kind);
       const int exact = kind == K::gauss ? 2 * n - 1 : 2 * n - 3;
@@ -85,11 +85,11 @@ TEST(ShellKernel, ThicknessRulesIntegratePolynomials) {
         Real s = 0.0;
         for (int i = 0; i < n; ++i) s += r.w[i] * std::pow(r.xi[i], p);
         const Real ref = p % 2 == 0 ? 2.0 / (p + 1) : 0.0;
-        EXPECT_NEAR(s, ref, 1e-14) << "n=" << n << " p=" << p;
+        EXPECT_NEAR(s, ref, 2e-14) << "n=" << n << " p=" << p;  // beyond 5 points: computed rules
       }
     }
   }
-  EXPECT_THROW(shell_bt::ThicknessRule::make(6, K::gauss), InputError);
+  EXPECT_THROW(shell_bt::ThicknessRule::make(11, K::gauss), InputError);
   EXPECT_THROW(shell_bt::ThicknessRule::make(1, K::lobatto), InputError);
 }
 

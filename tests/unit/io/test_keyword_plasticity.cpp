@@ -145,3 +145,23 @@ TEST(KeywordPlasticity, CardsRoundTrip) {
     EXPECT_TRUE(a == b) << i;
   }
 }
+
+TEST(KeywordPlasticity, BothCardsGiveAShellLaw) {
+  // The registry makes the plane-stress law from the same card (docs/solver.md, "On
+  // Belytschko-Tsay shells"): its yield stress is the hexahedron law's.
+  const auto m = read_keyword_string(
+      "*MAT_PLASTIC_KINEMATIC\n1,7.8e-9,2.0e+5,0.3,250.0,2000.0,0.5\n"
+      "*MAT_PIECEWISE_LINEAR_PLASTICITY\n2,7.8e-9,2.0e+5,0.3,200.0,1000.0\n",
+      "p.k", nullptr);
+  const MaterialLaws pk = material_laws(m.materials.at(0), m.curves);
+  ASSERT_TRUE(pk.shell);
+  const auto& shell3 = std::get<ShellPlasticity<J2Plasticity>>(*pk.shell);
+  EXPECT_DOUBLE_EQ(shell3.law().flow_stress(0.0, 0.0, 0.0, 1.0), 250.0);
+  EXPECT_DOUBLE_EQ(shell3.youngs_modulus(), 2.0e5);
+  EXPECT_TRUE(shell3.problem().empty());
+  const MaterialLaws pw = material_laws(m.materials.at(1), m.curves);
+  ASSERT_TRUE(pw.shell);
+  const auto& shell24 = std::get<ShellPlasticity<PiecewisePlasticity>>(*pw.shell);
+  EXPECT_DOUBLE_EQ(shell24.law().flow_stress(0.0, 0.0, 0.0, 1.0), 200.0);
+  EXPECT_DOUBLE_EQ(shell24.law().flow_stress(0.0, 0.01, 0.0, 1.0), 200.0 + 0.01 * 2.0e5 * 1000.0 / (2.0e5 - 1000.0));
+}

@@ -135,12 +135,13 @@ TEST(J2Plasticity, BatchMatchesOneElement) {
   }
 }
 
-// The deck card maps to the law with its constants; no shell law yet.
+// The deck card maps to the law with its constants, for solids and shells.
 TEST(J2Plasticity, RegistryMapsPlasticKinematic) {
   const MaterialLaws laws =
       material_laws(model::MatPlasticKinematic{5, 7.8e-9, 2e5, 0.3, 250.0, 2e3, 0.5, 40.4, 5.0, "", {}});
   ASSERT_TRUE(laws.solid);
-  EXPECT_FALSE(laws.shell);
+  ASSERT_TRUE(laws.shell);
+  EXPECT_EQ(std::get<ShellPlasticity<J2Plasticity>>(*laws.shell).law().constants().yield, 250.0);
   const auto& law = std::get<J2Plasticity>(*laws.solid);
   EXPECT_EQ(law.constants().yield, 250.0);
   EXPECT_EQ(law.constants().beta, 0.5);
@@ -175,4 +176,22 @@ TEST(PiecewisePlasticity, ViscoplasticIncrementSolvesTheRateEquation) {
   const Real d = law.increment(vm, 0.0, 0.0, dt);
   EXPECT_NEAR(vm - 3.0 * G * d, 1.0 + std::sqrt(d / dt / 0.02), 1e-12);
   EXPECT_EQ(law.increment(0.9, 0.0, 0.0, dt), 0.0);
+}
+
+TEST(J2Plasticity, EnergyDensityIsElasticEnergyPlusPlasticWork) {
+  // Uniaxial strain to 1% (eight times the yield strain): along the monotonic path the von Mises
+  // stress is SIGY + Ep eps_p for any BETA, so the plastic work is SIGY eps_p + Ep eps_p^2 / 2; the
+  // update books sigma_end : d eps_p per step (first order in the step: 1e-3 here).
+  for (Real beta : {0.0, 1.0}) {
+    const J2Plasticity law(steel(beta));
+    Tensor3<Real> sigma;
+    J2State<Real> s = uniaxial_strain(law, 1.0, 1e-4, 100, diag(1.0, 1.0, 1.0), sigma);
+    const Real ep = law.hardening_modulus(), e = s.eps;
+    EXPECT_GT(e, 0.005);
+    EXPECT_NEAR(s.work, 250.0 * e + 0.5 * ep * e * e, 1e-3 * s.work) << "beta " << beta;
+    const Real p = (sigma[0][0] + sigma[1][1] + sigma[2][2]) / 3.0, q = sigma[0][0] - sigma[1][1];
+    // s':s' = 2/3 q^2 in uniaxial strain (the lateral stresses equal).
+    const Real elastic = (2.0 / 3.0) * q * q / (4.0 * law.shear_modulus()) + p * p / (2.0 * law.bulk_modulus());
+    EXPECT_NEAR(law.energy_density(s), elastic + s.work, 1e-9 * (elastic + s.work));
+  }
 }
