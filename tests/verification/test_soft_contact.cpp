@@ -9,8 +9,11 @@
 // node is deeper than W / min_i k_i. The stable step at t = 0 is the same for both, and the
 // energy balance (contact term included) holds.
 // 2. VC (card 2): a rigid cube pushed along a fixed rigid plate (one master segment of area A)
-// with friction mu; its four bottom nodes each carry at most VC x A, so the friction force is
-// min(mu N, 4 VC A); with VC = 0 it is mu N.
+// with friction mu; its four bottom nodes each carry at most min(mu N_i, VC A), so the friction
+// force is 4 VC A where VC A is below every node's mu N_i, and mu N with VC = 0. (The push at
+// the centre of mass and the friction at the base tip the cube: with friction F the front nodes
+// carry N/4 + F/2 each and the back ones N/4 - F/2; at VC A = 1, F = 4 would leave the back
+// nodes mu N_i = 0.75 < 1, so the case below takes VC A = 0.6 < mu (N/4 - 1.2).)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,8 +58,10 @@ struct SoftResult {
 /// 0.4 x 0.2 x 0.4 of 2 x 1 x 2 seated on it (no slave node over a master node or edge).
 SoftResult press(int soft, const Frame& frame, bool transducer = false) {
   model::Model m;
-  add_elastic_part(m, 1, 1.0, 1e4, 0.3);
-  add_elastic_part(m, 2, 1.0, 1.0, 0.3);
+  // Hourglass control 10 (physical stiffness, the spec's): with the viscous default this coarse
+  // stiff block is unstable at TSSFAC 0.9 even in free fall, contact or not (measured).
+  add_elastic_part(m, 1, 1.0, 1e4, 0.3, 10);
+  add_elastic_part(m, 2, 1.0, 1.0, 0.3, 10);
   const BoxIds base = add_box(m, 2, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.2, 1.0), {2, 1, 2}, frame);
   const BoxIds block = add_box(m, 1, Vec3(0.27, 0.2, 0.31), Vec3(0.4, 0.2, 0.4), {2, 1, 2}, frame);
   m.node_sets.push_back({3, "base_bottom", base.face_j(0), {}});
@@ -195,17 +200,17 @@ Real friction_force(Real vc, Real push, const Frame& frame) {
   return sum / time;
 }
 
-// The cube slides in every case (push 6 > mu N = 5 > 4 VC A = 4). Tolerance 1 % of mu N (the
+// The cube slides in every case (push 6 > mu N = 5 > 4 VC A = 2.4). Tolerance 1 % of mu N (the
 // springs ring under the push; measured below).
 TEST(ViscousFriction, TheFrictionOfASlidingCubeIsCappedAtVcTimesTheSegmentArea) {
   for (const bool rotated : {false, true}) {
     const Frame frame = rotated ? test_support::oblique_frame() : Frame{};
-    const Real coulomb = friction_force(0.0, 6.0, frame), capped = friction_force(0.25, 6.0, frame);
+    const Real coulomb = friction_force(0.0, 6.0, frame), capped = friction_force(0.15, 6.0, frame);
     const Real above = friction_force(0.5, 6.0, frame);  // 4 VC A = 8 > mu N: Coulomb's limit
-    std::printf("%s: VC 0 friction %.5f (mu N %.3f); VC 0.25 %.5f (4 VC A %.3f); VC 0.5 %.5f\n",
-                rotated ? "rotated" : "aligned", coulomb, kMu * kGravity, capped, 4 * 0.25 * kPlateArea, above);
+    std::printf("%s: VC 0 friction %.5f (mu N %.3f); VC 0.15 %.5f (4 VC A %.3f); VC 0.5 %.5f\n",
+                rotated ? "rotated" : "aligned", coulomb, kMu * kGravity, capped, 4 * 0.15 * kPlateArea, above);
     EXPECT_NEAR(-coulomb, kMu * kGravity, 0.05);
-    EXPECT_NEAR(-capped, 4.0 * 0.25 * kPlateArea, 0.05);
+    EXPECT_NEAR(-capped, 4.0 * 0.15 * kPlateArea, 0.05);
     EXPECT_NEAR(-above, kMu * kGravity, 0.05);
   }
 }
