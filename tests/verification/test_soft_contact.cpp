@@ -6,8 +6,9 @@
 // max(k0, 0.5 SOFSCL m* / dt_c^2), m* = min(slave node mass, smallest mass of the segment's nodes),
 // dt_c = TSSFAC x the elements' stable step at t = 0, and the penetration falls to W / sum k. At
 // rest the contact carries the weight: sum_i k_i |g_i| = W with k_i from that closed form, and no
-// node is deeper than W / min_i k_i. The stable step at t = 0 is the same for both, and the
-// energy balance (contact term included) holds.
+// node is deeper than W / min_i k_i. The stable step at t = 0 is the same for both, SOFT = 1's
+// smallest step of the run is not below SOFT = 0's, and the energy balance (contact term
+// included) holds.
 // 2. VC (card 2): a rigid cube pushed along a fixed rigid plate (one master segment of area A)
 // with friction mu; its four bottom nodes each carry at most min(mu N_i, VC A), so the friction
 // force is 4 VC A where VC A is below every node's mu N_i, and mu N with VC = 0. (The push at
@@ -90,11 +91,14 @@ SoftResult press(int soft, const Frame& frame, bool transducer = false) {
   d.valdmp = 10.0;  // about critical for the block on the soft base (omega ~ 10 / time)
   m.damping_global = d;
   m.termination.endtim = kEnd;
+  // TSSFAC 0.6 (the spec's for Type 12): at 0.9 the stiff block's elements invert in this model
+  // whatever the contact (measured: at t = 0.087, SOFT = 0 and 1 alike).
+  m.timestep.tssfac = 0.6;
 
   test_support::Run run(m);
   SoftResult r;
   r.dt0 = run.sim->stable_dt();  // the elements' step: nothing is in contact yet
-  const Real dt_c = 0.9 * r.dt0;  // TSSFAC 0.9 (the default)
+  const Real dt_c = 0.6 * r.dt0;  // TSSFAC x the elements' step at t = 0
   for (Id id : block.node) r.weight += run.mass(id) * kG;
   r.dt_min = std::numeric_limits<Real>::max();
   while (run.sim->step()) r.dt_min = std::min(r.dt_min, run.sim->dt());
@@ -146,7 +150,7 @@ TEST(SoftConstraint, StiffBlockOnSoftBlockHoldsWithSoftOneAndSinksWithSoftZero) 
       EXPECT_LT(r.energy_error, 1e-3) << name;
     }
     EXPECT_EQ(s0.dt0, s1.dt0);                           // the stable step unchanged at t = 0
-    EXPECT_NEAR(s1.dt_min / s0.dt_min, 1.0, 1e-3);       // and over the run
+    EXPECT_GE(s1.dt_min, (1.0 - 1e-3) * s0.dt_min);      // and never shortened by the springs
     EXPECT_GT(s0.mean_measured, 100.0 * s1.mean_measured);  // SOFT = 0 sinks; SOFT = 1 holds
     EXPECT_GT(s0.deepest, 10.0 * s1.bound);
   }
