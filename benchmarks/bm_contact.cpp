@@ -196,29 +196,46 @@ BENCHMARK(BM_FclSearchAndNearest)->Arg(100)->Arg(316)->Unit(benchmark::kMillisec
 namespace {
 // Scenes are cached by (nx, broad phase): building and initialising 10^6 segments takes longer
 // than a benchmark run. The slaves oscillate about their start, so a reused scene stays in contact.
-template <class BP>
+// The issue-20 options (SOFT = 1, SOFSCL 0.1; VC capping the friction) on the same scene: their
+// cost per slave node-cycle against the plain pass (Opts::plain).
+struct PlainOptions {
+  static PenaltyPassOptions get() { return {}; }
+};
+struct SoftVcOptions {
+  static PenaltyPassOptions get() {
+    PenaltyPassOptions o;
+    o.soft_scale = 0.1;
+    o.viscous_friction = 0.05;  // below mu N here: the cap acts
+    return o;
+  }
+};
+
+template <class BP, class Opts = PlainOptions>
 test::PenaltyScene& penalty_scene(Index nx) {
   static std::map<Index, std::unique_ptr<test::PenaltyScene>> cache;
   auto& s = cache[nx];
   if (!s) {
-    s = test::make_penalty_scene(nx, 0.01, 100.0, ExponentialCoulomb{0.3, 0.25, 2.0}, std::make_unique<BP>());
+    s = test::make_penalty_scene(nx, 0.01, 100.0, ExponentialCoulomb{0.3, 0.25, 2.0}, std::make_unique<BP>(),
+                                 Opts::get());
     StepTimes t;
     t.dt_prev = 1e-3;
+    t.dt_initial = 1e-3;
     s->pass->compute(s->nodes, t, s->friction);  // the first full search, not a sliding cycle
   }
   return *s;
 }
 
-template <class BP>
+template <class BP, class Opts = PlainOptions>
 void penalty_pass(benchmark::State& state) {
   const Index nx = static_cast<Index>(state.range(0));
   set_threads(static_cast<int>(state.range(1)));
-  test::PenaltyScene& s = penalty_scene<BP>(nx);
+  test::PenaltyScene& s = penalty_scene<BP, Opts>(nx);
   Vec3Field f, m;
   f.resize(s.nodes.x.size());
   m.resize(s.nodes.x.size());
   StepTimes t;
   t.dt_prev = 1e-3;
+  t.dt_initial = 1e-3;
   const Vec3Field x_start = s.nodes.x;
   long step = 0;
   for (auto _ : state) {
@@ -237,6 +254,7 @@ void penalty_pass(benchmark::State& state) {
 
 void BM_PenaltyPass(benchmark::State& state) { penalty_pass<FclBroadPhase>(state); }
 void BM_PenaltyPassBruteForce(benchmark::State& state) { penalty_pass<BruteForceBroadPhase>(state); }
+void BM_PenaltyPassSoftVc(benchmark::State& state) { penalty_pass<FclBroadPhase, SoftVcOptions>(state); }
 // Fixed iteration counts, multiples of the 80-cycle sliding period, so that every size sees the
 // same motion and the same number of searches per cycle (a run stopped early would skip some).
 void penalty_args(benchmark::internal::Benchmark* b, std::initializer_list<int> sizes) {
@@ -256,6 +274,9 @@ SLIDELINE_PENALTY_BM(BM_PenaltyPass, 32, 800);
 SLIDELINE_PENALTY_BM(BM_PenaltyPass, 100, 800);
 SLIDELINE_PENALTY_BM(BM_PenaltyPass, 316, 160);
 SLIDELINE_PENALTY_BM(BM_PenaltyPass, 1000, 80);
+SLIDELINE_PENALTY_BM(BM_PenaltyPassSoftVc, 32, 800);
+SLIDELINE_PENALTY_BM(BM_PenaltyPassSoftVc, 100, 800);
+SLIDELINE_PENALTY_BM(BM_PenaltyPassSoftVc, 316, 160);
 SLIDELINE_PENALTY_BM(BM_PenaltyPassBruteForce, 10, 8000);
 SLIDELINE_PENALTY_BM(BM_PenaltyPassBruteForce, 32, 800);
 SLIDELINE_PENALTY_BM(BM_PenaltyPassBruteForce, 100, 800);

@@ -47,7 +47,7 @@ void lagrange_solve(benchmark::State& state, bool cached) {
   a.resize(nn);
   force.resize(nn);
   fc.resize(nn);
-  const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100};
+  const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100, 1e-3};
   long sweeps = 0, solves = 0;
   LagrangeWorkspace ws;
   ws.dx.assign(nn, Vec3::Zero());

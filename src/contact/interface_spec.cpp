@@ -103,6 +103,8 @@ void check_runs(const model::Contact& card) {
     case T::tiebreak_surface:
       if (lagrange) throw_contact_not_implemented(card, "tiebreak interfaces are penalty only");
       if (card.vdc != 0.0) throw_contact_not_implemented(card, "viscous contact damping (VDC) of a tiebreak interface");
+      if (card.soft != 0 || card.vc != 0.0)
+        throw_contact_not_implemented(card, "SOFT = 1 or viscous friction (VC) on a tiebreak interface");
       if (card.sfs <= 0.0) throw InputError(at(card) + ": SFS of " +
                                             card_name(card) + " must be positive");
       return;
@@ -114,11 +116,13 @@ void check_runs(const model::Contact& card) {
   }
   if (lagrange && card.form != model::ContactForm::dyna3d)
     throw_contact_not_implemented(card, "the LS-DYNA automatic cards run with penalty enforcement only");
+  if (card.form == model::ContactForm::force_transducer) return;  // output only: any side types
   if (lagrange) {
     if (card.sliding_only_option)
       throw_contact_not_implemented(card, "the sliding-only option with Lagrange enforcement is not implemented");
-    if (card.vc != 0.0 || card.vdc != 0.0)
-      throw_contact_not_implemented(card, "viscous friction (VC) and viscous damping (VDC) with Lagrange enforcement");
+    if (card.vc != 0.0 || card.vdc != 0.0 || card.soft != 0)
+      throw_contact_not_implemented(card, "viscous friction (VC), viscous damping (VDC) and SOFT = 1 with Lagrange "
+                                          "enforcement");
     return;
   }
   if (!penalty) throw_contact_not_implemented(card);
@@ -137,7 +141,11 @@ void resolve_sides(const model::Contact& card, const ContactBuildContext& ctx, I
   spec.slave = resolve_contact_side(card, true, ctx);
   spec.node_set_slaves = spec.slave.surface.nodes.empty();
   spec.single_surface = card.type == T::automatic && card.form == model::ContactForm::dyna3d && card.msid == 0;
+  // A force transducer's master side is optional (MSID = 0: none).
+  const bool no_master = card.form == model::ContactForm::force_transducer && card.msid == 0;
+  if (no_master) return;
   spec.master = spec.single_surface ? spec.slave : resolve_contact_side(card, false, ctx);
+  if (card.form == model::ContactForm::force_transducer) return;
   if (spec.master.surface.segment_count() == 0)
     throw InputError(at(card) + ": MSID of " + card_name(card) + " selects no master segments");
   if (card.type == T::tiebreak_surface && spec.slave.surface.segment_count() == 0)
@@ -191,6 +199,12 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
     throw_contact_not_implemented(card, "IGNORE = 1, 2 (initial penetrations kept; optional card C or "
                                         "*CONTROL_CONTACT card 4) with Lagrange enforcement");
   spec.mortar_coupling = card.penalty_coupling == 1;
+  // SOFT = 1 and VC: the reader admits them on the penalty sliding interfaces only.
+  if (card.soft != 0 && card.soft != 1)
+    throw_contact_not_implemented(card, "SOFT = " + std::to_string(card.soft) + " (optional card A)");
+  if (card.sofscl < 0.0 || card.vc < 0.0) throw InputError(where(card) + ": SOFSCL and VC must not be negative");
+  spec.soft_scale = card.soft == 1 ? (card.sofscl > 0.0 ? card.sofscl : 0.1) : 0.0;
+  spec.viscous_friction = card.vc;
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
   spec.window = ContactWindow{card.bt, card.dt};

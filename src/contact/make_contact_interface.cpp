@@ -1,5 +1,6 @@
 #include "slideline/contact/make_contact_interface.hpp"
 
+#include "slideline/contact/force_transducer.hpp"
 #include "slideline/core/error.hpp"
 
 namespace slideline {
@@ -7,6 +8,8 @@ namespace slideline {
 std::unique_ptr<ContactAlgorithm> make_contact_interface(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   using T = model::ContactType;
   const bool lagrange = spec.enforcement == model::Enforcement::lagrange;
+  if (spec.form == model::ContactForm::force_transducer)
+    return std::make_unique<ForceTransducer>(spec.title, spec.slave.nodes, spec.master.nodes);
   switch (spec.type) {
     case T::tied_surface:
     case T::tied_nodes:

@@ -321,6 +321,18 @@ void check_control_fields(const Context& ctx, Block& block);
 /// Reads the optional cards A-F of a *CONTACT_... keyword (what is left in the block): IGNORE of
 /// card C into `c`, the other fields checked.
 void read_contact_optional_cards(const Context& ctx, Block& block, model::Contact& c);
+// keyword_contact_options.cpp: SOFT and SOFSCL (optional card A), VC (card 2).
+/// Reads SOFT and SOFSCL from the next card left in `block` (optional card A, if any) into `c`:
+/// SOFT = 1 honoured on the penalty sliding interfaces, warned about on kinematic ties and
+/// Type 1, refused on tiebreaks and Lagrange; SOFT = 2, 4, 6 refused; other values an input error.
+void read_contact_card_a(const Context& ctx, const Block& block, model::Contact& c);
+/// Checks VC of card 2 (`card2`, may be null): honoured on the penalty sliding interfaces with
+/// friction, warned about where there is no friction to cap, refused elsewhere; < 0 an input error.
+void check_viscous_friction(const Context& ctx, const model::Contact& c, const Line* card2);
+/// *CONTACT_FORCE_TRANSDUCER_PENALTY cards 1-3 (null if absent): SSID, MSID, SSTYP, MSTYP, BT and
+/// DT are honoured; any other field off its default is warned about (nothing for it to act on).
+void check_transducer_fields(const Context& ctx, const model::Contact& c, const Line* card1, const Line* card2,
+                             const Line* card3);
 /// Reads cards 2-6 of *CONTROL_CONTACT (what is left in the block) and checks card 1's fields
 /// that the solver does not act on.
 void read_control_contact_cards(const Context& ctx, Block& block, model::ControlContact& card1, int card1_line);

@@ -81,8 +81,8 @@ void check_card(const Context& ctx, const Line& l, std::string_view keyword, std
 
 // Optional cards A-F of *CONTACT_... (LS-DYNA keyword manual, *CONTACT, "Optional Card A" to "F").
 constexpr Rule kCardA[] = {
-    {"SOFT", 0, Use::refuse, "soft-constraint or segment-based penalty; the stiffness here is SOFT = 0's"},
-    {"SOFSCL", 0.1, Use::inert, "scale of the SOFT = 1 stiffness; SOFT = 1 is refused"},
+    {"SOFT", 0, Use::honoured, ""},    // read by read_contact_card_a (keyword_contact_options.cpp)
+    {"SOFSCL", 0.1, Use::honoured, ""},  // likewise
     {"LCIDAB", 0, Use::inert, "airbag thickness curve of SOFT = 2; SOFT = 2 is refused"},
     {"MAXPAR", 1.025, Use::refuse, "maximum parametric coordinate of the segment search"},
     {"SBOPT", 2, Use::inert, "segment-based (SOFT = 2) options; SOFT = 2 is refused"},
@@ -235,8 +235,9 @@ bool is_tiebreak(ContactType t) {
 void check_card2(const Context& ctx, const model::Contact& c, const Line* l) {
   const std::string_view kw = c.keyword;
   if (l && (c.fs < 0.0 || c.fd < 0.0 || c.dc < 0.0))
-    throw NotImplementedError(ctx.where(l->number) + c.keyword + " card 2: FS, FD or DC < 0 (part-based "
-                              "friction, friction tables) is not implemented; give FS, FD, DC >= 0");
+    throw NotImplementedError(ctx.where(l->number) + c.keyword + " card 2: FS, FD or DC < 0 (FS = -2: friction "
+                              "tables of *DEFINE_FRICTION; FS = -1: part-based friction) is not implemented; "
+                              "give FS, FD, DC >= 0");
   if (is_tied(c.type) || c.type == ContactType::sliding_only) {
     // FS and FD of a sliding-only interface are refused by the builder (it is frictionless).
     const char* why = is_tied(c.type) ? "friction of a tied interface, which does not slide"
@@ -247,7 +248,7 @@ void check_card2(const Context& ctx, const model::Contact& c, const Line* l) {
     }
     field(ctx, l, kw, "card 2", c.dc, {"DC", 0, Use::inert, why});
   }
-  field(ctx, l, kw, "card 2", c.vc, {"VC", 0, Use::refuse, "viscous friction limit"});
+  check_viscous_friction(ctx, c, l);
   // VDC: the penalty sliding interfaces (3, 5, 10, 12) damp their springs; kinematic ties and
   // Type 1 have no spring to damp; tiebreak and Lagrange interfaces refuse it.
   const bool penalty_sliding = c.enforcement == Enforcement::penalty && !is_tied(c.type) && !is_tiebreak(c.type) &&
@@ -464,12 +465,14 @@ int read_ignore(const Context& ctx, const Block& b, std::size_t offset, int inde
 }  // namespace
 
 void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c) {
+  read_contact_card_a(ctx, b, c);
   c.ignore = read_ignore(ctx, b, 2, 1, "optional card C");
   if (c.ignore != 0) {
     // Penalty sliding interfaces keep the penetrations; Lagrange is refused when the model is
     // built (interface_spec.cpp); ties and tiebreaks tie their nodes where they are.
     const Line& l = b.cards[b.next + 2];
-    const bool tie = is_tied(c.type) || is_tiebreak(c.type) || c.type == ContactType::sliding_only;
+    const bool tie = is_tied(c.type) || is_tiebreak(c.type) || c.type == ContactType::sliding_only ||
+                     c.form == model::ContactForm::force_transducer;  // (a transducer has no spring)
     if (tie)
       act(ctx, l.number, b.keyword, "optional card C",
           {"IGNORE", 0, Use::inert, "initial penetrations kept; this interface ties or constrains its nodes where they are"},

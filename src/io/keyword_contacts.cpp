@@ -129,7 +129,10 @@ void read_contact(const Context& ctx, Block& b, model::Model& m, const model::Co
   }
   // Type 5 with discrete slave nodes: SST is the nodal contact radius.
   if (c.type == ContactType::nodes_to_surface && c.sstyp == 4) c.radius = c.sst;
-  check_contact_fields(ctx, c, card1, card2, card3, card4);
+  if (c.form == model::ContactForm::force_transducer)
+    check_transducer_fields(ctx, c, card1, card2, card3);
+  else
+    check_contact_fields(ctx, c, card1, card2, card3, card4);
   read_contact_optional_cards(ctx, b, c);
   m.contacts.push_back(std::move(c));
 }

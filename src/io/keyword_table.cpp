@@ -180,6 +180,8 @@ constexpr Row kRows[] = {
 /// with Lagrange multipliers is checked when the model is built (check_runs, interface_spec.cpp).
 std::string contact_description(const model::ContactKeyword& k) {
   // An LS-DYNA card without a DYNA3D number (model::ContactForm): runs with the type's pass.
+  if (k.form == model::ContactForm::force_transducer)
+    return "contact force transducer: the contact force on its side(s) as an interface history; adds no force";
   if (k.form != model::ContactForm::dyna3d)
     return "contact, LS-DYNA " + std::string(k.name) + " on DYNA3D type " + std::to_string(k.dyna3d_type) +
            "'s automatic pass; penalty (_LAGRANGE is refused when the model is built)" +

@@ -206,8 +206,14 @@ void write_contacts(const model::Model& m, std::string& o) {
       o += "$#  OPTION      NFLS      SFLS\n";
       o += CardOut().i(c.option).r(c.nfls != 0.0 ? c.nfls : c.nflf).r(c.sfls != 0.0 ? c.sfls : c.sflf).str();
     }
+    const bool card_a = c.soft != 0 || c.sofscl != 0.1;
+    if (card_a) {
+      o += "$#    SOFT    SOFSCL\n";
+      o += CardOut().i(c.soft).r(c.sofscl).str();
+    }
     if (c.ignore != 0) {
-      o += "$# optional cards A and B (defaults), C: IGAP IGNORE\n\n\n";
+      o += card_a ? "$# optional card B (defaults), C: IGAP IGNORE\n\n"
+                  : "$# optional cards A and B (defaults), C: IGAP IGNORE\n\n\n";
       o += CardOut().blank().i(c.ignore).str();
     }
   }

@@ -484,12 +484,27 @@ struct Builder {
 
   void build_contacts() {
     const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets};
-    for (std::size_t k = 0; k < m.contacts.size(); ++k) {
-      const auto& card = m.contacts[k];  // titles distinct (validate_model)
-      InterfaceSpec spec = resolve_interface(card, k + 1, ctx);
-      // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
-      setup.contacts.add(make_contact_interface(spec, ctx), spec.window);
-    }
+    // Force transducers last: they read the contact forces every other interface has added.
+    for (const bool transducers : {false, true})
+      for (std::size_t k = 0; k < m.contacts.size(); ++k) {
+        const auto& card = m.contacts[k];  // titles distinct (validate_model)
+        if ((card.form == model::ContactForm::force_transducer) != transducers) continue;
+        if (transducers) check_transducer_measures(card);
+        InterfaceSpec spec = resolve_interface(card, k + 1, ctx);
+        // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
+        setup.contacts.add(make_contact_interface(spec, ctx), spec.window);
+      }
+  }
+
+  /// A force transducer measures f_contact: refused beside an interface whose forces are not
+  /// there (kinematic ties and Type 1 condense or constrain; Lagrange multipliers act later).
+  void check_transducer_measures(const model::Contact& transducer) const {
+    for (const auto& c : m.contacts)
+      if (c.enforcement != model::Enforcement::penalty)
+        throw NotImplementedError(describe_location(transducer.src.file, transducer.src.line) + ": " +
+                                  transducer.keyword + ": a force transducer in a model with a kinematic or "
+                                  "Lagrange contact (" + c.keyword + ") is not implemented: it would miss that "
+                                  "contact's forces");
   }
 };
 

@@ -249,8 +249,10 @@ class References {
     };
     for (const auto& c : m_.contacts) {
       check_side(c, "SSID", c.ssid, c.sstyp);
-      // A single-surface card (type 12 as DYNA3D spells it) has no master side.
-      if (c.type != model::ContactType::automatic || c.form != model::ContactForm::dyna3d)
+      // A single-surface card (type 12 as DYNA3D spells it) has no master side; a force
+      // transducer's is optional (MSID = 0).
+      const bool optional_master = c.form == model::ContactForm::force_transducer && c.msid == 0;
+      if ((c.type != model::ContactType::automatic || c.form != model::ContactForm::dyna3d) && !optional_master)
         check_side(c, "MSID", c.msid, c.mstyp);
       const std::string who = c.keyword.empty() ? std::string("*CONTACT") : c.keyword;
       if (c.sboxid != 0 && !boxes_.count(c.sboxid))

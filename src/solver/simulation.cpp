@@ -67,6 +67,7 @@ void Simulation::initialize() {
   update_damping_coefficients();
   t_ = 0.0;
   dt_ = 0.0;
+  dt_initial_ = 0.0;  // set by the first assemble_forces()
   cycle_ = 0;
   initialize_contacts();
   recorder_.build_channels(output_sources());

@@ -18,7 +18,7 @@ void Simulation::apply_constraints(const StepPlan& plan) {
   constrain_rigid_bodies(plan);
   prescribe_supports(plan);
   if (has_contact()) {
-    const StepTimes times{t_, dt_, plan.dt_avg, plan.dt_next, cycle_};
+    const StepTimes times{t_, dt_, plan.dt_avg, plan.dt_next, cycle_, dt_initial_};
     ConstraintView view{nodes_,
                         effective_mass(),
                         alpha_,

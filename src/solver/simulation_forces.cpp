@@ -19,6 +19,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 StepVotes Simulation::assemble_forces() {
   StepVotes local;
   local.elements = compute_internal_forces(local.block);
+  if (dt_initial_ == 0.0 && has_contact()) {
+    // The initial step the SOFT = 1 springs are sized by (over all processes, as the step is;
+    // the one exchange call more, once, only in a model with contact).
+    StepVotes e;
+    e.elements = e.contact = local.elements;
+    dt_initial_ = controls_.dt_scale * exchange_->min_dt(e).elements;
+  }
   compute_external_forces();
   local.contact = apply_contact_forces();
   // Exchange points 1 and 2 (exchange.hpp): the forces of shared nodes, the step over all processes.
@@ -106,7 +113,7 @@ Real Simulation::apply_contact_forces() {
   nodes_.f_contact.fill(0.0);
   if (has_rotations_) nodes_.m_contact.fill(0.0);
   // The coming step is not known yet (the interfaces vote for it here).
-  const StepTimes times{t_, dt_, 0.0, 0.0, cycle_};
+  const StepTimes times{t_, dt_, 0.0, 0.0, cycle_, dt_initial_};
   const Real dtc = contacts_.apply_forces(nodes_, times, ContactForceView{nodes_.f_contact, nodes_.m_contact});
   contact_seconds_ += seconds_since(t0);
   return dtc;

@@ -37,6 +37,9 @@ struct StepTimes {
   Real dt_avg = 0.0;   ///< velocity step (dt_prev + dt_next) / 2 (dt_next / 2 on the first cycle)
   Real dt_next = 0.0;  ///< t^{n+1} - t^n
   long cycle = 0;
+  /// The run's initial step: the time-step scale factor (TSSFAC) x the elements' stable step at
+  /// t = 0 (time); 0 where the driver does not know it. SOFT = 1 sizes its springs by it.
+  Real dt_initial = 0.0;
 };
 
 /// What an interface may look at when it initialises (after masses are lumped, before the first

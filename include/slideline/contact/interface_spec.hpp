@@ -82,6 +82,12 @@ struct InterfaceSpec {
   /// keep initial penetrations as their springs' zero instead of moving the nodes out.
   bool keep_initial_penetrations = false;
   bool mortar_coupling = false; ///< _MORTAR (model::Contact::penalty_coupling 1): penalty and Lagrange
+  /// SOFT = 1: SOFSCL (the soft-constraint stiffness scale, PenaltyPassOptions::soft_scale); 0 for
+  /// SOFT = 0 (penalty Types 3, 5, 10, 12; the reader refuses SOFT elsewhere).
+  Real soft_scale = 0.0;
+  /// VC (stress): the friction of each slave node capped at VC x its master segment's area
+  /// (penalty Types 3, 5, 10, 12 with friction; the reader refuses VC elsewhere).
+  Real viscous_friction = 0.0;
   TiebreakFailure failure;
   ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)
   /// Type 12: write interfaces/<title>/transmitted_force (the force between its parts).

@@ -37,6 +37,8 @@ inline PenaltyPassOptions penalty_pass_options(const InterfaceSpec& spec, Real s
   o.coupling = spec.mortar_coupling ? PenaltyCoupling::mortar : PenaltyCoupling::node;
   o.viscous_damping = spec.viscous_damping;
   o.keep_initial_penetrations = spec.keep_initial_penetrations;
+  o.soft_scale = spec.soft_scale;
+  o.viscous_friction = spec.viscous_friction;
   return o;
 }
 

@@ -446,6 +446,9 @@ enum class ContactForm : std::uint8_t {
   /// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE (type family 12): as automatic_nodes_to_surface
   /// (a forming tool's master surface needs no consistent orientation).
   forming_one_way,
+  /// *CONTACT_FORCE_TRANSDUCER_PENALTY: adds no force; measures the forces that the other
+  /// interfaces put on its slave (and optional master) side (docs/contact.md, "Force transducer").
+  force_transducer,
 };
 
 /// A *CONTACT_... card with its cards 1-3 and the optional tiebreak card 4.
@@ -477,6 +480,9 @@ struct Contact {
   Real sst = 0.0, mst = 0.0;    ///< optional thickness (0 = from the elements)
   Real sfst = 1.0, sfmt = 1.0;  ///< thickness scale factors
   Real fsf = 1.0, vsf = 1.0;
+  // Optional card A
+  int soft = 0;        ///< SOFT: 0 the segment stiffness rule; 1 also SOFSCL x the nodal-mass stiffness
+  Real sofscl = 0.1;   ///< SOFSCL (0 or blank: 0.1)
   // Optional card C
   int ignore = 0;  ///< IGNORE: 0 *CONTROL_CONTACT's; 1, 2 initial penetrations kept as the springs' zero
   // Card 4 (tiebreak)

@@ -199,6 +199,7 @@ class Simulation {
   StepVotes votes_;  // the stable step the forces at t_ vote for
   Real t_ = 0.0;
   Real dt_ = 0.0;    // last step t^{n} - t^{n-1}
+  Real dt_initial_ = 0.0;  // TSSFAC x the elements' stable step at t = 0 (StepTimes::dt_initial)
   long cycle_ = 0;
   bool initialized_ = false;
   DiagnosticSink* diagnostics_ = nullptr;

@@ -25,7 +25,8 @@ struct PenaltyScene {
 /// benchmark passes the brute-force one to compare).
 inline std::unique_ptr<PenaltyScene> make_penalty_scene(Index nx, Real penetration, Real k,
                                                         const ExponentialCoulomb& friction,
-                                                        std::unique_ptr<BroadPhase> broad_phase = nullptr) {
+                                                        std::unique_ptr<BroadPhase> broad_phase = nullptr,
+                                                        const PenaltyPassOptions& o = {}) {
   auto s = std::make_unique<PenaltyScene>();
   Vec3Field x;
   Surface master = make_plate(x, nx, nx, 1.0, Vec3::Zero());
@@ -41,7 +42,6 @@ inline std::unique_ptr<PenaltyScene> make_penalty_scene(Index nx, Real penetrati
   s->nodes.x = x;
   s->nodes.x0 = x;
   s->nodes.mass.assign(x.size(), 1.0);
-  PenaltyPassOptions o;
   s->friction = friction;
   s->pass = std::make_unique<PenaltyPass>(s->slaves, std::vector<Real>(s->slaves.size(), 0.0), std::move(master),
                                           broad_phase ? std::move(broad_phase) : std::make_unique<FclBroadPhase>(), o);

@@ -63,7 +63,7 @@ struct Plate {
 
 TEST(LagrangeSolve, CachedSweepsMatchTheReferenceLoop) {
   Plate ref(12), fast(12);
-  const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100};
+  const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100, 1e-3};
   LagrangeSolveOptions opt;
   opt.tolerance = 1e-13;
   const auto r1 = solve_forward_increment(ref.cs, ref.view(), t, opt);
@@ -93,7 +93,7 @@ TEST(LagrangeSolve, CachedSweepsMatchTheReferenceLoop) {
 TEST(LagrangeSolve, MasterAddedIsTheForceTheMasterNodesReceived) {
   for (const bool cached : {false, true}) {
     Plate p(6);
-    const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100};
+    const StepTimes t{0.1, 1e-3, 1e-3, 1e-3, 100, 1e-3};
     LagrangeWorkspace ws;
     ws.dx.assign(p.nodes.size(), Vec3::Zero());
     ws.rows.reserve(p.cs.size());

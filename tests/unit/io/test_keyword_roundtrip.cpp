@@ -113,8 +113,8 @@ model::Model full_model() {
     c.dt = 0.49;
     // What the reader accepts for this type (docs/contact.md, "Contact card fields"): friction
     // where the interface slides, penalty scales where it has springs (SFM apart from SFS on the
-    // two-pass types only), thickness where it offsets; VC, VDC, PENCHK, FSF and VSF stay at their
-    // defaults (refused otherwise: test_keyword_zero_defaults.cpp).
+    // two-pass types only), thickness where it offsets; VDC, PENCHK, FSF and VSF stay at their
+    // defaults (refused otherwise: test_keyword_zero_defaults.cpp); SOFT, SOFSCL and VC below.
     const bool tied = t == ContactType::tied_surface || t == ContactType::tied_nodes ||
                       t == ContactType::tied_shell_edge;
     const bool tiebreak = t == ContactType::tiebreak_nodes || t == ContactType::tiebreak_surface;
@@ -143,6 +143,9 @@ model::Model full_model() {
   m.contacts.push_back(contact(ContactType::surface_to_surface, Enforcement::penalty));
   m.contacts.back().title = "solid_on_solid";
   m.contacts.back().penalty_coupling = 1;  // _MORTAR
+  m.contacts.back().soft = 1;  // optional card A (SOFT, SOFSCL) and VC, honoured on penalty Type 3
+  m.contacts.back().sofscl = 0.2;
+  m.contacts.back().vc = 0.5;
   m.contacts.push_back(contact(ContactType::surface_to_surface, Enforcement::lagrange));
   m.contacts.back().cid = 33;
   m.contacts.back().title = "lagrange, with a comma";

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model_equal.hpp"
@@ -154,7 +155,9 @@ struct Refused {
 TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAndField) {
   const std::string c2 = card({}, ""), c3 = card({}, "");
   const std::vector<Refused> cases = {
-      {contact_deck(card({"", "", "", "5.0"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field VC = 5"},
+      {contact_deck(card({"", "", "", "5.0"}, ""), c3, "", "TIEBREAK_SURFACE_TO_SURFACE"),
+       "u.k:4: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE card 2: field VC = 5"},
+      {contact_deck(card({"-2"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: FS, FD or DC < 0 (FS = -2"},
       {contact_deck(card({"", "", "", "", "20"}, ""), c3, "", "TIEBREAK_SURFACE_TO_SURFACE"),
        "u.k:4: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE card 2: field VDC = 20"},
       {contact_deck(card({"", "", "", "", "20"}, ""), c3, "", "SURFACE_TO_SURFACE_LAGRANGE"),
@@ -163,7 +166,11 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {contact_deck(card({"-1"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: FS, FD or DC < 0"},
       {contact_deck(c2, card({"", "", "", "", "", "", "0.5"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field FSF = 0.5"},
       {contact_deck(c2, card({"", "", "", "", "", "", "", "2"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field VSF = 2"},
-      {contact_deck(c2, c3, card({"1"}, "")), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 1"},
+      {contact_deck(c2, c3, card({"2"}, "")), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
+      {contact_deck(c2, c3, card({}, "") + card({"1"}, ""), "TIEBREAK_SURFACE_TO_SURFACE"),  // after card 4
+       "u.k:7: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE optional card A: field SOFT = 1"},
+      {contact_deck(c2, c3, card({"1"}, ""), "SURFACE_TO_SURFACE_LAGRANGE"),
+       "u.k:6: *CONTACT_SURFACE_TO_SURFACE_LAGRANGE optional card A: field SOFT = 1"},
       {contact_deck(c2, c3, card({"", "", "", "", "", "", "", "3"}, "")), "optional card A: field FRCFRQ = 3"},
       {contact_deck(c2, c3, card({}, "") + card({"0.5"}, "")), "u.k:7: *CONTACT_SURFACE_TO_SURFACE optional card B: field PENMAX = 0.5"},
       {contact_deck(c2, c3, card({}, "") + card({}, "") + card({"", "", "0.5"}, "")), "u.k:8: *CONTACT_SURFACE_TO_SURFACE optional card C: field DPRFAC = 0.5"},
@@ -221,6 +228,47 @@ TEST(KeywordContactFields, IgnoreIsReadFromOptionalCardCAndControlCard4) {
   read_keyword_string(contact_deck(blank, blank, card_c, "TIED_SURFACE_TO_SURFACE"), "u.k", &w);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].message.find("field IGNORE = 2"), std::string::npos) << w[0].message;
+}
+
+TEST(KeywordContactFields, SoftSofsclAndVcAreReadWhereTheyAct) {
+  const std::string blank = card({}, "");
+  const std::string friction = card({"0.3", "", "", "2.5"}, "");  // FS 0.3, VC 2.5
+  std::vector<Diagnostic> w;
+  const auto m = read_keyword_string(contact_deck(friction, blank, card({"1", "0.2"}, "")), "u.k", &w);
+  EXPECT_TRUE(w.empty());
+  EXPECT_EQ(m.contacts[0].soft, 1);
+  EXPECT_DOUBLE_EQ(m.contacts[0].sofscl, 0.2);
+  EXPECT_DOUBLE_EQ(m.contacts[0].vc, 2.5);
+  // Blank and 0 SOFSCL mean 0.1; the writer keeps SOFT and SOFSCL (optional card A).
+  EXPECT_DOUBLE_EQ(read_keyword_string(contact_deck(blank, blank, card({"1", "0.0"}, "")), "u.k").contacts[0].sofscl,
+                   0.1);
+  const auto back = read_keyword_string(write_keyword_string(m), "w.k");
+  EXPECT_EQ(back.contacts[0].soft, 1);
+  EXPECT_DOUBLE_EQ(back.contacts[0].sofscl, 0.2);
+  // Warned: SOFSCL without SOFT = 1, SOFT = 1 on a kinematic tie, VC without friction.
+  const std::vector<std::pair<std::string, std::string>> warned = {
+      {contact_deck(blank, blank, card({"", "0.3"}, "")), "optional card A: field SOFSCL = 0.3"},
+      {contact_deck(blank, blank, card({"1"}, ""), "TIED_SURFACE_TO_SURFACE"), "optional card A: field SOFT = 1"},
+      {contact_deck(card({"", "", "", "2.5"}, ""), blank), "card 2: field VC = 2.5"},
+  };
+  for (const auto& [deck, text] : warned) {
+    std::vector<Diagnostic> ws;
+    read_keyword_string(deck, "u.k", &ws);
+    ASSERT_EQ(ws.size(), 1u) << deck;
+    EXPECT_NE(ws[0].message.find(text), std::string::npos) << ws[0].message;
+  }
+  // Input errors naming file, line and field.
+  for (const auto& [deck, text] : std::vector<std::pair<std::string, std::string>>{
+           {contact_deck(blank, blank, card({"3"}, "")), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 3"},
+           {contact_deck(blank, blank, card({"1", "-0.1"}, "")), "optional card A: field SOFSCL = -0.1"},
+           {contact_deck(card({"0.3", "", "", "-1"}, ""), blank), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field VC = -1"}}) {
+    try {
+      read_keyword_string(deck, "u.k");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(KeywordSectionFields, HourglassQbQwEqualToQmAreAccepted) {

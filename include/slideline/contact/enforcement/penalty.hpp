@@ -89,6 +89,13 @@ struct PenaltyPassOptions {
   /// penetrations stay where they are as the springs' zero (the allowance g_0, shrinking as the
   /// node moves out) instead of being moved out before the first step.
   bool keep_initial_penetrations = false;
+  /// SOFT = 1 (LS-DYNA's soft constraint): each pair's spring is the larger of the segment's k and
+  /// 0.5 x soft_scale x m* / dt_c^2, m* = min(slave node mass, smallest mass of the segment's
+  /// nodes), dt_c = StepTimes::dt_initial (fixed for the run). soft_scale = SOFSCL; 0: SOFT = 0.
+  Real soft_scale = 0.0;
+  /// VC (stress): the tangential force of a slave node is capped at VC x the area of its master
+  /// segment (at initialize()), below the Coulomb limit mu f_n. 0: no cap.
+  Real viscous_friction = 0.0;
 };
 
 /// The per-slave result of one cycle, kept for the serial scatter.
@@ -199,12 +206,21 @@ class PenaltyPass {
   static CoupledPoint coupled_point(Index node, const Projection& pr, const Index* c, const MortarWeights* mw,
                                     const NodalFields& nodes);
   /// What the stick spring of one slave needs: the oriented normal, the normal force (force), the
-  /// spring k (force / length), 1/m of the coupled pair, gamma (length), the relative velocity.
+  /// spring k (force / length), 1/m of the coupled pair, gamma (length), the relative velocity,
+  /// and the VC cap of the tangential force (force; +inf without VC).
   struct StickInputs {
     Vec3 normal;
     Real fn, k, inv_mass, slip;
     Vec3 dv;
+    Real cap;
   };
+  /// The pair's spring (force / length): the segment's `k`, or with SOFT = 1 the larger of it and
+  /// 0.5 SOFSCL m* / dt_c^2 (PenaltyPassOptions::soft_scale).
+  Real pair_stiffness(Real k, Real slave_mass, std::size_t segment, Real dt_initial) const {
+    if (!(opt_.soft_scale > 0.0)) return k;
+    const Real m = std::min(slave_mass, soft_mass_seg_[segment]);
+    return std::max(k, 0.5 * opt_.soft_scale * m / (dt_initial * dt_initial));
+  }
   template <class Friction>
   void add_friction(std::size_t i, const StickInputs& in, const StepTimes& times, const Friction& law,
                     PenaltyRecord& rec, Vec3& f);
@@ -223,6 +239,8 @@ class PenaltyPass {
   std::vector<std::uint8_t> touched_;   ///< sliding only: has been in contact
   std::vector<Vec3> ue_;                ///< elastic slip: contact point - sticking point (length)
   std::vector<Real> slip_seg_;          ///< per master segment: gamma (length)
+  std::vector<Real> soft_mass_seg_;     ///< SOFT = 1: per master segment, its smallest nodal mass
+  std::vector<Real> friction_cap_seg_;  ///< VC: per master segment, VC x its area (force)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;

@@ -45,6 +45,21 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
       kappa_[static_cast<std::size_t>(s)] = a > 0.0 ? k_seg_[static_cast<std::size_t>(s)] / a : 0.0;
     }
   }
+  soft_mass_seg_.clear();
+  if (opt_.soft_scale > 0.0) {
+    soft_mass_seg_.assign(static_cast<std::size_t>(ns), std::numeric_limits<Real>::max());
+    for (Index s = 0; s < ns; ++s)
+      for (int a = 0; a < 4; ++a) {
+        const Real m = nodes.mass[static_cast<std::size_t>(master.conn[4 * static_cast<std::size_t>(s) + a])];
+        soft_mass_seg_[static_cast<std::size_t>(s)] = std::min(soft_mass_seg_[static_cast<std::size_t>(s)], m);
+      }
+  }
+  friction_cap_seg_.clear();
+  if (opt_.viscous_friction > 0.0) {
+    friction_cap_seg_.assign(static_cast<std::size_t>(ns), 0.0);
+    for (Index s = 0; s < ns; ++s)
+      friction_cap_seg_[static_cast<std::size_t>(s)] = opt_.viscous_friction * segment_area(master, s, nodes.x);
+  }
   slip_seg_.assign(static_cast<std::size_t>(ns), 0.0);
   for (Index s = 0; s < ns; ++s)
     slip_seg_[static_cast<std::size_t>(s)] = opt_.elastic_slip_fraction * segment_max_diagonal(master, s, nodes.x);
@@ -62,6 +77,7 @@ inline Index PenaltyPass::detect_initial_penetrations(const NodalFields& nodes, 
   std::fill(g0_.begin(), g0_.end(), 0.0);
   pairs_.force_search();
   StepTimes t0;
+  t0.dt_initial = std::numeric_limits<Real>::infinity();  // gaps only: SOFT = 1 adds nothing here
   compute(nodes, t0);
   Index count = 0;
   deepest = 0.0;
@@ -109,6 +125,8 @@ inline Index PenaltyPass::resolve_initial_penetrations(NodalFields& nodes, Real&
 
 template <class Friction>
 void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& times, const Friction& friction) {
+  if (opt_.soft_scale > 0.0 && !(times.dt_initial > 0.0))
+    throw Error("PenaltyPass::compute: SOFT = 1 needs the run's initial step (StepTimes::dt_initial)");
   pairs_.locate(nodes.x);
   parallel_for(static_cast<Index>(pairs_.slaves().size()),
                [&](Index i) { evaluate(static_cast<std::size_t>(i), nodes, times, friction); });
@@ -163,7 +181,8 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   const bool mortar = !mortar_.empty() && mortar_weights(slave_surface_, static_cast<Index>(i), node, master, s,
                                                          nodes.x, mortar_[i]);
   const MortarWeights* mw = mortar ? &mortar_[i] : nullptr;
-  const Real k = mw ? kappa_[su] * mw->area : k_seg_[su];
+  const Real k = pair_stiffness(mw ? kappa_[su] * mw->area : k_seg_[su], nodes.mass[static_cast<std::size_t>(node)], su,
+                                 times.dt_initial);
   // Spring of this pair for the step: omega^2 = k (1/m_s + sum N_a^2 / m_a); dt = 2 / omega.
   const CoupledPoint cp = coupled_point(node, pr, c, mw, nodes);
   const Real inv_m = cp.inv_mass;
@@ -204,7 +223,10 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
     step_factor = d.step_factor;
   }
   Vec3 f = fn * n;
-  if constexpr (Friction::enabled) add_friction(i, StickInputs{n, fn, k, inv_m, slip_seg_[su], cp.dv}, times, friction, rec, f);
+  if constexpr (Friction::enabled) {
+    const Real cap = friction_cap_seg_.empty() ? std::numeric_limits<Real>::infinity() : friction_cap_seg_[su];
+    add_friction(i, StickInputs{n, fn, k, inv_m, slip_seg_[su], cp.dv, cap}, times, friction, rec, f);
+  }
   if (step_factor < 1.0) rec.dt_inv2 /= step_factor * step_factor;
   rec.segment = s;
   rec.force = f;
@@ -254,7 +276,9 @@ void PenaltyPass::add_friction(std::size_t i, const StickInputs& in, const StepT
     // oscillates with growth |a|, a = beta (mu_s - mu_k) N / (k_t dt), unstable for |a| > 1;
     // a backward-Euler slip rate is worse (unstable for a < -1/2). The relative speed feeds
     // back only through the masses.
-    const StickSpringUpdate u = stick_spring_update(ue, kt, fn, law.coefficient(vt.norm()));
+    // VC: the limit min(mu f_n, VC A) (LS-DYNA's viscous friction), as a coefficient.
+    const Real mu = std::min(law.coefficient(vt.norm()), in.cap / fn);
+    const StickSpringUpdate u = stick_spring_update(ue, kt, fn, mu);
     ft = u.force;
     if (u.slipping) rec.dissipation = u.force.norm() * (ue.norm() - u.elastic_displacement.norm());
     ue = u.elastic_displacement;
