@@ -93,8 +93,8 @@ model::Model full_model() {
   m.damping_parts.push_back({1, 2, 0.25, 1, true, {0.5, 0.5, 0.5, 1.0, 1.0, 1.0}, {}});
   m.damping_stiffness.push_back({2, -1.0 / 3.0e4, false, {}});
   m.damping_stiffness.push_back({1, -2.5e-5, true, {}});
-  m.termination = {0.5, 100000, 2e-4, 7.5, {}};
-  m.timestep = {1e-5, 0.6, 1, 1e-9, -1e-6, 2};
+  m.termination = {0.5, 100000, 2e-4, 7.5, 12.5, {}};
+  m.timestep = {1e-5, 0.6, 1, 1e-9, -1e-6, 2, 1, {}};  // MS1ST = 1: mass scaled once, as slideline does
   // Values the reader accepts (0 in ISLCHK / ORIEN would read back as their default 1; THKCHG != 0
   // is refused, RWPNAL and ENMASS warn: docs/contact.md, "Contact card fields").
   m.control_contact = {0.2, 0.0, 1, 1, 2, 0, 1, 0};
