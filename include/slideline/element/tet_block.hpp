@@ -18,6 +18,7 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/element_block.hpp"
+#include "slideline/element/element_chunks.hpp"
 #include "slideline/element/solid_point_terms.hpp"
 #include "slideline/material/solid_material.hpp"
 #include "slideline/mesh/element_topology.hpp"
@@ -66,18 +67,11 @@ class TetBlock final : public ElementBlock {
         mat_(std::move(material)),
         k_{mat_.wave_speed(), mat_.density(), mat_.lame_lambda(), mat_.shear_modulus(), bulk, damping.beta},
         conn_(std::move(connectivity)),
-        ids_(std::move(element_ids)) {
+        ids_(std::move(element_ids)),
+        chunks_(static_cast<Index>(ids_.size())) {
     if (!(damping.beta >= 0.0))
       throw InputError("solid part " + std::to_string(part_id_) +
                        ": the stiffness damping coefficient beta must not be negative");
-    const auto nc = static_cast<std::size_t>(chunk_count(element_count()));
-    chunk_dt_.assign(nc, 0.0);
-    chunk_visc_.assign(nc, 0.0);
-    chunk_damp_.assign(nc, 0.0);
-    chunk_power_.assign(nc, 0.0);
-    chunk_zero_.assign(nc, 0.0);
-    chunk_dt_element_.assign(nc, 0);
-    chunk_bad_.assign(nc, -1);
     state_.assign(ids_.size(), State{});
   }
 
@@ -113,33 +107,12 @@ class TetBlock final : public ElementBlock {
     const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
                                    corners.force.y.data() + force_slot_base(),
                                    corners.force.z.data() + force_slot_base()};
-    parallel_for_chunks(element_count(), [&](Index b, Index end, Index chunk) {
-      Real dtmin = std::numeric_limits<Real>::max(), visc = 0.0, damp = 0.0, power = 0.0;
-      Index argmin = b, bad = -1;
-      for (Index e = b; e < end; ++e) {
-        const Point p = element_forces(nodes, e, dt, out);
-        if (p.dt < dtmin) {
-          dtmin = p.dt;
-          argmin = e;
-        }
-        if (bad < 0 && p.failed) bad = e;
-        visc += p.visc;
-        damp += p.damp;
-        power += p.power;
-      }
-      chunk_dt_[chunk] = dtmin;
-      chunk_dt_element_[chunk] = argmin;
-      chunk_visc_[chunk] = visc;
-      chunk_damp_[chunk] = damp;
-      chunk_power_[chunk] = power;
-      chunk_bad_[chunk] = bad;
-    });
-    return reduce_element_chunks(chunk_dt_, chunk_zero_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
-                                 "tetrahedron", ids_, part_id_, "inverted (non-positive volume or non-finite force)");
+    chunks_.scan(element_count(), [&](Index e) { return element_forces(nodes, e, dt, out); });
+    return chunks_.reduce(energy, "tetrahedron", ids_, part_id_, "inverted (non-positive volume or non-finite force)");
   }
 
   Id smallest_step_element() const override {
-    return ids_.empty() ? Id{-1} : ids_[static_cast<std::size_t>(chunk_dt_element_[argmin_chunk(chunk_dt_)])];
+    return chunks_.smallest_step_element(ids_);
   }
 
   /// The law's stress at the current geometry (its state advanced over a zero step on a copy),
@@ -209,8 +182,7 @@ class TetBlock final : public ElementBlock {
   std::vector<Mat3> edges0_inverse_;  ///< per element, the reference edge matrix inverted
   std::vector<Real> volume0_;
   std::vector<State> state_;          ///< the law's state, one per element
-  std::vector<Real> chunk_dt_, chunk_visc_, chunk_damp_, chunk_power_, chunk_zero_;
-  std::vector<Index> chunk_dt_element_, chunk_bad_;
+  ElementChunks chunks_;  ///< per-chunk steps, failures and powers (sized at construction)
 };
 
 }  // namespace slideline
