@@ -247,11 +247,31 @@ TEST(ShellPlasticityDeck, UnreachedYieldRunsAsElastic) {
   const History a = run(false), b = run(true);
   ASSERT_EQ(a.records(), b.records());
   ASSERT_EQ(a.channels().size(), b.channels().size());
+  // Bit for bit where the code generation is portable (the sanitized build, -DSLIDELINE_NATIVE=OFF).
+  // Under -march=native GCC contracts a*b+c into fused multiply-adds differently in the two inlined
+  // updates (tests/CMakeLists.txt), and the contact run amplifies that round-off (7.7e-10 of the
+  // channel's largest value by t = 0.35 on this machine's native build; another processor contracts
+  // other sums): there each channel must agree to 1e-6 of its largest value, far below what a
+  // plastic step would change (order 1).
   std::size_t differ = 0;
-  for (const auto& c : a.channels())
+  double worst = 0.0;
+  for (const auto& c : a.channels()) {
+    double scale = 0.0;
     for (std::size_t r = 0; r < a.records(); ++r)
-      for (int k = 0; k < c.components; ++k) differ += a.value(c.path, r, k) != b.value(c.path, r, k);
+      for (int k = 0; k < c.components; ++k) scale = std::max(scale, std::abs(a.value(c.path, r, k)));
+    for (std::size_t r = 0; r < a.records(); ++r)
+      for (int k = 0; k < c.components; ++k) {
+        const double x = a.value(c.path, r, k), y = b.value(c.path, r, k);
+        differ += x != y;
+        if (scale > 0.0) worst = std::max(worst, std::abs(x - y) / scale);
+      }
+  }
+#ifdef SLIDELINE_PORTABLE_CODEGEN
   EXPECT_EQ(differ, 0u);
+#else
+  EXPECT_LE(worst, 1e-6) << differ << " values differ";
+  std::printf("native code generation: %zu values differ, worst %.3g of the channel's largest\n", differ, worst);
+#endif
 }
 
 // How the collapse moment converges with the number of through-thickness points: each rule's
