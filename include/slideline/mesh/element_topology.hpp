@@ -90,7 +90,7 @@ inline constexpr ElementTopology hex8_topology{"hex8", 3, 8, topology_detail::he
 inline constexpr ElementTopology quad4_topology{"quad4", 2, 4, topology_detail::quad4_faces,
                                                 "quadrilaterals", "Quadrilateral", 9,
                                                 &topology_detail::quad4_area};
-/// The 4-node tetrahedron: declared (faces, volume, output) but no element block uses it yet.
+/// The 4-node tetrahedron (TetBlock, *SECTION_SOLID ELFORM 10).
 inline constexpr ElementTopology tet4_topology{"tet4", 3, 4, topology_detail::tet4_faces,
                                                "tetrahedra", "Tetrahedron", 10,
                                                &topology_detail::tet4_volume};

@@ -36,7 +36,7 @@ struct SolidElement {
   bool operator==(const SolidElement&) const = default;
 };
 
-/// *ELEMENT_SHELL: 4-node quadrilateral (n3 == n4 for a triangle is not supported yet).
+/// *ELEMENT_SHELL: 4-node quadrilateral, or a 3-node triangle written with n3 == n4.
 struct ShellElement {
   Id id = 0;
   Id pid = 0;
@@ -60,7 +60,7 @@ struct Part {
 /// *SECTION_SOLID
 struct SectionSolid {
   Id secid = 0;
-  int elform = 1;  ///< 1 = constant-stress (one-point) hexahedron, the only one supported
+  int elform = 1;  ///< 1 (0) one-point hexahedron, 2 selective-reduced hexahedron, 10 tetrahedron
   Source src;
   bool operator==(const SectionSolid&) const = default;
 };
@@ -68,7 +68,7 @@ struct SectionSolid {
 /// *SECTION_SHELL
 struct SectionShell {
   Id secid = 0;
-  int elform = 2;      ///< 2 = Belytschko-Tsay, the only one supported
+  int elform = 2;      ///< 2 (0) Belytschko-Tsay (C0 triangles where n3 == n4), 4 C0 triangles
   Real shrf = 1.0;     ///< transverse shear factor (LS-DYNA default 1.0; 5/6 is usual)
   int nip = 2;         ///< through-thickness integration points
   Real propt = 1.0;
