@@ -5,7 +5,17 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=${JOBS:-2}
+# Each phase's wall time goes to stdout and to out/phase_times.txt (CI prints that file last, so
+# that its log's tail says where the time went; CI stops at 90 minutes).
+mkdir -p out
+: > out/phase_times.txt
+phase_start=${SECONDS}
+phase_done() {
+  echo "test.sh: $1 took $((SECONDS - phase_start)) s" | tee -a out/phase_times.txt
+  phase_start=${SECONDS}
+}
 bash scripts/build.sh
+phase_done "setup and Release build"
 # Tests named "Slow" (label verification-slow: the Hertz indentation runs, minutes each on 2 cores)
 # run only when asked: SLIDELINE_SLOW_TESTS=1 bash scripts/test.sh.
 if [ "${SLIDELINE_SLOW_TESTS:-0}" = "1" ]; then
@@ -13,6 +23,7 @@ if [ "${SLIDELINE_SLOW_TESTS:-0}" = "1" ]; then
 else
   ctest --test-dir build -j"$jobs" -LE slow --output-on-failure --timeout 900
 fi
+phase_done "Release tests"
 if [ "${SLIDELINE_SKIP_SANITIZERS:-0}" != "1" ]; then
   # The unit, CLI and verification tests (the 19 spec problems and every cli.* test included) under
   # ASan + UBSan with leak detection on; libgomp's thread pool is the only suppressed leak
@@ -34,9 +45,11 @@ if [ "${SLIDELINE_SKIP_SANITIZERS:-0}" != "1" ]; then
   cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLIDELINE_SANITIZE=ON \
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSLIDELINE_BUILD_BENCHMARKS=OFF
   cmake --build build-sanitize -j"$jobs" --target unit_tests verification_tests blockcontact cli_interrupt_tests cli_keywords_tests check_layers
+  phase_done "sanitized build"
   release_only='ThreadCount|On1To3Threads|_rotated$|ContactPatchDeck|FrequentOutput|SolidCore\.MergedSpecBlocks'
   release_only+='|ContactPatch\.[^/]*/(t3_.*5x5.*|t3_lagrange_4x4_fine_slave|t12_.*5x5|t10_lagrange_5x5|t10_.*fine_slave)_mortar$'
   ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions="$PWD/scripts/lsan_suppressions.txt" \
   UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize -L "unit|verification" -LE "package|slow" -E "${release_only}" -j"$jobs" --output-on-failure --timeout 900
+  phase_done "sanitized tests"
 fi
