@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # Runs a spec deck with state output, renders its last state coloured by von Mises with
 # scripts/render_state.py in pvbatch and checks the picture (not blank, stress read as a 6-component
-# tensor). Exit 77 (ctest: skipped) when pvbatch is not installed.
+# tensor). Exit 77 (ctest: skipped) when pvbatch is not installed, unless SLIDELINE_REQUIRE_PARAVIEW=1
+# (scripts/test.sh sets it after installing ParaView): then a missing pvbatch is a failure.
 # Usage: render_state_test.sh BLOCKCONTACT SOURCE_DIR OUT_DIR
 set -euo pipefail
 blockcontact=$1 source_dir=$2 out=$3
 if ! command -v pvbatch > /dev/null; then
+  if [[ "${SLIDELINE_REQUIRE_PARAVIEW:-0}" = "1" ]]; then
+    echo "pvbatch not found, and SLIDELINE_REQUIRE_PARAVIEW=1 (scripts/setup.sh --paraview installs it)"
+    exit 1
+  fi
   echo "pvbatch not found (apt-get install paraview xvfb xauth): skipped"
   exit 77
 fi
