@@ -87,6 +87,15 @@ void check_coupling(const model::Contact& card) {
 /// means nothing) before anything is built.
 void check_runs(const model::Contact& card) {
   check_coupling(card);
+  const bool transducer = card.form == model::ContactForm::force_transducer;  // (the reader warns)
+  if (card.penchk != 0 && card.penchk != 1 && !transducer)
+    throw_contact_not_implemented(card, "PENCHK = " + std::to_string(card.penchk) + " (card 2; only 1 is built)");
+  const bool penalty_sliding = card.enforcement == model::Enforcement::penalty &&
+                               (card.type == T::surface_to_surface || card.type == T::one_way ||
+                                card.type == T::nodes_to_surface || card.type == T::automatic);
+  if (card.penchk == 1 && !penalty_sliding && !transducer)
+    throw_contact_not_implemented(card, "PENCHK = 1 (card 2) off the penalty sliding interfaces (Types 3, 5, 10, 12 "
+                                        "and the automatic cards)");
   const bool lagrange = card.enforcement == model::Enforcement::lagrange;
   const bool penalty = card.enforcement == model::Enforcement::penalty;
   switch (card.type) {
@@ -205,6 +214,10 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   if (card.sofscl < 0.0 || card.vc < 0.0) throw InputError(where(card) + ": SOFSCL and VC must not be negative");
   spec.soft_scale = card.soft == 1 ? (card.sofscl > 0.0 ? card.sofscl : 0.1) : 0.0;
   spec.viscous_friction = card.vc;
+  const Real xpene = ctx.model.control_contact.xpene;
+  if (card.penchk == 1 && !(xpene > 0.0))
+    throw InputError(where(card) + ": PENCHK = 1 needs XPENE > 0 (*CONTROL_CONTACT card 2; 0 means 4)");
+  spec.penetration_check = card.penchk == 1 ? xpene : 0.0;
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
   spec.window = ContactWindow{card.bt, card.dt};

@@ -155,7 +155,7 @@ constexpr Rule kControl2[] = {
     {"USRFRC", 0, Use::inert, "storage for user friction subroutines (none here)"},
     {"NSBCS", 0, Use::speed, "cycles between contact searches"},
     {"INTERM", 0, Use::refuse, "intermittent searching"},
-    {"XPENE", 4, Use::refuse, "maximum penetration check multiplier"},
+    {"XPENE", 4, Use::honoured, ""},  // read by read_control_contact_cards (PENCHK = 1)
     {"SSTHK", 0, Use::refuse, "true shell thickness in single-surface contact"},
     {"ECDT", 0, Use::inert, "time step of eroding contact (no erosion here)"},
     {"TIEDPRJ", 0, Use::refuse, "bypass of the projection of tied nodes"},
@@ -230,8 +230,8 @@ bool is_tiebreak(ContactType t) {
   return t == ContactType::tiebreak_nodes || t == ContactType::tiebreak_surface;
 }
 
-/// Card 2: FS, FD, DC are honoured where the interface slides with friction; VC, VDC and PENCHK
-/// nowhere. BT and DT are the contact's birth and death (read and honoured by the builder).
+/// Card 2: FS, FD, DC are honoured where the interface slides with friction; VC, VDC and PENCHK = 1
+/// on the penalty sliding interfaces. BT and DT are the contact's birth and death (read and honoured by the builder).
 void check_card2(const Context& ctx, const model::Contact& c, const Line* l) {
   const std::string_view kw = c.keyword;
   if (l && (c.fs < 0.0 || c.fd < 0.0 || c.dc < 0.0))
@@ -260,7 +260,13 @@ void check_card2(const Context& ctx, const model::Contact& c, const Line* l) {
            constraint ? "viscous contact damping; this interface is a kinematic constraint, without a spring"
                       : "viscous contact damping of a tiebreak or Lagrange interface"});
   }
-  field(ctx, l, kw, "card 2", c.penchk, {"PENCHK", 0, Use::refuse, "release of deep penetrations"});
+  // PENCHK = 1: nodes deeper than XPENE (*CONTROL_CONTACT card 2) x the master segment's thickness
+  // are released (penalty sliding interfaces; contact.md "Release of deep penetrations").
+  if (c.penchk == 1 && penalty_sliding) return;
+  field(ctx, l, kw, "card 2", c.penchk,
+        {"PENCHK", 0, Use::refuse,
+         c.penchk == 1 ? "release of deep penetrations on a tied, tiebreak, sliding-only or Lagrange interface"
+                       : "release of deep penetrations: only PENCHK = 1 is built (2 uses another thickness rule)"});
 }
 
 /// Card 3: what each family of interfaces does with the stiffness and thickness fields.
@@ -462,6 +468,19 @@ int read_ignore(const Context& ctx, const Block& b, std::size_t offset, int inde
   return ignore;
 }
 
+/// XPENE (*CONTROL_CONTACT card 2, field 5): the next card still in `b`; 0 or blank is LS-DYNA's
+/// default 4, a negative value an InputError naming file, line and field.
+Real read_xpene(const Context& ctx, const Block& b) {
+  Real xpene = 4.0;
+  if (b.next >= b.cards.size()) return xpene;
+  const Line& l = b.cards[b.next];
+  Card(ctx, l, b.keyword, kStandard).get_or_default(4, "XPENE", xpene);
+  if (xpene < 0.0)
+    throw InputError(ctx.where(l.number) + b.keyword + " card 2: field XPENE must not be negative (got " + num(xpene) +
+                     ")");
+  return xpene;
+}
+
 }  // namespace
 
 void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c) {
@@ -496,6 +515,7 @@ void read_control_contact_cards(const Context& ctx, Block& b, model::ControlCont
   field(ctx, &card1, kw, "card 1", t.orien, {"ORIEN", 1, Use::refuse, "segment orientation option"});
   field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::inert, "mass of eroded nodes (no erosion here)"});
   t.ignore = read_ignore(ctx, b, 2, 0, "card 4");
+  t.xpene = read_xpene(ctx, b);
   check_remaining(ctx, b, kControl);
 }
 

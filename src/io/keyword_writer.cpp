@@ -260,8 +260,10 @@ void write_controls(const model::Model& m, std::string& o) {
   o += "*CONTROL_CONTACT\n$#  SLSFAC    RWPNAL    ISLCHK    SHLTHK    PENOPT    THKCHG     ORIEN    ENMASS\n";
   o += CardOut().r(cc.slsfac).r(cc.rwpnal).i(cc.islchk).i(cc.shlthk).i(cc.penopt).i(cc.thkchg).i(cc.orien)
            .i(cc.enmass).str();
-  if (cc.ignore != 0) {
-    o += "$# cards 2 and 3 (defaults), 4: IGNORE\n\n\n";
+  if (cc.ignore != 0 || cc.xpene != 4.0) {
+    o += "$#  USRSTR    USRFRC     NSBCS    INTERM     XPENE\n";
+    o += CardOut().i(0).i(0).i(0).i(0).r(cc.xpene).str();
+    o += "$# card 3 (defaults), card 4: IGNORE\n\n";
     o += CardOut().i(cc.ignore).str();
   }
 }

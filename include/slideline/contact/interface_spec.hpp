@@ -88,6 +88,8 @@ struct InterfaceSpec {
   /// VC (stress): the friction of each slave node capped at VC x its master segment's area
   /// (penalty Types 3, 5, 10, 12 with friction; the reader refuses VC elsewhere).
   Real viscous_friction = 0.0;
+  /// PENCHK = 1: XPENE (*CONTROL_CONTACT), PenaltyPassOptions::penetration_check; 0 for PENCHK = 0.
+  Real penetration_check = 0.0;
   TiebreakFailure failure;
   ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)
   /// Type 12: write interfaces/<title>/transmitted_force (the force between its parts).

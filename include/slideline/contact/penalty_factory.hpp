@@ -39,6 +39,7 @@ inline PenaltyPassOptions penalty_pass_options(const InterfaceSpec& spec, Real s
   o.keep_initial_penetrations = spec.keep_initial_penetrations;
   o.soft_scale = spec.soft_scale;
   o.viscous_friction = spec.viscous_friction;
+  o.penetration_check = spec.penetration_check;
   return o;
 }
 

@@ -401,6 +401,7 @@ struct ControlContact {
   int orien = 1;
   int enmass = 0;
   int ignore = 0;     ///< card 4: initial penetrations 0 moved out, 1 and 2 kept as the springs' zero
+  Real xpene = 4.0;   ///< card 2: PENCHK = 1 releases nodes deeper than XPENE x segment thickness
   bool operator==(const ControlContact&) const = default;
 };
 

@@ -20,7 +20,7 @@ namespace {
 using Type3 = SurfaceToSurfaceContact<ExponentialCoulomb>;
 
 /// Type 3 between the upper block's bottom (slaves, block 1) and the lower block's top (block 0).
-const PenaltyPasses* add_type3(TwoBlocks& m, bool keep_initial_penetrations = false) {
+const PenaltyPasses* add_type3(TwoBlocks& m, bool keep_initial_penetrations = false, Real xpene = 0.0) {
   Surface lower_top = m.lower.face(1, true);
   Surface upper_bottom = m.upper.face(0, false);
   upper_bottom.block.assign(upper_bottom.block.size(), 1);  // the upper block's elements
@@ -31,6 +31,7 @@ const PenaltyPasses* add_type3(TwoBlocks& m, bool keep_initial_penetrations = fa
   PenaltyPassOptions o;
   o.stiffness_scale = 1.0;
   o.keep_initial_penetrations = keep_initial_penetrations;
+  o.penetration_check = xpene;
   auto c = std::make_unique<Type3>(
       "type3",
       std::make_unique<PenaltyPass>(slaves, std::vector<Real>(slaves.size(), 0.0), lower_top,
@@ -171,4 +172,49 @@ TEST(PenaltyInitialPenetration, IgnoreKeepsThePenetrationAsTheSpringsZero) {
               static_cast<long>(kept.found), static_cast<long>(kept.moved), seated.bottom_y[0] - kept.bottom_y[0],
               depth, worst, worst_moved);
   EXPECT_LT(worst, 1e-3 * depth);
+}
+
+// PENCHK = 1 (LS-DYNA): a node deeper than XPENE x its master segment's thickness (1/20 of a solid
+// face's shorter diagonal) is released, on top of the geometric limit every pass applies (half
+// the face's diagonal, half its element's thickness). Upper block started 0.2 inside the lower one:
+// the lower block's top faces are 0.5 x 0.5 with elements 0.5 thick, so the geometric limit is
+// 0.25 and XPENE = 4 gives 4 x 0.7071 / 20 = 0.1414. Without PENCHK the 16 bottom nodes of the
+// upper block are found 0.2 deep and moved out before the first step; with XPENE = 4 they are
+// released (none found, none moved, and the first step carries no contact force); with XPENE = 8
+// (0.2828, above the geometric limit) the geometric limit governs and the 16 are moved out again.
+// (The reverse pass finds nothing in all three: the upper block's faces, 0.333 x 0.2, give a
+// geometric limit of 0.194 < 0.2.)
+TEST(PenaltyInitialPenetration, PenchkReleasesNodesDeeperThanXpeneTimesTheSegmentThickness) {
+  const Real depth = 0.2;
+  struct Found {
+    Index found = 0, moved = 0;
+    Real largest = 0.0, first = 0.0;
+  };
+  const auto start = [&](Real xpene) {
+    TwoBlocks m;
+    for (Index n : m.upper.all()) {
+      m.setup.nodes.x.y[n] -= depth;
+      m.setup.nodes.x0.y[n] -= depth;
+    }
+    m.setup.controls.end_time = 1e-3;
+    const PenaltyPasses* c = add_type3(m, false, xpene);
+    m.start();
+    Found f{c->initial_penetration_count(), c->moved_node_count(), c->largest_initial_penetration(), 0.0};
+    EXPECT_TRUE(m.sim().step());
+    f.first = m.sim().contacts()[0].slave_force().norm();
+    return f;
+  };
+  const Found off = start(0.0), on = start(4.0), loose = start(8.0);
+  std::printf("PENCHK 0: found %ld, moved %ld, deepest %.4f; XPENE 4: found %ld, moved %ld, first-step |F| %.3e; "
+              "XPENE 8: found %ld, moved %ld\n",
+              static_cast<long>(off.found), static_cast<long>(off.moved), off.largest, static_cast<long>(on.found),
+              static_cast<long>(on.moved), on.first, static_cast<long>(loose.found), static_cast<long>(loose.moved));
+  EXPECT_EQ(off.found, 16);
+  EXPECT_EQ(off.moved, 16);
+  EXPECT_NEAR(off.largest, depth, 1e-12);
+  EXPECT_EQ(on.found, 0);
+  EXPECT_EQ(on.moved, 0);
+  EXPECT_EQ(on.first, 0.0);
+  EXPECT_EQ(loose.found, 16);
+  EXPECT_EQ(loose.moved, 16);
 }

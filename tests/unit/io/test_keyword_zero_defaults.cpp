@@ -162,7 +162,11 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
        "u.k:4: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE card 2: field VDC = 20"},
       {contact_deck(card({"", "", "", "", "20"}, ""), c3, "", "SURFACE_TO_SURFACE_LAGRANGE"),
        "u.k:4: *CONTACT_SURFACE_TO_SURFACE_LAGRANGE card 2: field VDC = 20"},
-      {contact_deck(card({"", "", "", "", "", "1"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field PENCHK = 1"},
+      {contact_deck(card({"", "", "", "", "", "2"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: field PENCHK = 2"},
+      {contact_deck(card({"", "", "", "", "", "1"}, ""), c3, "", "SURFACE_TO_SURFACE_LAGRANGE"),
+       "u.k:4: *CONTACT_SURFACE_TO_SURFACE_LAGRANGE card 2: field PENCHK = 1"},
+      {contact_deck(card({"", "", "", "", "", "1"}, ""), c3, "", "TIED_SURFACE_TO_SURFACE"),
+       "u.k:4: *CONTACT_TIED_SURFACE_TO_SURFACE card 2: field PENCHK = 1"},
       {contact_deck(card({"-1"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: FS, FD or DC < 0"},
       {contact_deck(c2, card({"", "", "", "", "", "", "0.5"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field FSF = 0.5"},
       {contact_deck(c2, card({"", "", "", "", "", "", "", "2"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field VSF = 2"},
@@ -187,7 +191,6 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "3"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field PENOPT = 3"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field THKCHG = 1"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "", "2"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field ORIEN = 2"},
-      {"*CONTROL_CONTACT\n" + card({}, "") + card({"", "", "", "", "3.0"}, ""), "u.k:3: *CONTROL_CONTACT card 2: field XPENE = 3"},
       {"*CONTROL_CONTACT\n" + card({}, "") + card({}, "") + card({}, "") + card({}, "") + card({"1"}, ""),
        "u.k:6: *CONTROL_CONTACT card 5: field ISYM = 1"},
       // Fields of the other cards that the model does not store (they were read and dropped).
@@ -228,6 +231,31 @@ TEST(KeywordContactFields, IgnoreIsReadFromOptionalCardCAndControlCard4) {
   read_keyword_string(contact_deck(blank, blank, card_c, "TIED_SURFACE_TO_SURFACE"), "u.k", &w);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].message.find("field IGNORE = 2"), std::string::npos) << w[0].message;
+}
+
+TEST(KeywordContactFields, PenchkOneAndXpeneAreReadAndWrittenBack) {
+  const std::string blank = card({}, "");
+  const std::string control = "*CONTROL_CONTACT\n" + blank + card({"", "", "", "", "2.5"}, "");
+  const auto m = read_keyword_string(
+      "*KEYWORD\n" + control + contact_deck(card({"", "", "", "", "", "1"}, ""), blank).substr(9), "u.k");
+  EXPECT_EQ(m.contacts[0].penchk, 1);
+  EXPECT_EQ(m.control_contact.xpene, 2.5);
+  const auto back = read_keyword_string(write_keyword_string(m), "w.k");
+  EXPECT_EQ(back.contacts[0].penchk, 1);
+  EXPECT_EQ(back.control_contact.xpene, 2.5);
+  EXPECT_EQ(back.control_contact.ignore, 0);
+  // Blank and 0 are LS-DYNA's default 4.
+  const auto zero = read_keyword_string("*KEYWORD\n*CONTROL_CONTACT\n" + blank + card({"", "", "", "", "0"}, "") +
+                                        "*END\n", "u.k");
+  EXPECT_EQ(zero.control_contact.xpene, 4.0);
+  // A negative XPENE is an input error naming file, line and field.
+  try {
+    read_keyword_string("*KEYWORD\n*CONTROL_CONTACT\n" + blank + card({"", "", "", "", "-1"}, "") + "*END\n", "u.k");
+    ADD_FAILURE() << "XPENE = -1 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("u.k:4: *CONTROL_CONTACT card 2: field XPENE must not be negative"),
+              std::string::npos) << e.what();
+  }
 }
 
 TEST(KeywordContactFields, SoftSofsclAndVcAreReadWhereTheyAct) {

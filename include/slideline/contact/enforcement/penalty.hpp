@@ -96,6 +96,10 @@ struct PenaltyPassOptions {
   /// VC (stress): the tangential force of a slave node is capped at VC x the area of its master
   /// segment (at initialize()), below the Coulomb limit mu f_n. 0: no cap.
   Real viscous_friction = 0.0;
+  /// PENCHK = 1 (LS-DYNA): XPENE; a node deeper than XPENE x its master segment's thickness (a
+  /// shell's thickness, 1/20 of a solid face's shorter diagonal) is released, on top of the
+  /// geometric limit every pass applies (contact_depth_limit). 0: that limit alone.
+  Real penetration_check = 0.0;
 };
 
 /// The per-slave result of one cycle, kept for the serial scatter.

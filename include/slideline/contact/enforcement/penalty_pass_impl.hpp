@@ -22,7 +22,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
     }
     k_seg_[static_cast<std::size_t>(s)] = opt_.stiffness_scale * k;
   }
-  pairs_.set_depth_limits(nodes.x, blocks);
+  pairs_.set_depth_limits(nodes.x, blocks, opt_.penetration_check);
   initialize(nodes, std::move(k_seg_));
 }
 

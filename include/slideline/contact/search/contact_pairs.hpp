@@ -119,9 +119,11 @@ class ContactPairs {
   /// One offset per master segment (length) instead of the ShellOffsetRule's (a surface whose
   /// segments come from two sides with their own thickness rules); before initialize().
   void set_master_offsets(std::vector<Real> offsets) { master_offset_given_ = std::move(offsets); }
-  /// Per master segment, the deepest contact (contact_depth_limit), from the element blocks at x.
-  /// Without it, depth_limit() is half the projection's segment size.
-  void set_depth_limits(const Vec3Field& x, const std::vector<std::unique_ptr<ElementBlock>>& blocks);
+  /// Per master segment, the deepest contact (contact_depth_limit), from the element blocks at x;
+  /// with xpene > 0 (PENCHK = 1) at most xpene x penetration_check_thickness. Without a call,
+  /// depth_limit() is half the projection's segment size.
+  void set_depth_limits(const Vec3Field& x, const std::vector<std::unique_ptr<ElementBlock>>& blocks,
+                        Real xpene = 0.0);
 
   /// Offsets, margins, broad phase, cadence and the per-slave state at coordinates x. Allocates.
   void initialize(const Vec3Field& x);
@@ -209,10 +211,13 @@ class ContactPairs {
 };
 
 inline void ContactPairs::set_depth_limits(const Vec3Field& x,
-                                           const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
+                                           const std::vector<std::unique_ptr<ElementBlock>>& blocks, Real xpene) {
   depth_.resize(static_cast<std::size_t>(master_.segment_count()));
-  for (Index s = 0; s < master_.segment_count(); ++s)
-    depth_[static_cast<std::size_t>(s)] = contact_depth_limit(master_, s, blocks, x);
+  for (Index s = 0; s < master_.segment_count(); ++s) {
+    Real limit = contact_depth_limit(master_, s, blocks, x);
+    if (xpene > 0.0) limit = std::min(limit, xpene * penetration_check_thickness(master_, s, blocks, x));
+    depth_[static_cast<std::size_t>(s)] = limit;
+  }
 }
 
 inline void ContactPairs::initialize(const Vec3Field& x) {

@@ -107,6 +107,21 @@ inline Real contact_depth_limit(const Surface& master, Index s, const std::vecto
   return limit;
 }
 
+/// LS-DYNA's segment thickness of PENCHK = 1 (length): the shell's thickness for a shell segment,
+/// 1/20 of the shorter diagonal for a solid face (the shortest side of a triangular face). Without
+/// the segment's element in `blocks` (a surface given alone, tests), the solid rule.
+inline Real penetration_check_thickness(const Surface& master, Index s,
+                                        const std::vector<std::unique_ptr<ElementBlock>>& blocks, const Vec3Field& x) {
+  const std::size_t su = static_cast<std::size_t>(s);
+  const bool own_block = master.block.size() > su && static_cast<std::size_t>(master.block[su]) < blocks.size();
+  if (master.kind[su] == SegmentKind::shell && own_block) return segment_stiffness_data(master, s, blocks, x).thickness;
+  const Index* c = master.conn.data() + 4 * su;
+  const Real d02 = (x.get(c[2]) - x.get(c[0])).norm();
+  if (master.is_triangle(s))
+    return (1.0 / 20.0) * std::min({d02, (x.get(c[1]) - x.get(c[0])).norm(), (x.get(c[2]) - x.get(c[1])).norm()});
+  return (1.0 / 20.0) * std::min(d02, (x.get(c[3]) - x.get(c[1])).norm());
+}
+
 /// The offset of p from the normal line through the closest point of `pr` (length).
 inline Real lateral_offset(const Vec3& p, const Projection& pr) {
   return (p - pr.point - pr.gap * pr.normal).norm();
