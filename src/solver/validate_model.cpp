@@ -30,7 +30,7 @@ constexpr const char* kTetrahedra =
     "4-node tetrahedra (written as degenerate *ELEMENT_SOLID, N4 = N5 = ... = N8 or N5..N8 blank)";
 /// degenerate_kind of a pentahedron and of a pyramid (compared by address): LS-DYNA's forms
 /// N1 N2 N3 N4 N5 N5 N6 N6 and N1 N2 N3 N4 N5 N5 N5 N5, which ELFORM 1 and 2 parts run as
-/// hexahedra with the collapsed nodes (docs/solver.md "Elements").
+/// hexahedra with the collapsed nodes (docs/solver.md, "Pentahedra and pyramids").
 constexpr const char* kPentahedra = "6-node pentahedra (degenerate *ELEMENT_SOLID, N5 = N6 and N7 = N8)";
 constexpr const char* kPyramids = "5-node pyramids (degenerate *ELEMENT_SOLID, N5 = N6 = N7 = N8)";
 
