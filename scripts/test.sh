@@ -54,7 +54,7 @@ if [ "${SLIDELINE_SKIP_SANITIZERS:-0}" != "1" ]; then
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSLIDELINE_BUILD_BENCHMARKS=OFF
   cmake --build build-sanitize -j"$jobs" --target unit_tests verification_tests blockcontact cli_interrupt_tests cli_keywords_tests check_layers
   phase_done "sanitized build"
-  release_only='ThreadCount|On1To3Threads|_rotated$|ContactPatchDeck|FrequentOutput|SolidCore\.MergedSpecBlocks'
+  release_only='ThreadCount|On1To3Threads|_rotated$|ContactPatchDeck|FrequentOutput|SolidCore\.MergedSpecBlocks|Pentahedra\.Rotated'
   release_only+='|ContactPatch\.[^/]*/(t3_.*5x5.*|t3_lagrange_4x4_fine_slave|t12_.*5x5|t10_lagrange_5x5|t10_.*fine_slave)_mortar$'
   ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions="$PWD/scripts/lsan_suppressions.txt" \
   UBSAN_OPTIONS=print_stacktrace=1 \

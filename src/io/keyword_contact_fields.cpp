@@ -581,7 +581,9 @@ constexpr Rule kAccuracy1[] = {
 constexpr OptionalCard kAccuracyCards[] = {{"card 1", kAccuracy1}};
 
 constexpr Rule kSolid1[] = {
-    {"ESORT", 0, Use::inert, "sorting of degenerate solids, which are refused"},
+    {"ESORT", 0, Use::refuse,
+     "sorting of degenerate solids (LS-DYNA then runs pentahedra as ELFORM 15, not implemented; with ESORT 0 "
+     "they run as collapsed hexahedra)"},
     {"FMATRX", 0, Use::refuse, "method of the deformation gradient"},
     {"NIPTETS", 4, Use::inert, "integration points of tetrahedra, which are refused"},
     {"SWLOCL", 1, Use::output, "output system of spot weld solids"},

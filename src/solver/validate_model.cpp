@@ -28,6 +28,11 @@ constexpr Real kMaxConstant = 1e30;
 /// degenerate_kind of a tetrahedron (compared by address).
 constexpr const char* kTetrahedra =
     "4-node tetrahedra (written as degenerate *ELEMENT_SOLID, N4 = N5 = ... = N8 or N5..N8 blank)";
+/// degenerate_kind of a pentahedron and of a pyramid (compared by address): LS-DYNA's forms
+/// N1 N2 N3 N4 N5 N5 N6 N6 and N1 N2 N3 N4 N5 N5 N5 N5, which ELFORM 1 and 2 parts run as
+/// hexahedra with the collapsed nodes (docs/solver.md, "Pentahedra and pyramids").
+constexpr const char* kPentahedra = "6-node pentahedra (degenerate *ELEMENT_SOLID, N5 = N6 and N7 = N8)";
+constexpr const char* kPyramids = "5-node pyramids (degenerate *ELEMENT_SOLID, N5 = N6 = N7 = N8)";
 
 void positive(Problems& p, const model::Source& src, const char* card, const char* field, Real v) {
   if (!(v > 0.0) || !std::isfinite(v))
@@ -200,10 +205,8 @@ const char* degenerate_kind(const std::array<Id, 8>& n) {
   const bool tail_blank = n[4] == 0 && n[5] == 0 && n[6] == 0 && n[7] == 0;
   const bool tail_n4 = n[4] == n[3] && n[5] == n[3] && n[6] == n[3] && n[7] == n[3];
   if ((tail_blank || tail_n4) && std::set<Id>(n.begin(), n.begin() + 4).size() == 4) return kTetrahedra;
-  if (n[4] == n[5] && n[6] == n[7] && distinct.size() == 6)
-    return "6-node pentahedra (degenerate *ELEMENT_SOLID, N5 = N6 and N7 = N8)";
-  if (n[4] == n[5] && n[5] == n[6] && n[6] == n[7] && distinct.size() == 5)
-    return "5-node pyramids (degenerate *ELEMENT_SOLID, N5 = N6 = N7 = N8)";
+  if (n[4] == n[5] && n[6] == n[7] && distinct.size() == 6) return kPentahedra;
+  if (n[4] == n[5] && n[5] == n[6] && n[6] == n[7] && distinct.size() == 5) return kPyramids;
   return nullptr;
 }
 
@@ -218,14 +221,20 @@ std::unordered_map<Id, int> solid_forms(const model::Model& m) {
 }
 
 /// The shape of one *ELEMENT_SOLID against its part's ELFORM: a tetrahedron (N1 N2 N3 N4 N4 N4 N4
-/// N4, or N5-N8 blank) in an ELFORM 10 part, eight distinct nodes in any other; then its volume.
+/// N4, or N5-N8 blank) in an ELFORM 10 part; in an ELFORM 1 (0) or 2 part eight distinct nodes, a
+/// pentahedron N1 N2 N3 N4 N5 N5 N6 N6 or a pyramid N1 N2 N3 N4 N5 N5 N5 N5 (run, as LS-DYNA
+/// does, as hexahedra with the collapsed nodes); then its volume.
 void check_solid(const model::Model& m, const model::SolidElement& e, int elform,
                  const std::unordered_map<Id, std::size_t>& node_of, IssueGroups& bad, IssueGroups& unimplemented) {
   const auto src = model::element_source(m, e);
   const std::string id = std::to_string(e.id);
   const char* kind = degenerate_kind(e.n);
   const bool tet_form = elform == 10;
-  if (tet_form != (kind == kTetrahedra)) {
+  const bool hex_form = elform == 0 || elform == 1 || elform == 2;
+  const bool distinct = std::set<Id>(e.n.begin(), e.n.end()).size() == 8;
+  const bool fits = tet_form ? kind == kTetrahedra
+                             : distinct || (hex_form && (kind == kPentahedra || kind == kPyramids));
+  if (!fits) {
     if (tet_form)
       bad.add("*ELEMENT_SOLID: elements of an ELFORM 10 (tetrahedron) part that are not tetrahedra "
               "(N1 N2 N3 N4 N4 N4 N4 N4)",
@@ -233,10 +242,10 @@ void check_solid(const model::Model& m, const model::SolidElement& e, int elform
               "(N1 N2 N3 N4 N4 N4 N4 N4)", id, src);
     else if (kind)
       unimplemented.add(std::string("*ELEMENT_SOLID: ") + kind + " are not supported in a part of ELFORM " +
-                            std::to_string(elform) + (kind == kTetrahedra ? " (use ELFORM 10)" : " (only 8-node hexahedra)"),
+                            std::to_string(elform) + (kind == kTetrahedra ? " (use ELFORM 10)" : " (use ELFORM 1 or 2)"),
                         "*ELEMENT_SOLID " + id + " is one of the " + kind + ", which are not supported in a part of "
                         "ELFORM " + std::to_string(elform), id, src);
-    else if (std::set<Id>(e.n.begin(), e.n.end()).size() != 8)
+    else
       bad.add("*ELEMENT_SOLID: degenerate hexahedra (repeated nodes in a form slideline does not know)",
               "*ELEMENT_SOLID " + id + " repeats a node", id, src);
     return;

@@ -48,6 +48,7 @@ TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
       {"*CONTROL_SHELL\n\n0,1\n", "c.k:4: *CONTROL_SHELL card 2: field INTGRD = 1"},
       {"*CONTROL_ACCURACY\n0,2\n", "c.k:3: *CONTROL_ACCURACY card 1: field INN = 2 (invariant node numbering"},
       {"*CONTROL_SOLID\n0,1\n", "c.k:3: *CONTROL_SOLID card 1: field FMATRX = 1"},
+      {"*CONTROL_SOLID\n1\n", "c.k:3: *CONTROL_SOLID card 1: field ESORT = 1"},
       {"*CONTROL_BULK_VISCOSITY\n1.5,0.06,2\n", "c.k:3: *CONTROL_BULK_VISCOSITY card 1: field TYPE = 2"},
       {"*CONTROL_ACCURACY\n0\n1\n", "c.k:4: *CONTROL_ACCURACY: a card after card 1 is not read"},
   };
@@ -59,10 +60,10 @@ TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
 
 TEST(KeywordControls, TuningFieldsWarnNamingTheField) {
   std::vector<Diagnostic> warnings;
-  read_keyword_string("*KEYWORD\n*CONTROL_SHELL\n15\n*CONTROL_SOLID\n1\n*END\n", "c.k", &warnings);
+  read_keyword_string("*KEYWORD\n*CONTROL_SHELL\n15\n*CONTROL_SOLID\n0,0,0,2\n*END\n", "c.k", &warnings);
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(to_string(warnings[0]).find("c.k:3: *CONTROL_SHELL card 1: field WRPANG = 15"), std::string::npos);
-  EXPECT_NE(to_string(warnings[1]).find("c.k:5: *CONTROL_SOLID card 1: field ESORT = 1"), std::string::npos);
+  EXPECT_NE(to_string(warnings[1]).find("c.k:5: *CONTROL_SOLID card 1: field SWLOCL = 2"), std::string::npos);
 }
 
 // Mass scaling: DT2MS, MS1ST and ENDMAS are read; DT2MS with MS1ST = 0 (LS-DYNA re-scales every

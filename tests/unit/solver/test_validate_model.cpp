@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "slideline/core/error.hpp"
@@ -194,4 +195,36 @@ TEST(ValidateModel, SolidHourglassTypesRunOrAreRefusedNamingThePart) {
           << what;
     }
   }
+}
+
+// Pentahedra (N1 N2 N3 N4 N5 N5 N6 N6) and pyramids (N1 N2 N3 N4 N5 N5 N5 N5) pass in ELFORM 1
+// (0) and 2 parts, where they run as collapsed hexahedra; in an ELFORM 10 part they are refused,
+// and so is any other repeated-node form in any part (each naming the element and line);
+// ELFORM 15 (LS-DYNA's own pentahedron) is refused naming the field.
+TEST(ValidateModel, PentahedraAndPyramidsPassInHexahedronParts) {
+  const model::Model cube = read_keyword_file(deck("unit_cube.k"));
+  auto message = [&](std::array<Id, 8> n, int elform) -> std::string {
+    model::Model m = cube;
+    m.solids[0].n = n;
+    m.solid_sections[0].elform = elform;
+    try {
+      validate_model(m);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::array<Id, 8> penta{2, 1, 5, 6, 3, 3, 7, 7}, pyramid{1, 2, 3, 4, 5, 5, 5, 5};
+  for (const int elform : {0, 1, 2}) {
+    EXPECT_EQ(message(penta, elform), "") << elform;
+    EXPECT_EQ(message(pyramid, elform), "") << elform;
+    EXPECT_EQ(message({1, 2, 2, 4, 5, 6, 6, 8}, elform), deck("unit_cube.k") + ":26: *ELEMENT_SOLID 1 repeats a node")
+        << elform;
+  }
+  // Reversed, the pentahedron is inverted: its volume is checked as the hexahedron's.
+  EXPECT_NE(message({1, 2, 6, 5, 3, 3, 7, 7}, 1).find("*ELEMENT_SOLID 1 has non-positive volume"), std::string::npos);
+  EXPECT_NE(message(penta, 10).find(":26: *ELEMENT_SOLID 1 is in a part of *SECTION_SOLID ELFORM 10 but is not a "
+                                    "tetrahedron"),
+            std::string::npos);
+  EXPECT_NE(message(penta, 15).find("field ELFORM of *SECTION_SOLID: 15"), std::string::npos) << message(penta, 15);
 }
