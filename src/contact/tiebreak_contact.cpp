@@ -133,7 +133,7 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     // The failed share of the node's area is in contact (normal penalty and friction) with the
     // same stiffnesses per unit area as the tie: the normal force is continuous through a failure.
     const Real contact_area = area0_[k] - area_[k];
-    if (contact_area > 0.0) {
+    if (contact_area > 0.0 && !(released_[k] && p_.release_to_owner)) {
       const Real kk = kappa_[k] * contact_area;
       slave += contact_after_failure(k, compression_ * kk, kk, nodes, times, out);
     }

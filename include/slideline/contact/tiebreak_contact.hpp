@@ -72,6 +72,10 @@ struct TiebreakParameters {
   Real normal_exponent = 2.0; ///< NEN (Type 8; Type 9 uses 2)
   Real shear_exponent = 2.0;  ///< MES (Type 8; Type 9 uses 2)
   ExponentialCoulomb friction;
+  /// A released node (all of its area failed) leaves this class: its contact is the owner's (the
+  /// automatic pass of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, automatic_tiebreak_contact.hpp).
+  /// Until then the failed share of a partly failed node is in contact here, as in Type 9.
+  bool release_to_owner = false;
 };
 
 class TiebreakContact final : public ContactAlgorithm, public ContactForces {
