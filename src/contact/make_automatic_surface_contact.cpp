@@ -178,6 +178,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec&
   p.shear_failure = spec.failure.shear;
   p.friction = spec.friction;
   p.release_to_owner = true;
+  p.two_sided_contact = true;
   auto tie = std::make_unique<TiebreakContact>(spec.title, std::move(spec.slave.nodes), std::move(spec.slave.surface),
                                                std::move(spec.master.surface), p);
   return std::make_unique<AutomaticTiebreakContact>(std::move(tie), std::move(contact), std::move(a.from_slave),
