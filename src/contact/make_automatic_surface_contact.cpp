@@ -1,7 +1,8 @@
 // The LS-DYNA automatic cards, penalty (contact/automatic_surface_contact.hpp): the automatic pass
 // over both sides restricted to the cross pairs (*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE), or one way,
 // the slave side's nodes on the master side's segments (*CONTACT_AUTOMATIC_NODES_TO_SURFACE,
-// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE).
+// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE), and the pass that takes over the tie of
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK after failure (automatic_tiebreak_contact.hpp).
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -11,8 +12,10 @@
 #include <vector>
 
 #include "slideline/contact/automatic_surface_contact.hpp"
+#include "slideline/contact/automatic_tiebreak_contact.hpp"
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/contact/penalty_factory.hpp"
+#include "slideline/core/error.hpp"
 #include "slideline/mesh/surface_builder.hpp"
 
 namespace slideline {
@@ -21,8 +24,9 @@ namespace {
 
 /// The union of two sides' surfaces: the slave side's segments, then the master side's that are
 /// not already there (same element, same kind, same nodes), with adjacency built. `sides` gets
-/// one mask per segment (bit 1 slave side, bit 2 master side).
-Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t>& sides) {
+/// one mask per segment (bit 1 slave side, bit 2 master side); `from_a` the index in the union of
+/// each segment of `a`.
+Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t>& sides, std::vector<Index>& from_a) {
   using Key = std::tuple<Index, Index, SegmentKind, std::array<Index, 4>>;
   const auto key = [](const Surface& s, Index k) {
     std::array<Index, 4> n{};
@@ -34,9 +38,11 @@ Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t
   Surface out;
   std::map<Key, Index> seen;
   sides.clear();
+  from_a.assign(static_cast<std::size_t>(a.segment_count()), -1);
   const auto append = [&](const Surface& s, std::uint8_t bit) {
     for (Index k = 0; k < s.segment_count(); ++k) {
       const auto [it, fresh] = seen.emplace(key(s, k), out.segment_count());
+      if (bit == 1) from_a[static_cast<std::size_t>(k)] = it->second;
       if (!fresh) {
         sides[static_cast<std::size_t>(it->second)] |= bit;
         continue;
@@ -99,26 +105,31 @@ std::vector<Real> segment_offsets(const Surface& surface, const std::vector<std:
   return out;
 }
 
-}  // namespace
+/// The automatic pass of an automatic card and what its interface needs besides.
+struct AutomaticPass {
+  std::unique_ptr<PenaltyPass> pass;
+  std::vector<std::uint8_t> sides;  ///< per segment of the pass's surface (bit 1 slave, bit 2 master side)
+  std::vector<Index> from_slave;    ///< two-sided: per slave-side segment, its index in the pass's surface
+};
 
-std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   const bool two_sided = spec.form == model::ContactForm::automatic_surface_to_surface;
   // Two-sided: every node and segment of both sides, cross pairs only. One way: the slave side's
   // nodes against the master side's segments (every pair is a cross pair).
   ContactSide pass_side;  // the pass's slaves (nodes) and, for the mortar coupling, their surface
   Surface master;
-  std::vector<std::uint8_t> sides;
+  AutomaticPass out;
   if (two_sided) {
-    master = merge_sides(spec.slave.surface, spec.master.surface, sides);
+    master = merge_sides(spec.slave.surface, spec.master.surface, out.sides, out.from_slave);
     pass_side.surface = master;
     pass_side.nodes = master.nodes;
   } else {
     master = spec.master.surface;
-    sides.assign(static_cast<std::size_t>(master.segment_count()), 2);
+    out.sides.assign(static_cast<std::size_t>(master.segment_count()), 2);
     pass_side = spec.slave;
   }
   NodeSides nodes = node_sides(pass_side.nodes, spec);
-  std::vector<Real> offsets = segment_offsets(master, sides, spec);
+  std::vector<Real> offsets = segment_offsets(master, out.sides, spec);
   // Orientation of a solid node: its own faces (the union, the slave surface, or for a node set
   // the faces of the parts it lies on).
   const Surface own = two_sided              ? master
@@ -127,12 +138,51 @@ std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& 
   // The automatic pass (skip incident segments and a shell part's own segments, orientation of
   // solid faces, re-pick among the candidates between searches) at SLSFAC x SFS (the reader
   // refuses SFM != SFS for a one-pass interface).
-  auto pass = make_penalty_pass(pass_side, std::move(nodes.offset), master,
-                                penalty_pass_options(spec, spec.slave_stiffness, spec.master_shells));
-  pass->slave_part() = node_parts(pass_side);
-  pass->set_slave_orientation(SlaveOrientation(own, pass_side.nodes));
-  pass->set_sides(std::move(nodes.mask), sides, std::move(offsets));
-  return make_penalty_interface<AutomaticSurfaceContact>(spec, std::move(pass), std::move(sides));
+  out.pass = make_penalty_pass(pass_side, std::move(nodes.offset), master,
+                               penalty_pass_options(spec, spec.slave_stiffness, spec.master_shells));
+  out.pass->slave_part() = node_parts(pass_side);
+  out.pass->set_slave_orientation(SlaveOrientation(own, pass_side.nodes));
+  out.pass->set_sides(std::move(nodes.mask), out.sides, std::move(offsets));
+  return out;
+}
+
+}  // namespace
+
+std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  AutomaticPass a = make_automatic_pass(spec, ctx);
+  return make_penalty_interface<AutomaticSurfaceContact>(spec, std::move(a.pass), std::move(a.sides));
+}
+
+std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  for (const Surface* side : {&spec.slave.surface, &spec.master.surface})
+    for (Index s = 0; s < side->segment_count(); ++s)
+      if (side->kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
+        throw NotImplementedError(spec.where + ": shell segments on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK "
+                                               "are not implemented (the tie has no thickness offsets); solid faces only");
+  // The contact after failure: the card *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE's pass, each node's
+  // penetration at t = 0 its spring's zero (IGNORE = 1; the tie keeps its stand-off alike).
+  InterfaceSpec contact_spec = spec;
+  contact_spec.type = model::ContactType::automatic;
+  contact_spec.keep_initial_penetrations = true;
+  AutomaticPass a = make_automatic_pass(contact_spec, ctx);
+  std::vector<std::uint8_t> held_nodes(ctx.nodes.size(), 0);
+  std::vector<std::uint8_t> held_segments(a.sides.size(), 0);
+  a.pass->set_held(held_nodes, held_segments);  // views; the vectors' buffers move with them
+  auto contact = make_penalty_interface<AutomaticSurfaceContact>(contact_spec, std::move(a.pass), std::move(a.sides));
+  // The tie: Type 9's (failure per slave segment, NFLS / SFLS stresses, exponents 2), handing a
+  // released node to the pass.
+  TiebreakParameters p;
+  p.unit = TiebreakParameters::FailureUnit::segment;
+  p.penalty_factor = spec.slave_stiffness;
+  p.normal_failure = spec.failure.normal;
+  p.shear_failure = spec.failure.shear;
+  p.friction = spec.friction;
+  p.release_to_owner = true;
+  p.two_sided_contact = true;
+  auto tie = std::make_unique<TiebreakContact>(spec.title, std::move(spec.slave.nodes), std::move(spec.slave.surface),
+                                               std::move(spec.master.surface), p);
+  return std::make_unique<AutomaticTiebreakContact>(std::move(tie), std::move(contact), std::move(a.from_slave),
+                                                    std::move(held_nodes), std::move(held_segments));
 }
 
 }  // namespace slideline

@@ -25,6 +25,7 @@ std::unique_ptr<ContactAlgorithm> make_contact_interface(InterfaceSpec& spec, co
       return lagrange ? make_lagrange_contact(spec, ctx) : make_node_and_automatic_contact(spec, ctx);
     case T::tiebreak_nodes:
     case T::tiebreak_surface:
+      if (spec.form == model::ContactForm::automatic_surface_to_surface) return make_automatic_tiebreak_contact(spec, ctx);
       return make_tiebreak_contact(spec);
   }
   throw NotImplementedError(spec.where + ": unknown contact type");  // resolve_interface accepts none

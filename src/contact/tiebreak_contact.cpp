@@ -32,6 +32,25 @@ Real compression_factor(const std::vector<TiePoint>& links, const std::vector<Re
 
 }  // namespace
 
+Real TiebreakContact::tie_springs(const Surface& master, const Vec3Field& x) const {
+  Real springs = 0.0;
+  for (std::size_t k = 0; k < links_.size(); ++k) springs += kappa_[k] * segment_area(master, links_[k].segment, x);
+  return springs > 0.0 ? springs : 1.0;
+}
+
+Real TiebreakContact::reverse_springs(const ContactContext& c) const {
+  // The master side's nodes on tied slave segments (the tie search's tolerances), each with the
+  // stiffness a penalty pass gives it there: kappa_s x the slave segment's area.
+  const Surface& m = pairs_.master();
+  const std::vector<TiePoint> on_slave = find_tie_points(m.nodes, slave_surface_, c.nodes.x);
+  Real springs = 0.0;
+  for (const TiePoint& t : on_slave) {
+    if (t.segment < 0 || segment_failed_[static_cast<std::size_t>(t.segment)]) continue;
+    springs += stiffness_per_area(slave_surface_, t.segment, c, p_.penalty_factor) * segment_area(slave_surface_, t.segment, c.nodes.x);
+  }
+  return springs;
+}
+
 void TiebreakContact::initialize(const ContactContext& c) {
   const NodalFields& nodes = c.nodes;
   const Surface& master = pairs_.master();
@@ -88,6 +107,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   }
   area0_ = area_;
   compression_ = compression_factor(links_, kappa_, area_, master, nodes.x);
+  if (p_.two_sided_contact) compression_ *= 1.0 + reverse_springs(c) / tie_springs(master, nodes.x);
   released_.assign(n, 0);
   delta_.assign(n, Vec3::Zero());
   friction_force_.assign(n, Vec3::Zero());
@@ -133,7 +153,7 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     // The failed share of the node's area is in contact (normal penalty and friction) with the
     // same stiffnesses per unit area as the tie: the normal force is continuous through a failure.
     const Real contact_area = area0_[k] - area_[k];
-    if (contact_area > 0.0) {
+    if (contact_area > 0.0 && !(released_[k] && p_.release_to_owner)) {
       const Real kk = kappa_[k] * contact_area;
       slave += contact_after_failure(k, compression_ * kk, kk, nodes, times, out);
     }

@@ -1,8 +1,10 @@
 // *CONTACT_... cards: cards 1-3 and the tiebreak card 4 of a keyword of the contact keyword table
 // (model/contact_keywords.hpp), whose name the keyword table (keyword_table.cpp) has matched. See
 // docs/keywords.md, "Contact".
+#include <cstdio>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "keyword_card.hpp"
 #include "slideline/core/error.hpp"
@@ -61,6 +63,26 @@ void read_tiebreak_card4(const Card& k, model::Contact& c) {
     k.get(0, "OPTION", c.option);
     k.get(1, "NFLS", c.nfls);
     k.get(2, "SFLS", c.sfls);
+  }
+}
+
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK: OPTION 1 (the stress criterion, then the
+/// automatic contact) is built; the other laws of OPTION (2-11: damage, cohesive and mixed-mode
+/// laws) are refused, and so are NFLS, SFLS < 0 (curves in recent manuals). PARAM, ERATEN, ERATES,
+/// CT2CN and CN are refused by check_contact_fields (keyword_contact_fields.cpp).
+void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c, const Line* card4, int line) {
+  const std::string at = ctx.where(card4 ? card4->number : line) + c.keyword + " card 4";
+  if (!card4) throw InputError(at + " (OPTION NFLS SFLS PARAM ...) is missing");
+  if (c.option != 1)
+    throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) +
+                              " is not implemented; OPTION 1 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 "
+                              ">= 1, then automatic surface-to-surface contact) is the only tiebreak law built here");
+  for (const auto& [name, v] : {std::pair<const char*, Real>{"NFLS", c.nfls}, {"SFLS", c.sfls}}) {
+    if (v >= 0.0) continue;
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", v);
+    throw NotImplementedError(at + ": field " + name + " = " + value +
+                              " < 0 (a curve in recent manuals) is not implemented; give a stress >= 0");
   }
 }
 
@@ -126,6 +148,7 @@ void read_contact(const Context& ctx, Block& b, model::Model& m, const model::Co
       c.nflf = c.nfls;
       c.sflf = c.sfls;
     }
+    if (c.form == model::ContactForm::automatic_surface_to_surface) check_automatic_tiebreak_card4(ctx, c, card4, b.line);
   }
   // Type 5 with discrete slave nodes: SST is the nodal contact radius.
   if (c.type == ContactType::nodes_to_surface && c.sstyp == 4) c.radius = c.sst;

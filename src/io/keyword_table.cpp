@@ -182,6 +182,9 @@ std::string contact_description(const model::ContactKeyword& k) {
   // An LS-DYNA card without a DYNA3D number (model::ContactForm): runs with the type's pass.
   if (k.form == model::ContactForm::force_transducer)
     return "contact force transducer: the contact force on its side(s) as an interface history; adds no force";
+  if (k.form != model::ContactForm::dyna3d && k.type == model::ContactType::tiebreak_surface)
+    return "contact, LS-DYNA " + std::string(k.name) + ": OPTION 1, DYNA3D type 9's tie and failure law, then the "
+           "automatic surface-to-surface pass; penalty";
   if (k.form != model::ContactForm::dyna3d)
     return "contact, LS-DYNA " + std::string(k.name) + " on DYNA3D type " + std::to_string(k.dyna3d_type) +
            "'s automatic pass; penalty (_LAGRANGE is refused when the model is built)" +

@@ -72,6 +72,14 @@ struct TiebreakParameters {
   Real normal_exponent = 2.0; ///< NEN (Type 8; Type 9 uses 2)
   Real shear_exponent = 2.0;  ///< MES (Type 8; Type 9 uses 2)
   ExponentialCoulomb friction;
+  /// A released node (all of its area failed) leaves this class: its contact is the owner's (the
+  /// automatic pass of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, automatic_tiebreak_contact.hpp).
+  /// Until then the failed share of a partly failed node is in contact here, as in Type 9.
+  bool release_to_owner = false;
+  /// The contact taking over is two-sided (the automatic card): its master side's nodes that lie
+  /// on tied slave segments push too, each with its slave segment's stiffness kappa_s A_s. Those
+  /// springs join the compression factor c, so that the normal force does not jump at release.
+  bool two_sided_contact = false;
 };
 
 class TiebreakContact final : public ContactAlgorithm, public ContactForces {
@@ -145,6 +153,10 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   /// Type 9: the tie force on slave segment j (slave side) and the sum of its links' oriented normals.
   void segment_tie_force(Index j, const Vec3Field& x, Vec3& fj, Vec3& nj) const;
   void record_first_failure_stress(const Vec3Field& x);
+  /// Sum of kappa A_master over the links (the one-sided contact's springs), and the springs of
+  /// the master side's nodes on tied slave segments (two_sided_contact); force / length.
+  Real tie_springs(const Surface& master, const Vec3Field& x) const;
+  Real reverse_springs(const ContactContext& c) const;
   /// Moves `share` of link k's area from the tie to the contact, handing its tangential force
   /// over to the friction stick force; releases the node when no tied area is left.
   void hand_over(std::size_t k, Real share, const Vec3& n);

@@ -54,6 +54,8 @@ inline constexpr ContactKeyword kContactKeywords[] = {
      "automatic nodes to surface", ContactForm::automatic_nodes_to_surface},
     {"*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
      "forming one way", ContactForm::forming_one_way},
+    {"*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK", ContactType::tiebreak_surface, false, 9, Enforcement::penalty,
+     false, "automatic surface to surface tiebreak", ContactForm::automatic_surface_to_surface},
     {"*CONTACT_FORCE_TRANSDUCER_PENALTY", ContactType::surface_to_surface, false, 3, Enforcement::penalty, false,
      "force transducer", ContactForm::force_transducer},
 };

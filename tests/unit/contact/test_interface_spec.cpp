@@ -2,9 +2,13 @@
 // the one shell offset rule, the one friction law, the one table of what runs.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "slideline/contact/interface_spec.hpp"
+#include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/mesh/mesh_sets.hpp"
 #include "slideline/contact/shell_offset.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/scenarios/sslide.hpp"
@@ -141,6 +145,29 @@ TEST(InterfaceSpec, MortarCouplingIsRefusedWhereItIsNotBuilt) {
   EXPECT_NE(refusal("sslide9ps", 1, NotImplementedError("")).find("tied, tiebreak or sliding-only"), std::string::npos);
   EXPECT_NE(refusal("sslide5p", 1, NotImplementedError("")).find("node-set slave side (SSTYP 4)"), std::string::npos);
   EXPECT_NE(refusal("sslide3p", 2, InputError("")).find("neither 0 (DYNA3D's rule) nor 1 (mortar)"), std::string::npos);
+}
+
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK on shell segments (the tie has no thickness
+// offsets): refused by name, with the card's location, before anything is built.
+TEST(InterfaceSpec, AutomaticTiebreakRefusesShellSegments) {
+  InterfaceSpec spec;
+  spec.where = "deck.k:7: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK";
+  spec.type = model::ContactType::tiebreak_surface;
+  spec.form = model::ContactForm::automatic_surface_to_surface;
+  spec.slave.surface = shell_and_solid();
+  spec.master.surface = shell_and_solid();
+  const model::Model m;
+  const std::vector<std::unique_ptr<ElementBlock>> blocks;
+  const NodalFields nodes;
+  const MeshSets sets;
+  try {
+    make_automatic_tiebreak_contact(spec, ContactBuildContext{m, blocks, nodes, sets});
+    ADD_FAILURE() << "built";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.k:7: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK: shell segments"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -48,8 +48,10 @@ TEST(ContactKeywords, EachRowReadsAsItSaysAndIsWrittenUnderItsName) {
   for (const auto& k : model::kContactKeywords)
     for (const auto& s : spellings(k)) {
       SCOPED_TRACE(s.keyword);
+      // The automatic tiebreak card needs its card 4 (OPTION 1, the law built).
+      const bool card4 = k.type == model::ContactType::tiebreak_surface && k.form != model::ContactForm::dyna3d;
       const std::string deck = "*KEYWORD\n" + s.keyword + "\n" + (s.heading ? "         7a contact\n" : "") +
-                               "1,2\n*END\n";
+                               "1,2\n" + (card4 ? "0\n1\n1\n" : "") + "*END\n";
       const auto m = read_keyword_string(deck, "c.k");
       ASSERT_EQ(m.contacts.size(), 1u);
       const auto& c = m.contacts[0];
@@ -133,6 +135,53 @@ TEST(ContactKeywords, TheReadersTableKeepsTheOptionGrammar) {
                          "*CONTACT_SURFACE_TO_SURFACE_ID_MORTAR", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_TIED",
                          "*CONTACT_FORMING_SURFACE_TO_SURFACE_MORTAR"})
     EXPECT_FALSE(reads_keyword(kw)) << kw;
+}
+
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: OPTION 1 with NFLS, SFLS is read (stresses,
+// kept as the tiebreak failure fields) and written back; any other OPTION, a field of card 4 that
+// is not honoured and a curve (NFLS, SFLS < 0) are refused naming the file, line, field and value.
+TEST(ContactKeywords, AutomaticTiebreakCard4) {
+  const auto deck = [](const std::string& card4) {
+    return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n1\n" + card4 + "*END\n";
+  };
+  const auto m = read_keyword_string(deck("1,2.5,3.5\n"), "c.k");
+  ASSERT_EQ(m.contacts.size(), 1u);
+  const auto& c = m.contacts[0];
+  EXPECT_EQ(c.type, model::ContactType::tiebreak_surface);
+  EXPECT_EQ(c.form, model::ContactForm::automatic_surface_to_surface);
+  EXPECT_EQ(c.option, 1);
+  EXPECT_EQ(c.nflf, 2.5);
+  EXPECT_EQ(c.sflf, 3.5);
+  const std::string written = write_keyword_string(m);
+  EXPECT_NE(written.find("\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n"), std::string::npos) << written;
+  const auto again = read_keyword_string(written, "again.k");
+  ASSERT_EQ(again.contacts.size(), 1u);
+  EXPECT_EQ(again.contacts[0].option, 1);
+  EXPECT_EQ(again.contacts[0].nflf, 2.5);
+  EXPECT_EQ(again.contacts[0].sflf, 3.5);
+  EXPECT_EQ(again.contacts[0].fs, 0.2);
+
+  const auto refused = [&](const std::string& card4, const std::string& message) {
+    SCOPED_TRACE(card4);
+    try {
+      read_keyword_string(deck(card4), "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const NotImplementedError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
+  refused("2,2.5,3.5\n", at + "OPTION = 2 is not implemented");
+  refused("9,2.5,3.5\n", at + "OPTION = 9 is not implemented");
+  refused(",2.5,3.5\n", at + "OPTION = 0 is not implemented");
+  refused("1,-4,3.5\n", at + "NFLS = -4");
+  refused("1,2.5,-7\n", at + "SFLS = -7");
+  refused("1,2.5,3.5,0.1\n", at + "PARAM = 0.1");
+  refused("1,2.5,3.5,0,5\n", at + "ERATEN = 5");
+  refused("1,2.5,3.5,0,0,6\n", at + "ERATES = 6");
+  refused("1,2.5,3.5,0,0,0,0.5\n", at + "CT2CN = 0.5");
+  refused("1,2.5,3.5,0,0,0,0,1e5\n", at + "CN = 100000");
+  EXPECT_THROW(read_keyword_string(deck(""), "c.k"), InputError);  // card 4 missing
 }
 
 }  // namespace

@@ -181,6 +181,10 @@ class PenaltyPass {
     pairs_.set_sides(std::move(slave_sides), std::move(segment_sides));
     pairs_.set_master_offsets(std::move(segment_offsets));
   }
+  /// The pairs a tie still holds (ContactPairs::set_held); before initialize().
+  void set_held(std::span<const std::uint8_t> held_nodes, std::span<const std::uint8_t> held_segments) {
+    pairs_.set_held(held_nodes, held_segments);
+  }
   /// Part of each slave node (automatic pass: its own-part filter), set by the owner.
   std::vector<Id>& slave_part() { return pairs_.slave_parts(); }
   const std::vector<Id>& slave_part() const { return pairs_.slave_parts(); }

@@ -116,6 +116,14 @@ class ContactPairs {
     slave_side_mask_ = std::move(slave_sides);
     segment_side_mask_ = std::move(segment_sides);
   }
+  /// Pairs a tie still holds (the automatic tiebreak card, automatic_tiebreak_contact.hpp): a
+  /// slave whose node is nonzero in `held_nodes` (indexed by internal node) or a segment nonzero
+  /// in `held_segments` (indexed like master segments) is not admitted. Views of the owner's
+  /// arrays, which it updates between cycles; before initialize(); never called: nothing held.
+  void set_held(std::span<const std::uint8_t> held_nodes, std::span<const std::uint8_t> held_segments) {
+    held_node_ = held_nodes;
+    held_segment_ = held_segments;
+  }
   /// One offset per master segment (length) instead of the ShellOffsetRule's (a surface whose
   /// segments come from two sides with their own thickness rules); before initialize().
   void set_master_offsets(std::vector<Real> offsets) { master_offset_given_ = std::move(offsets); }
@@ -204,6 +212,8 @@ class ContactPairs {
   std::vector<std::uint8_t> slave_side_mask_;    ///< set_sides(): per slave (empty: no side filter)
   std::vector<std::uint8_t> segment_side_mask_;  ///< set_sides(): per master segment
   std::vector<Real> master_offset_given_;        ///< set_master_offsets() (empty: the rule's)
+  std::span<const std::uint8_t> held_node_;      ///< set_held(): per internal node (empty: none held)
+  std::span<const std::uint8_t> held_segment_;   ///< set_held(): per master segment
   std::vector<std::uint8_t> slave_solid_;  ///< skip_own_shell_part: the node has only solid faces
   Real allowance_ = 0.0;
   Real min_size_ = 1.0;
@@ -272,12 +282,15 @@ inline void ContactPairs::initialize(const Vec3Field& x) {
   }
 }
 
-/// Which segments slave i may meet: with set_sides(), the cross pairs only; its orientation
+/// Which segments slave i may meet: with set_sides(), the cross pairs only; no pair a tie holds
+/// (set_held()); its orientation
 /// (search/slave_orientation.hpp) and, with skip_own_shell_part, no self-contact of a shell part
 /// (a shell node or a shell segment never meets its own part).
 inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) const {
   const std::size_t su = static_cast<std::size_t>(s);
   if (!segment_side_mask_.empty() && (slave_side_mask_[i] | segment_side_mask_[su]) != 3) return false;
+  if (!held_node_.empty() && (held_node_[static_cast<std::size_t>(slaves_[i])] != 0 || held_segment_[su] != 0))
+    return false;
   if (opt_.skip_own_shell_part && (!slave_solid_[i] || master_.kind[su] == SegmentKind::shell) &&
       slave_part_[i] == master_.part[su])
     return false;

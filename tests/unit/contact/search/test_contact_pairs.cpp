@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -173,6 +174,34 @@ TEST(ContactPairs, SeededStageStaysWhileInsideThenTakesTheNearestNeighbour) {
   s.x.set(node, Vec3(2.4, 1.5, -0.01));  // beyond the edge x = 2: cell 5
   EXPECT_EQ(pairs.track(0, s.x).segment, 5);
   EXPECT_NEAR(pairs.points()[0].projection.gap, -0.01, 1e-12);
+}
+
+// set_held (the automatic tiebreak card): a held slave gets no segment and no slave gets a held
+// segment, at each search (and each re-pick); released, the pairs are those of a stage without it.
+TEST(ContactPairs, HeldNodesAndSegmentsAreNotAdmittedUntilReleased) {
+  Scene s = make_scene(4, 5, 0.1);
+  ContactPairsOptions o;
+  o.repick_between_searches = true;
+  ContactPairs pairs = make_pairs(s, std::make_unique<FclBroadPhase>(), o);
+  std::vector<std::uint8_t> held_node(s.x.size(), 0), held_segment(16, 0);
+  held_node[static_cast<std::size_t>(s.slaves[0])] = 1;
+  const Vec3 q = s.x.get(s.slaves[12]);  // the middle slave, over cell (2, 2)
+  const Index under = static_cast<Index>(std::floor(q[0])) + 4 * static_cast<Index>(std::floor(q[1]));
+  held_segment[static_cast<std::size_t>(under)] = 1;
+  pairs.set_held(held_node, held_segment);
+  pairs.initialize(s.x);
+  pairs.locate(s.x);
+  EXPECT_EQ(pairs.points()[0].segment, -1);
+  EXPECT_NE(pairs.points()[12].segment, under);
+  for (const ContactPoint& p : pairs.points()) EXPECT_NE(p.segment, under);
+  held_node.assign(held_node.size(), 0);
+  held_segment.assign(held_segment.size(), 0);
+  pairs.locate(s.x);  // a re-pick between searches sees the release
+  ContactPairs free = make_pairs(s, std::make_unique<FclBroadPhase>(), o);
+  free.initialize(s.x);
+  free.locate(s.x);
+  for (std::size_t i = 0; i < free.points().size(); ++i) EXPECT_EQ(pairs.points()[i].segment, free.points()[i].segment) << i;
+  EXPECT_EQ(pairs.points()[12].segment, under);
 }
 
 TEST(ContactPairs, ThreadCountIndependent) {
