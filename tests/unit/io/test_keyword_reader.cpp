@@ -111,7 +111,7 @@ TEST(KeywordReader, ReadsEveryContactCard) {
   EXPECT_DOUBLE_EQ(c[7].sflf, 1e4);
   EXPECT_DOUBLE_EQ(c[7].nen, 2.0);
   EXPECT_EQ(c[8].type, ContactType::tiebreak_surface);
-  EXPECT_EQ(c[8].option, 2);
+  EXPECT_EQ(c[8].option, 0);
   EXPECT_DOUBLE_EQ(c[8].nfls, 9.0);
   EXPECT_DOUBLE_EQ(c[8].nflf, 9.0);  // NFLS/SFLS are mirrored into nflf/sflf for type 9
   EXPECT_DOUBLE_EQ(c[8].sflf, 1e4);

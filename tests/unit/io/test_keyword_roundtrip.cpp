@@ -162,7 +162,6 @@ model::Model full_model() {
   c8.mes = 1.5;
   m.contacts.push_back(c8);
   auto c9 = contact(ContactType::tiebreak_surface, Enforcement::penalty);
-  c9.option = 2;
   c9.nfls = c9.nflf = 9.0;
   c9.sfls = c9.sflf = 1e4;
   m.contacts.push_back(c9);

@@ -182,6 +182,8 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {contact_deck(c2, card({"10", "5"}, ""), "", "NODES_TO_SURFACE"), "u.k:5: *CONTACT_NODES_TO_SURFACE card 3: field SFM = 5"},
       {contact_deck(c2, card({"", "", "0.1"}, ""), "", "TIED_SURFACE_TO_SURFACE"), "card 3: field SST = 0.1"},
       {contact_deck(c2, c3, card({"", "1", "1", "0.5"}, ""), "TIEBREAK_SURFACE_TO_SURFACE"), "card 4: field PARAM = 0.5"},
+      {contact_deck(c2, c3, card({"2", "1", "1"}, ""), "TIEBREAK_SURFACE_TO_SURFACE"),
+       "u.k:6: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE card 4: field OPTION = 2"},
       {"*SECTION_SOLID\n" + card({"1", "1", "3"}, ""), "u.k:2: *SECTION_SOLID card 1: field AET = 3"},
       {"*SECTION_SHELL\n" + card({"1", "2", "", "", "", "", "1"}, ""), "u.k:2: *SECTION_SHELL card 1: field ICOMP = 1"},
       {"*SECTION_SHELL\n" + card({"1", "2", "", "", "", "1"}, ""), "u.k:2: *SECTION_SHELL card 1: field QR/IRID = 1"},
