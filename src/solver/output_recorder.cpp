@@ -50,6 +50,18 @@ void OutputRecorder::build_channels(const OutputSources& src) {
     channels_.push_back({"nodes/" + std::to_string(src.nodes.ids[i]) + "/displacement", 3});
   }
   for (const char* e : EnergyReport::names) channels_.push_back({std::string("energy/") + e, 1});
+  plastic_parts_.clear();
+  for (std::size_t b = 0; b < src.blocks.size(); ++b) {
+    if (!src.blocks[b]->has_plasticity()) continue;
+    const Id part = src.blocks[b]->part_id();
+    auto it = std::find_if(plastic_parts_.begin(), plastic_parts_.end(), [&](const PlasticPart& p) { return p.part == part; });
+    if (it == plastic_parts_.end()) it = plastic_parts_.insert(plastic_parts_.end(), PlasticPart{part, {}});
+    it->blocks.push_back(b);
+  }
+  for (const PlasticPart& p : plastic_parts_) {
+    channels_.push_back({"parts/" + std::to_string(p.part) + "/max_plastic_strain", 1});
+    channels_.push_back({"parts/" + std::to_string(p.part) + "/plastic_work", 1});
+  }
   std::size_t width = 0;
   for (const auto& c : channels_) width += c.components;
   history_values_.assign(width, 0.0);
@@ -186,6 +198,12 @@ void OutputRecorder::collect_history(const OutputSources& src) {
   }
   for (Index i : src.history_nodes) put3(src.nodes.displacement(i));
   for (Real v : src.energy.values()) values[k++] = v;
+  for (const PlasticPart& p : plastic_parts_) {
+    PlasticityTotals t;
+    for (std::size_t b : p.blocks) t += src.blocks[b]->plasticity_totals(src.nodes);
+    values[k++] = t.max_plastic_strain;
+    values[k++] = t.plastic_work;
+  }
 }
 
 void OutputRecorder::record(const OutputSources& src, Real t, Real history_interval, Real state_interval, Real tol,

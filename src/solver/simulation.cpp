@@ -172,20 +172,30 @@ void Simulation::resolve_body_loads(const std::vector<std::vector<Real>>& block_
   }
 }
 
+void Simulation::refuse_timed_ties_on_rigid_bodies() const {
+  // A rigid body's mass properties take the slaves tied to its nodes once, at the start
+  // (initialize_contacts): a tie onto a rigid body that is born or dies mid-run would change them.
+  // Ties whose masters are all deformable, and rigid walls (no body, no mass), are not concerned.
+  const auto rigid = roles_.rigid();
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    if (!contacts_.window(k).timed() || !contacts_[k].condenses()) continue;
+    for (Index i : contacts_[k].tie_master_nodes())
+      if (rigid[static_cast<std::size_t>(i)])
+        throw NotImplementedError("contact " + contacts_[k].name() +
+                                  ": a tied interface with a birth or death time (BT, DT) whose master surface is on "
+                                  "a rigid body (node " + std::to_string(nodes_.ids[static_cast<std::size_t>(i)]) +
+                                  ") is not supported: the body takes the mass of the slaves tied to it once, at the "
+                                  "start");
+  }
+}
+
 void Simulation::initialize_contacts() {
   // Contact interfaces, then the nodes their ties dictate, then the rigid bodies (which need the
   // effective mass: a slave tied to a rigid master moves with the body).
   const Index n = static_cast<Index>(nodes_.size());
   contacts_.initialize(ContactContext{nodes_, blocks_, &sets_, roles_.rigid(), diagnostics_});
   contacts_.resolve_initial_penetrations(nodes_);
-  // A rigid body's mass properties take the tied slaves condensed onto it once, here: a tie that
-  // is born or dies mid-run would change them.
-  if (!constraints_.empty())
-    for (std::size_t k = 0; k < contacts_.size(); ++k)
-      if (contacts_.window(k).timed() && contacts_[k].condenses())
-        throw NotImplementedError("contact " + contacts_[k].name() +
-                                  ": a tied interface with a birth or death time (BT, DT) in a model with rigid "
-                                  "bodies is not supported");
+  refuse_timed_ties_on_rigid_bodies();
   classify_contact_nodes();
   if (has_contact()) {
     f_total_.resize(n);

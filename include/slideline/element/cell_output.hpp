@@ -52,6 +52,21 @@ Real plastic_strain_of(const State& s, int lane = 0) {
     return 0.0;
 }
 
+/// A law state with an effective plastic strain `eps` and a plastic work density `work` (the J2
+/// laws' states, solid and shell).
+template <class State>
+concept PlasticState = requires(const State& s) {
+  s.eps;
+  s.work;
+};
+
+/// The plastic work density a law's state holds (its member `work`, force/length^2: the sum of
+/// sigma : d eps_p over its increments, per unit current volume), lane l of a batch state.
+template <PlasticState State>
+Real plastic_work_density_of(const State& s, int lane = 0) {
+  return lane_value(s.work, lane);
+}
+
 /// Lane l of a lane tensor as a SymTensor6.
 inline SymTensor6 sym6(const Tensor3<Lanes>& t, int l) {
   return {t[0][0][l], t[1][1][l], t[2][2][l], t[0][1][l], t[1][2][l], t[0][2][l]};

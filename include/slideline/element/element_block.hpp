@@ -43,6 +43,20 @@ struct BlockEnergy {
   }
 };
 
+/// The plasticity of a block at an output time, for the history channels of its part
+/// (docs/output.md, "History channels").
+struct PlasticityTotals {
+  Real max_plastic_strain = 0.0;  ///< largest effective plastic strain of its integration points
+  Real plastic_work = 0.0;        ///< plastic work of its elements (force x length)
+
+  /// Combines two blocks of one part: the larger strain, the sum of the works.
+  PlasticityTotals& operator+=(const PlasticityTotals& o) {
+    max_plastic_strain = std::max(max_plastic_strain, o.max_plastic_strain);
+    plastic_work += o.plastic_work;
+    return *this;
+  }
+};
+
 /// Reduces the per-chunk results of an element loop in chunk order (so the result does not depend
 /// on the thread count): throws InstabilityError naming the first bad element (`bad[c] >= 0` is an
 /// element index; `ids` maps it to the deck id), adds the hourglass, bulk-viscosity and
@@ -133,6 +147,18 @@ class ElementBlock : public MeshBlock {
   virtual void cell_outputs(const NodalFields& /*nodes*/, std::span<CellOutput> out) const {
     std::fill(out.begin(), out.end(), CellOutput{});
   }
+
+  /// True when the block's law has an effective plastic strain and a plastic work (the J2 laws,
+  /// material/j2_plasticity.hpp, piecewise_plasticity.hpp, shell_plasticity.hpp): its part gets
+  /// the plastic history channels.
+  virtual bool has_plasticity() const { return false; }
+
+  /// At an output time (not inside a step; allocates nothing, sums in element order): the largest
+  /// effective plastic strain of the block's integration points and its plastic work, the sum over
+  /// the points of the law's plastic work density (per unit current volume, accumulated increment
+  /// by increment) times the point's share of the element's current volume. Zero for a block
+  /// without plasticity.
+  virtual PlasticityTotals plasticity_totals(const NodalFields& /*nodes*/) const { return {}; }
 
   /// Deck id of the block's material (*PART MID), for the output; 0 when not set.
   Id material_id() const { return material_id_; }

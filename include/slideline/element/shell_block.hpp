@@ -510,6 +510,27 @@ class BasicShellBlock final : public ElementBlock {
     }
   }
 
+  bool has_plasticity() const override { return PlasticState<State>; }
+
+  /// ElementBlock::plasticity_totals: each through-thickness point's `eps`, and its `work` times
+  /// its share w/2 of the current area times the thickness (the section's, which does not change).
+  PlasticityTotals plasticity_totals(const NodalFields& nodes) const override {
+    PlasticityTotals t;
+    if constexpr (PlasticState<State>) {
+      const int n = rule_.n;
+      for (Index e = 0; e < element_count(); ++e) {
+        const Real area = e < nq_ ? shell_bt::local_geometry(gather(nodes.x, e)).area
+                                  : shell_c0tri::local_geometry(gather_triangle(nodes.x, e)).area;
+        const State* st = state_.data() + static_cast<std::size_t>(e) * n;
+        for (int ip = 0; ip < n; ++ip) {
+          t.max_plastic_strain = std::max(t.max_plastic_strain, plastic_strain_of(st[ip]));
+          t.plastic_work += 0.5 * rule_.w[ip] * plastic_work_density_of(st[ip]) * area * sec_.thickness;
+        }
+      }
+    }
+    return t;
+  }
+
  private:
   /// A point's local stress (xx, yy, xy, yz, xz; zz = 0) in global components, e = the
   /// element's frame (columns e1, e2, e3).

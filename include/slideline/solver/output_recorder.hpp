@@ -76,6 +76,13 @@ class OutputRecorder {
   std::vector<HistoryChannel> channels_;
   std::vector<std::size_t> contact_outputs_;     // extra history values each interface writes
   std::vector<std::size_t> constraint_outputs_;  // history values each constraint writes
+  // The parts with plasticity (ElementBlock::has_plasticity), in the order of their first block,
+  // each with its blocks: the channels parts/<id>/max_plastic_strain and parts/<id>/plastic_work.
+  struct PlasticPart {
+    Id part = 0;
+    std::vector<std::size_t> blocks;
+  };
+  std::vector<PlasticPart> plastic_parts_;
   std::vector<Real> history_values_;
   std::vector<Real> state_values_;
   Real last_history_ = -1.0;

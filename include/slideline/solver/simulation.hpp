@@ -131,6 +131,9 @@ class Simulation {
   void check_nodal_moments() const;
   void resolve_body_loads(const std::vector<std::vector<Real>>& block_mass);
   void initialize_contacts();
+  /// Throws NotImplementedError for a tied interface with BT or DT whose master nodes include a
+  /// rigid body's (its mass properties take the tied slaves once).
+  void refuse_timed_ties_on_rigid_bodies() const;
   void classify_contact_nodes();
   OutputSources output_sources() const;
 

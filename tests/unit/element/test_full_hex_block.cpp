@@ -9,6 +9,7 @@
 #include "slideline/element/full_hex_block.hpp"
 #include "slideline/element/hex_block.hpp"
 #include "slideline/material/elastic.hpp"
+#include "slideline/material/j2_plasticity.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
 #include "test_support/block_eval.hpp"
 #include "test_support/hex_fixtures.hpp"
@@ -112,4 +113,39 @@ TEST(FullHexBlock, StiffnessHasOnlyRigidZeroModesAndOneVolumetricMode) {
     }
     EXPECT_GT(ev[23], 0.5 * mat.bulk_modulus()) << "nu " << nu;
   }
+}
+
+// J2 plasticity's history totals (ElementBlock::plasticity_totals) under a homogeneous stretch to 3x
+// the yield strain on the distorted patch: every Gauss point carries the one-point hexahedron's
+// state, so the largest plastic strain and the plastic work (the Gauss points' detJ sum against the
+// one-point elements' volumes) agree.
+TEST(FullHexBlock, PlasticityTotalsMatchTheOnePointHexahedron) {
+  const test_support::PatchMesh p = test_support::make_patch_mesh();
+  const J2Plasticity law({7.8, 2.0e5, 0.3, 250.0, 1.0e3, 1.0, 0.0, 0.0});
+  FullHexBlock<J2Plasticity> full(1, law, BulkViscosity{0.0, 0.0}, p.conn, p.ids);
+  HexBlock<J2Plasticity> one(2, law, HexHourglass{}, BulkViscosity{0.0, 0.0}, p.conn, p.ids);
+  NodalFields a = p.nodes, b = p.nodes;
+  CornerBuffer ca, cb;
+  test_support::prepare(full, a, ca);
+  test_support::prepare(one, b, cb);
+  const Real dt = 1e-3, rate = 3.0 * 250.0 / 2.0e5 / (30 * dt);
+  for (int s = 1; s <= 30; ++s) {
+    const Real l = 1.0 + rate * dt * s, lat = 1.0 - 0.5 * rate * dt * s;
+    const Vec3 stretch(l, lat, lat), vel(rate, -0.5 * rate, -0.5 * rate);
+    for (NodalFields* n : {&a, &b})
+      for (Index i = 0; i < 27; ++i) {
+        n->x.set(i, stretch.cwiseProduct(n->x0.get(i)));
+        n->v.set(i, vel.cwiseProduct(n->x0.get(i)));
+      }
+    BlockEnergy e;
+    full.compute_forces(a, dt, ca, e);
+    one.compute_forces(b, dt, cb, e);
+  }
+  ASSERT_TRUE(full.has_plasticity());
+  ASSERT_FALSE(make_block(p, ElasticSolid(1.0, 1000.0, 0.3)).has_plasticity());
+  const PlasticityTotals tf = full.plasticity_totals(a), to = one.plasticity_totals(b);
+  EXPECT_GT(to.max_plastic_strain, 1e-3);
+  EXPECT_NEAR(tf.max_plastic_strain, to.max_plastic_strain, 1e-12);
+  EXPECT_GT(to.plastic_work, 0.0);
+  EXPECT_NEAR(tf.plastic_work, to.plastic_work, 1e-9 * to.plastic_work);
 }

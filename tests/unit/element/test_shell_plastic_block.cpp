@@ -111,6 +111,18 @@ TEST(ShellPlasticBlock, EquibiaxialStretchClosedFormInAnyFrame) {
   EXPECT_NEAR(b[0].plastic_strain, a[0].plastic_strain, 1e-12);
   EXPECT_NEAR(b[0].energy_density, a[0].energy_density, 1e-10);
   EXPECT_GT(a[0].energy_density, kSy * a[0].plastic_strain);  // elastic energy plus plastic work
+  // The history channels' totals (ElementBlock::plasticity_totals). Equibiaxial: sigma_vm = sigma,
+  // so eps_p = (sigma - sigma_y) / Ep at every point, and the plastic work is the area under
+  // sigma_vm(eps_p), sigma_y eps_p + Ep eps_p^2 / 2, times the current volume 1.005^2 x t.
+  const Real ep = kE * kEt / (kE - kEt), eps_p = (ref - kSy) / ep;
+  for (const Plate* plate : {&flat, &tilted}) {
+    ASSERT_TRUE(plate->block.has_plasticity());
+    const PlasticityTotals t = plate->block.plasticity_totals(plate->nodes);
+    EXPECT_EQ(t.max_plastic_strain, plate == &flat ? a[0].plastic_strain : b[0].plastic_strain);
+    EXPECT_NEAR(t.max_plastic_strain, eps_p, 1e-4 * eps_p);
+    const Real volume = 1.005 * 1.005 * 0.05;
+    EXPECT_NEAR(t.plastic_work, volume * (kSy * eps_p + 0.5 * ep * eps_p * eps_p), 1e-3 * volume * kSy * eps_p);
+  }
 }
 
 TEST(ShellPlasticBlock, RigidRotationKeepsTheLocalStressAndPlasticStrain) {

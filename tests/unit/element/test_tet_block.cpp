@@ -178,4 +178,12 @@ TEST(TetBlock, J2LawGivesTheHexahedronsStressUnderTheSameHomogeneousHistory) {
     EXPECT_NEAR(c.plastic_strain, ho[0].plastic_strain, 1e-12);
     for (int k = 0; k < 6; ++k) EXPECT_NEAR(c.stress[k], ho[0].stress[k], 1e-9 * 250.0) << k;
   }
+  // The history channels' totals (ElementBlock::plasticity_totals): the same state on the same
+  // domain, so the same largest strain and the same plastic work from the two volume sums.
+  ASSERT_TRUE(tet_block.has_plasticity());
+  const PlasticityTotals tt = tet_block.plasticity_totals(p.nodes), th = hexes.plasticity_totals(hex_nodes);
+  EXPECT_NEAR(tt.max_plastic_strain, to[0].plastic_strain, 1e-12);  // the elements differ by round-off
+  EXPECT_NEAR(th.max_plastic_strain, tt.max_plastic_strain, 1e-12);
+  EXPECT_GT(tt.plastic_work, 0.0);
+  EXPECT_NEAR(tt.plastic_work, th.plastic_work, 1e-9 * th.plastic_work);
 }

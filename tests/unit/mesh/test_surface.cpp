@@ -252,7 +252,8 @@ TEST(SurfaceFromSegments, MatchesThePartSurfaceInAnyOrientation) {
 TEST(SurfaceFromSegments, SharedFaceBelongsToTheSideTheOrderPicks) {
   auto sim = build_simulation(test_support::hex_grid_model(2, 1, 1));
   // The face x = 1 between elements 0 and 1: nodes (1,0,0) (1,1,0) (1,1,1) (1,0,1).
-  auto n = [](int i, int j, int k) { return test_support::grid_node(i, j, k, 2, 1) - 1; };
+  // Deck ids are Id (64-bit), segment nodes internal Index: convert once, here.
+  auto n = [](int i, int j, int k) { return static_cast<Index>(test_support::grid_node(i, j, k, 2, 1) - 1); };
   const std::vector<SegmentNodes> plus{{n(1, 0, 0), n(1, 1, 0), n(1, 1, 1), n(1, 0, 1)}};
   const std::vector<SegmentNodes> minus{{n(1, 0, 0), n(1, 0, 1), n(1, 1, 1), n(1, 1, 0)}};
   const Surface a = build_surface_from_segments(sim->blocks(), sim->nodes(), plus, "test");

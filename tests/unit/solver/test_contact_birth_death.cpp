@@ -4,7 +4,8 @@
 //  - a contact that dies mid-run releases: from its death on it carries no force and the upper
 //    body moves freely under its load;
 //  - a tied contact born mid-run ties the bodies where they are at its birth;
-//  - DT = 0 on the card is the default (never dies), as a blank field is.
+//  - DT = 0 on the card is the default (never dies), as a blank field is;
+//  - a timed tie runs beside a rigid wall and is refused onto a rigid body.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/io/keyword_writer.hpp"
+#include "slideline/model/model.hpp"
 #include "slideline/scenarios/sslide.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/output_sink.hpp"
@@ -173,6 +175,54 @@ TEST(ContactBirthDeath, NegativeOrReversedTimesAreRefused) {
     FAIL() << "DT before BT accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("field DT of *CONTACT"), std::string::npos) << e.what();
+  }
+}
+
+// The refusal of a tied interface with BT or DT that a rigid body's mass properties protect (the
+// body takes the mass of the slaves tied to it once, at the start) fires for that alone: a model
+// whose only nodal constraint is a rigid wall (no body) runs the timed tie, and a tie whose master
+// surface is on a rigid body (sslide2kt's shell-on-shell skin made rigid, as sslide10lr's) is
+// refused naming the interface, the rigid body and a node of it.
+TEST(ContactBirthDeath, TimedTieRunsBesideARigidWallAndIsRefusedOnARigidMaster) {
+  SslideProblem p = scenarios::make_sslide_problem("sslide2kt");
+  const Real death = 0.05;
+  model::Model walled = p.model;
+  for (auto& c : walled.contacts) c.dt = death;
+  model::RigidWallPlanar wall;
+  wall.title = "far_floor";
+  // Normal +z (the supports hold x and y, which a wall may not push along), 10 behind the blocks:
+  // no node reaches it.
+  wall.tail = Vec3(0.0, 0.0, -10.0);
+  wall.head = Vec3(0.0, 0.0, -9.0);
+  walled.rigid_walls.push_back(wall);
+  const auto r = run(walled, 0.08, 0.0);
+  for (const auto& pair : p.pairings) {
+    const auto t = r->history.time();
+    const auto f = r->history.series("interfaces/" + pair.contact_title + "/slave_force", 1);
+    for (std::size_t k = 0; k < t.size(); ++k)
+      if (t[k] > death) ASSERT_EQ(f[k], 0.0) << pair.name << ": the tie died at DT";
+    EXPECT_GT(slave_uy(*r, pair), 0.05) << pair.name << ": released, the tension load lifts the block";
+  }
+  for (Real f : r->history.series("rigidwalls/far_floor/force", 1)) EXPECT_EQ(f, 0.0);
+
+  model::Model rigid = p.model;
+  for (auto& c : rigid.contacts) c.dt = death;
+  Id skin = 0;
+  for (const auto& pair : p.pairings)
+    if (pair.skin_part != 0 && pair.name == "shell_on_shell") skin = pair.skin_part;
+  ASSERT_NE(skin, 0);
+  rigid.materials.push_back(model::MatRigid{990, 0.1, 1000.0, 0.1, 0.0, 0, 0, "rigid_skin", {}});
+  for (auto& part : rigid.parts)
+    if (part.pid == skin) part.mid = 990;
+  // The supports hold nodes of the skin, which a rigid part refuses (it is held through *MAT_RIGID);
+  // the refusal under test comes at initialisation, before any step, so the model needs none.
+  rigid.spcs.clear();
+  try {
+    build_simulation(rigid)->initialize();  // the interfaces find their ties at initialisation
+    FAIL() << "a timed tie onto a rigid body was accepted";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("master surface is on a rigid body (node "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("birth or death time (BT, DT)"), std::string::npos) << e.what();
   }
 }
 
