@@ -11,11 +11,14 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
 #include "interrupt_guard.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
+#include "slideline/element/element_erosion.hpp"
 #include "slideline/io/csv_writer.hpp"
 #include "slideline/io/hdf5_writer.hpp"
 #include "slideline/io/keyword_reader.hpp"
@@ -142,6 +145,30 @@ void print_added_mass(const slideline::Simulation& sim, const char* prefix, bool
              sim.controls().dt_scale * std::abs(sim.controls().dt2ms));
 }
 
+/// Element erosion (element/element_erosion.hpp): per eroding part, the elements deleted and when
+/// (the first 20 by time), and the energy they held.
+void print_erosion(const slideline::Simulation& sim) {
+  bool any = false;
+  for (const auto& b : sim.blocks()) {
+    const slideline::ElementErosion* er = std::as_const(*b).erosion();
+    if (!er) continue;
+    any = true;
+    std::vector<std::pair<double, slideline::Id>> deleted;
+    const auto times = er->deletion_times();
+    for (std::size_t e = 0; e < times.size(); ++e)
+      if (times[e] >= 0.0) deleted.emplace_back(times[e], b->element_id(static_cast<slideline::Index>(e)));
+    std::sort(deleted.begin(), deleted.end());
+    fmt::print("erosion: part {}: {} of {} elements deleted (failure strain {:g})\n", b->part_id(), deleted.size(),
+               times.size(), er->failure_strain());
+    for (std::size_t k = 0; k < std::min<std::size_t>(deleted.size(), 20); ++k)
+      fmt::print("  element {} deleted at t = {:.6g}\n", deleted[k].second, deleted[k].first);
+    if (deleted.size() > 20) fmt::print("  ... and {} more (the state output's cell field \"deleted\")\n", deleted.size() - 20);
+  }
+  if (any)
+    fmt::print("erosion: eroded energy {:.6g} (internal {:.6g}, hourglass {:.6g})\n", sim.energy().eroded(),
+               sim.energy().eroded_internal, sim.energy().eroded_hourglass);
+}
+
 /// The end of a completed run: the energy warning if one was raised, the cost and the balance.
 void print_run_end(const slideline::Simulation& sim, double wall) {
   if (const auto& w = sim.energy_warning())
@@ -155,6 +182,7 @@ void print_run_end(const slideline::Simulation& sim, double wall) {
              wall > 0 ? 100.0 * sim.contact_seconds() / wall : 0.0);
   fmt::print("energy balance error {:+.3e} (relative)\n", sim.energy().relative_balance_error());
   print_added_mass(sim, "mass scaling: ");
+  print_erosion(sim);
 }
 
 int run_deck(const RunOptions& o) {

@@ -205,6 +205,7 @@ struct Hdf5Writer::Impl {
       state_field("von_mises", s, set, c.von_mises, mask);
       state_field("plastic_strain", s, set, c.plastic_strain, mask);
       state_field("energy_density", s, set, c.energy_density, mask);
+      state_field("deleted", s, set, c.deleted, mask);
     }
   }
 

@@ -13,10 +13,20 @@ using model::Model;
 
 namespace {
 
-/// A failure strain that no element reaches: 0 (LS-DYNA: "failure is not considered") or the
-/// manual's default 1e21 and anything from 1e20 up (deck writers print the default), which no
-/// plastic strain reaches before the run stops. Only those are accepted: erosion is not built.
-bool never_fails(Real strain) { return strain == 0.0 || strain >= 1e20; }
+/// The failure strain of field `name` (column `col` of `c`) as the model keeps it: 0 for one no
+/// element reaches, 0 (LS-DYNA: "failure is not considered") or the manual's default 1e21 and
+/// anything from 1e20 up (deck writers print the default); else the strain at which elements
+/// erode (docs/solver.md, "Failure and erosion"). A negative value (LS-DYNA: a user failure
+/// subroutine) is refused.
+Real failure_strain(const Context& ctx, const Block& b, const Card& c, int col, const char* name) {
+  Real strain = 0.0;
+  c.get(col, name, strain);
+  if (strain < 0.0)
+    throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field " + name + " = " + std::string(c.raw(col)) +
+                              " (a user failure subroutine) is not implemented; give the failure strain (> 0), or"
+                              " leave it blank, 0 or 1e21 (no failure)");
+  return strain >= 1e20 ? 0.0 : strain;
+}
 
 }  // namespace
 
@@ -34,15 +44,11 @@ void read_mat_plastic_kinematic(const Context& ctx, Block& b, Model& m, bool tit
     Card c2 = Card(ctx, *l2, b.keyword, kStandard);
     c2.get(0, "SRC", mat.src_c);
     c2.get(1, "SRP", mat.srp);
-    Real fs = 0.0, vp = 0.0;
-    c2.get(2, "FS", fs);
+    Real vp = 0.0;
+    mat.fs = failure_strain(ctx, b, c2, 2, "FS");  // erodes elements at that plastic strain
     c2.get(3, "VP", vp);
-    // FS erodes elements at a plastic strain; VP = 1 (viscoplastic) and -1 (deviatoric rate) are
-    // other rate formulations. Running without them would be another material: refused.
-    if (!never_fails(fs))
-      throw NotImplementedError(ctx.where(l2->number) + b.keyword + ": field FS = " + std::string(c2.raw(2)) +
-                                " (failure strain, element erosion) is not implemented; leave it blank, 0 or 1e21"
-                                " (no failure)");
+    // VP = 1 (viscoplastic) and -1 (deviatoric rate) are other rate formulations. Running without
+    // them would be another material: refused.
     if (vp != 0.0)
       throw NotImplementedError(ctx.where(l2->number) + b.keyword +
                                 ": field VP = " + std::string(c2.raw(3)) +
@@ -59,14 +65,11 @@ void read_mat_piecewise_linear(const Context& ctx, Block& b, Model& m, bool titl
     c.get(3, "PR", mat.pr);
     c.get(4, "SIGY", mat.sigy);
     c.get(5, "ETAN", mat.etan);
-    // FAIL erodes elements at a plastic strain (0 and the default 1e21: never), TDEL at a time
-    // step: no erosion here, so any failure that could happen is refused.
-    Real fail = 0.0, tdel = 0.0;
-    c.get(6, "FAIL", fail);
+    // FAIL erodes elements at a plastic strain (0 and the default 1e21: never); TDEL (erosion of
+    // elements whose step falls below it) is not built.
+    Real tdel = 0.0;
+    mat.fail = failure_strain(ctx, b, c, 6, "FAIL");
     c.get(7, "TDEL", tdel);
-    if (!never_fails(fail))
-      throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field FAIL = " + std::string(c.raw(6)) +
-                                " (element erosion) is not implemented; leave it blank, 0 or 1e21 (no failure)");
     if (tdel != 0.0)
       throw NotImplementedError(ctx.where(c.line()) + b.keyword +
                                 ": field TDEL (element erosion) is not implemented; leave it blank");

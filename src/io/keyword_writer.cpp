@@ -133,13 +133,17 @@ void write_materials(const model::Model& m, std::string& o) {
                      o += "$#     MID        RO         E        PR      SIGY      ETAN      BETA\n";
                      o += CardOut().i(pk.mid).r(pk.ro).r(pk.e).r(pk.pr).r(pk.sigy).r(pk.etan).r(pk.beta).str();
                      o += "$#     SRC       SRP        FS        VP\n";
-                     o += CardOut().r(pk.src_c).r(pk.srp).str();
+                     CardOut rate = CardOut().r(pk.src_c).r(pk.srp);
+                     if (pk.fs != 0.0) rate.r(pk.fs);  // written only when set: decks without it read as before
+                     o += rate.str();
                    },
                    [&](const model::MatPiecewiseLinearPlasticity& pw) {
                      o += pw.title.empty() ? "*MAT_PIECEWISE_LINEAR_PLASTICITY\n"
                                            : "*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\n" + heading(pw.title);
                      o += "$#     MID        RO         E        PR      SIGY      ETAN      FAIL      TDEL\n";
-                     o += CardOut().i(pw.mid).r(pw.ro).r(pw.e).r(pw.pr).r(pw.sigy).r(pw.etan).str();
+                     CardOut c1 = CardOut().i(pw.mid).r(pw.ro).r(pw.e).r(pw.pr).r(pw.sigy).r(pw.etan);
+                     if (pw.fail != 0.0) c1.r(pw.fail);  // written only when set, as FS above
+                     o += c1.str();
                      o += "$#       C         P      LCSS      LCSR        VP\n";
                      o += CardOut().r(pw.c).r(pw.p).i(pw.lcss).i(pw.lcsr).r(pw.vp).str();
                      CardOut eps, es;

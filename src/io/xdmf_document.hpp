@@ -41,6 +41,7 @@ inline constexpr Field kFields[] = {
     {"part_id", Center::cell, 1, "deck *PART id", false, true, true},
     {"material_id", Center::cell, 1, "deck material id (*PART MID)", false, true, true},
     {"thickness", Center::cell, 1, "length", true, true},
+    {"deleted", Center::cell, 1, "1: deleted by erosion, 0: not"},
 };
 inline constexpr std::size_t kFieldCount = sizeof(kFields) / sizeof(kFields[0]);
 

@@ -6,6 +6,8 @@
 #include <optional>
 #include <set>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/core/error.hpp"
@@ -136,6 +138,21 @@ struct Builder {
       else
         build_solid_part(part, laws, g, ssec.at(part.secid, part.src, "SECID of *PART"), ihq, qm, bv, damping);
       for (std::size_t b = first_block; b < setup.blocks.size(); ++b) setup.blocks[b]->set_material_id(part.mid);
+      if (laws.failure_strain > 0.0 && !laws.rigid) enable_erosion(part, laws, first_block);
+    }
+  }
+
+  /// Element erosion of the part's blocks from `first_block` on (element/element_erosion.hpp); a
+  /// block that cannot erode refuses, named by the part and the material's field.
+  void enable_erosion(const model::Part& part, const MaterialLaws& laws, std::size_t first_block) {
+    for (std::size_t b = first_block; b < setup.blocks.size(); ++b) {
+      try {
+        setup.blocks[b]->enable_erosion(laws.failure_strain);
+      } catch (const NotImplementedError& e) {
+        throw NotImplementedError(describe(part.src) + ": *PART " + std::to_string(part.pid) + ": material " +
+                                  std::to_string(part.mid) + " (" + laws.keyword + ") has the failure strain " +
+                                  laws.failure_field + " = " + std::to_string(laws.failure_strain) + ": " + e.what());
+      }
     }
   }
 
@@ -484,6 +501,7 @@ struct Builder {
 
   void build_contacts() {
     const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets};
+    const std::vector<Id> eroding = eroding_part_of_nodes();
     // Force transducers last: they read the contact forces every other interface has added.
     for (const bool transducers : {false, true})
       for (std::size_t k = 0; k < m.contacts.size(); ++k) {
@@ -491,9 +509,36 @@ struct Builder {
         if ((card.form == model::ContactForm::force_transducer) != transducers) continue;
         if (transducers) check_transducer_measures(card);
         InterfaceSpec spec = resolve_interface(card, k + 1, ctx);
+        if (!eroding.empty()) refuse_eroding_contact(spec, eroding);
         // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
         setup.contacts.add(make_contact_interface(spec, ctx), spec.window);
       }
+  }
+
+  /// Per node, the part of the first eroding block that holds it (0: none); empty when no block
+  /// erodes.
+  std::vector<Id> eroding_part_of_nodes() const {
+    std::vector<Id> part;
+    for (const auto& b : setup.blocks) {
+      if (!std::as_const(*b).erosion()) continue;
+      part.resize(setup.nodes.size(), 0);
+      for (Index n : b->connectivity())
+        if (part[static_cast<std::size_t>(n)] == 0) part[static_cast<std::size_t>(n)] = b->part_id();
+    }
+    return part;
+  }
+
+  /// The contact surfaces are built once and not updated when elements are deleted: an interface
+  /// with a node of an eroding part on either side is refused (docs/solver.md, "Failure and erosion").
+  static void refuse_eroding_contact(const InterfaceSpec& spec, const std::vector<Id>& eroding) {
+    for (const ContactSide* side : {&spec.slave, &spec.master})
+      for (Index n : side->nodes)
+        if (const Id pid = eroding[static_cast<std::size_t>(n)]; pid != 0)
+          throw NotImplementedError(spec.where + ": part " + std::to_string(pid) +
+                                    " can erode (its material's failure strain FS / FAIL) and is on this contact's " +
+                                    (side == &spec.slave ? "slave" : "master") +
+                                    " side: contact with eroding parts (updating the surfaces as elements are "
+                                    "deleted) is not implemented");
   }
 
   /// A force transducer measures f_contact: refused beside an interface whose forces are not

@@ -52,12 +52,13 @@ MaterialLaws material_laws(const model::Material& material, std::span<const mode
           [](const model::MatPlasticKinematic& m) {
             const J2PlasticityConstants k{m.ro, m.e, m.pr, m.sigy, m.etan, m.beta, m.src_c, m.srp};
             return MaterialLaws{J2Plasticity(k), ShellPlasticity<J2Plasticity>(J2Plasticity(k)), false,
-                                "*MAT_PLASTIC_KINEMATIC"};
+                                "*MAT_PLASTIC_KINEMATIC", m.fs, "FS"};
           },
           [&](const model::MatPiecewiseLinearPlasticity& m) {
             PiecewisePlasticity law = piecewise_law(m, curves);
             ShellPlasticity<PiecewisePlasticity> shell(law);
-            return MaterialLaws{std::move(law), std::move(shell), false, "*MAT_PIECEWISE_LINEAR_PLASTICITY"};
+            return MaterialLaws{std::move(law), std::move(shell), false, "*MAT_PIECEWISE_LINEAR_PLASTICITY", m.fail,
+                                "FAIL"};
           },
           [](const model::MatNull& m) {
             return MaterialLaws{std::nullopt, NullShell(m.ro, m.ym, m.pr), false, "*MAT_NULL"};

@@ -50,6 +50,9 @@ void OutputRecorder::build_channels(const OutputSources& src) {
     channels_.push_back({"nodes/" + std::to_string(src.nodes.ids[i]) + "/displacement", 3});
   }
   for (const char* e : EnergyReport::names) channels_.push_back({std::string("energy/") + e, 1});
+  // Erosion's energy only where a part can erode: other histories keep their channels.
+  erodes_ = std::any_of(src.blocks.begin(), src.blocks.end(), [](const auto& b) { return b->erosion() != nullptr; });
+  if (erodes_) channels_.push_back({"energy/eroded", 1});
   plastic_parts_.clear();
   for (std::size_t b = 0; b < src.blocks.size(); ++b) {
     if (!src.blocks[b]->has_plasticity()) continue;
@@ -116,6 +119,7 @@ void OutputRecorder::begin(const std::vector<OutputSink*>& sinks, const MeshDesc
   for (std::size_t b = 0; b < blocks.size(); ++b)
     block_cells_[b].assign(static_cast<std::size_t>(blocks[b]->element_count()), CellOutput{});
   cell_fields_.assign(mesh.cells.size(), TopologyCellFields{});
+  const bool erodes = std::any_of(blocks.begin(), blocks.end(), [](const auto& b) { return b->erosion() != nullptr; });
   for (std::size_t t = 0; t < mesh.cells.size(); ++t) {
     const std::size_t n = mesh.cells[t].count();
     TopologyCellFields& f = cell_fields_[t];
@@ -127,6 +131,7 @@ void OutputRecorder::begin(const std::vector<OutputSink*>& sinks, const MeshDesc
     f.von_mises.assign(n, 0.0);
     f.plastic_strain.assign(n, 0.0);
     f.energy_density.assign(n, 0.0);
+    if (erodes) f.deleted.assign(n, 0.0);
   }
   for (auto* s : sinks) s->begin(channels_, mesh);
   sinks_ = &sinks;
@@ -162,6 +167,7 @@ void OutputRecorder::collect_state(const OutputSources& src) {
       f.von_mises[k] = von_mises(c.stress);
       f.plastic_strain[k] = c.plastic_strain;
       f.energy_density[k] = c.energy_density;
+      if (!f.deleted.empty()) f.deleted[k] = c.deleted ? 1.0 : 0.0;
     }
   }
 }
@@ -198,6 +204,7 @@ void OutputRecorder::collect_history(const OutputSources& src) {
   }
   for (Index i : src.history_nodes) put3(src.nodes.displacement(i));
   for (Real v : src.energy.values()) values[k++] = v;
+  if (erodes_) values[k++] = src.energy.eroded();
   for (const PlasticPart& p : plastic_parts_) {
     PlasticityTotals t;
     for (std::size_t b : p.blocks) t += src.blocks[b]->plasticity_totals(src.nodes);

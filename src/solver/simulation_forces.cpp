@@ -43,6 +43,7 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
     for (std::size_t k = 0; k < blocks_.size(); ++k) {
       const auto& b = blocks_[k];
       block_energy_[k] = BlockEnergy{};
+      if (ElementErosion* er = b->erosion()) er->set_time(t_);
       const Real d = b->compute_forces(nodes_, dt_, corners_, block_energy_[k]);
       if (b->bounds_time_step()) {
         if (d < dtc) controlling = b.get();
@@ -73,6 +74,7 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
   }
   ledger_.add_element_powers(be.hourglass_power, be.viscous_power, be.damping_power,
                              cycle_ == 0 ? 0.0 : dt_);
+  if (be.eroded_elements > 0) ledger_.add_eroded(be.eroded_internal, be.eroded_hourglass);
   return dtc;
 }
 

@@ -30,6 +30,8 @@ struct CellOutput {
   /// Internal (strain) energy per unit reference volume (force/length^2 = energy/length^3); 0 for
   /// a law that does not report one.
   Real energy_density = 0.0;
+  /// Deleted by erosion (element_erosion.hpp): its stress and energy density are then 0.
+  bool deleted = false;
 };
 
 /// von Mises equivalent stress sqrt(3 J2) of a symmetric tensor (same units).

@@ -6,6 +6,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slideline/core/error.hpp"
@@ -13,6 +14,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/element/cell_output.hpp"
+#include "slideline/element/element_erosion.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
 #include "slideline/mesh/mesh_block.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
@@ -32,9 +34,17 @@ struct BlockEnergy {
   /// the three powers above is the rate of the stored (internal) energy, per part for the
   /// hourglass and negative-energy checks (solver/part_energy_monitor.hpp).
   Real element_power = 0.0;
+  /// Element erosion (element_erosion.hpp): the energies (force x length, not rates) that the
+  /// elements deleted at this evaluation held, stress work and hourglass work, and their number.
+  Real eroded_internal = 0.0;
+  Real eroded_hourglass = 0.0;
+  Index eroded_elements = 0;
 
   BlockEnergy& operator+=(const BlockEnergy& o) {
     internal += o.internal;
+    eroded_internal += o.eroded_internal;
+    eroded_hourglass += o.eroded_hourglass;
+    eroded_elements += o.eroded_elements;
     hourglass_power += o.hourglass_power;
     viscous_power += o.viscous_power;
     damping_power += o.damping_power;
@@ -159,6 +169,17 @@ class ElementBlock : public MeshBlock {
   /// by increment) times the point's share of the element's current volume. Zero for a block
   /// without plasticity.
   virtual PlasticityTotals plasticity_totals(const NodalFields& /*nodes*/) const { return {}; }
+
+  /// Element erosion (element_erosion.hpp): deletes the elements whose effective plastic strain
+  /// reaches `failure_strain` (> 0). Called once, before the first step. A block that cannot
+  /// erode refuses (NotImplementedError).
+  virtual void enable_erosion(Real failure_strain) {
+    throw NotImplementedError("part " + std::to_string(part_id()) + ": element erosion (failure strain " +
+                              std::to_string(failure_strain) + ") of " + kind() + " elements is not implemented");
+  }
+  /// The block's erosion bookkeeping; null for a block that cannot erode.
+  virtual const ElementErosion* erosion() const { return nullptr; }
+  ElementErosion* erosion() { return const_cast<ElementErosion*>(std::as_const(*this).erosion()); }
 
   /// Deck id of the block's material (*PART MID), for the output; 0 when not set.
   Id material_id() const { return material_id_; }

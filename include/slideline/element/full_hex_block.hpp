@@ -122,13 +122,36 @@ class FullHexBlock final : public ElementBlock {
     const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
                                    corners.force.y.data() + force_slot_base(),
                                    corners.force.z.data() + force_slot_base()};
-    chunks_.scan(element_count(), [&](Index e) { return element_forces(nodes, e, dt, out); });
+    // Erosion (element_erosion.hpp) at the mean plastic strain of the 8 points, the cell output's.
+    chunks_.scan(element_count(), [&](Index e) {
+      return eroding_element<Sums>(
+          erosion_, e, dt, [&](Index k) { return element_forces(nodes, k, dt, out); },
+          [&](Index k) { return mean_plastic_strain(k); },
+          [&](Index k) {
+            for (int i = 0; i < 3; ++i) std::fill_n(out[i] + 8 * static_cast<std::size_t>(k), 8, 0.0);
+          });
+    });
+    if (erosion_.active()) energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
     return chunks_.reduce(energy, "solid", ids_, part_id_,
                                  "inverted (non-positive Jacobian at a Gauss point or non-finite force)");
   }
 
   Id smallest_step_element() const override {
     return chunks_.smallest_step_element(ids_);
+  }
+
+  /// ElementBlock::enable_erosion: the law's state must hold a plastic strain (element_erosion.hpp).
+  void enable_erosion(Real failure_strain) override {
+    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
+    erosion_.enable(failure_strain, element_count(), element_count());
+  }
+  const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
+
+  /// The mean of element e's 8 points' plastic strains.
+  Real mean_plastic_strain(Index e) const {
+    Real eps = 0.0;
+    for (int p = 0; p < 8; ++p) eps += plastic_strain_of(state_[8 * e + p]) / 8.0;
+    return eps;
   }
 
   /// The mean over the Gauss points of the law's stress at the current geometry (each state
@@ -144,10 +167,12 @@ class FullHexBlock final : public ElementBlock {
         const Tensor3<Real> s = mat_.update(copy, g.fbar[p], no_rate, 0.0);
         const SymTensor6 s6{s[0][0], s[1][1], s[2][2], s[0][1], s[1][2], s[0][2]};
         for (int k = 0; k < 6; ++k) c.stress[k] += s6[k] / 8.0;
-        c.plastic_strain += plastic_strain_of(state_[8 * e + p]) / 8.0;
         if constexpr (requires { { mat_.energy_density(g.fbar[p]) } -> std::convertible_to<Real>; })
           c.energy_density += mat_.energy_density(g.fbar[p]) / 8.0;
       }
+      c.plastic_strain = mean_plastic_strain(e);
+      c.deleted = erosion_.active() && erosion_.deleted(e);
+      if (c.deleted) c.stress = SymTensor6{}, c.energy_density = 0.0;
       c.stress_bottom = c.stress_top = c.stress;
     }
   }
@@ -264,6 +289,7 @@ class FullHexBlock final : public ElementBlock {
   std::vector<Real> volume0_;
   std::vector<State> state_;  ///< the law's state, per Gauss point (8 e + p)
   ElementChunks chunks_;  ///< per-chunk steps, failures and powers (sized at construction)
+  ElementErosion erosion_;  ///< inactive unless enable_erosion
 };
 
 }  // namespace slideline

@@ -79,6 +79,13 @@ class HexBlock final : public ElementBlock {
   std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
+  /// ElementBlock::enable_erosion: the law's state must hold a plastic strain.
+  void enable_erosion(Real failure_strain) override {
+    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
+    erosion_.enable(failure_strain, element_count(), padded(element_count()));
+  }
+  const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
+
   /// ElementBlock::cell_outputs: the law's stress at the current geometry (its state advanced
   /// over a zero step on a copy, so the output never moves the law), the state's effective plastic
   /// strain and, for a law with a strain energy W(F) (`energy_density`), W per reference volume; for a
@@ -101,10 +108,11 @@ class HexBlock final : public ElementBlock {
       const int valid = static_cast<int>(std::min<Index>(kLanes, ne - e0));
       for (int l = 0; l < valid; ++l) {
         CellOutput& c = out[static_cast<std::size_t>(e0 + l)];
-        c.stress = sym6(sigma, l);
+        c.deleted = erosion_.active() && erosion_.deleted(e0 + l);
+        c.stress = c.deleted ? SymTensor6{} : sym6(sigma, l);
         c.stress_bottom = c.stress_top = c.stress;
         c.plastic_strain = plastic_strain_of(held, l);
-        c.energy_density = w[l];
+        c.energy_density = c.deleted ? 0.0 : w[l];
       }
     }
   }
@@ -193,6 +201,8 @@ class HexBlock final : public ElementBlock {
       compute_chunks<true, true>(nodes, dt, corners);
     else
       compute_chunks<false, true>(nodes, dt, corners);
+    if (erosion_.active())
+      energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
     return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
                                  "solid", ids_, part_id_,
                                  "inverted (non-positive volume or non-finite force)");
@@ -221,6 +231,7 @@ class HexBlock final : public ElementBlock {
         gather_batch(nodes, e0, bt);
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
+        if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk);
         accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data());
         store_forces(f, e0, valid, out);
       }
@@ -285,6 +296,7 @@ class HexBlock final : public ElementBlock {
       bt.y0[k] = gather_lanes(nodes.x0.y.data(), ik);
       bt.z0[k] = gather_lanes(nodes.x0.z.data(), ik);
     }
+    if (erosion_.active()) freeze_deleted(bt, e0);
     hex8::volume_gradient(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz);
     bt.vol = Lanes::Zero();
     for (int k = 0; k < 8; ++k) bt.vol += bt.x[k] * bt.bx[k] + bt.y[k] * bt.by[k] + bt.z[k] * bt.bz[k];
@@ -294,6 +306,33 @@ class HexBlock final : public ElementBlock {
       bt.bx[k] *= bt.inv_vol;
       bt.by[k] *= bt.inv_vol;
       bt.bz[k] *= bt.inv_vol;
+    }
+  }
+
+  /// A deleted element is evaluated at its reference geometry at rest (its forces are discarded):
+  /// its nodes may have gone anywhere since, and an inverted deleted element must not stop the run.
+  void freeze_deleted(Batch& bt, Index e0) const {
+    for (int l = 0; l < kLanes; ++l) {
+      if (!erosion_.deleted(std::min(e0 + l, element_count() - 1))) continue;  // spare lanes: the last element
+      for (int k = 0; k < 8; ++k) {
+        bt.x[k][l] = bt.x0[k][l];
+        bt.y[k][l] = bt.y0[k][l];
+        bt.z[k][l] = bt.z0[k][l];
+        bt.vx[k][l] = bt.vy[k][l] = bt.vz[k][l] = 0.0;
+      }
+    }
+  }
+
+  /// Erosion of a batch's elements after the law's update (element_erosion.hpp): a deleted
+  /// element's forces and powers are zeroed and its step is +inf (it votes none).
+  void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk) {
+    const State& s = state_[e0 / kLanes];
+    for (int l = 0; l < valid; ++l) {
+      const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
+      if (!erosion_.update(e0 + l, chunk, plastic_strain_of(s, l), internal, f.hg[l], dt)) continue;
+      for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
+      f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
+      st.len[l] = std::numeric_limits<Real>::infinity();
     }
   }
 
@@ -536,6 +575,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
+  ElementErosion erosion_;  ///< inactive unless enable_erosion
   inline static const Lanes kLaneOffsets = Lanes::LinSpaced(kLanes, 0.0, kLanes - 1.0);
 
  public:

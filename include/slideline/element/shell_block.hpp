@@ -90,6 +90,15 @@ class BasicShellBlock final : public ElementBlock {
   /// The law's 3-D bulk modulus (force/length^2).
   Real bulk_modulus() const override { return mat_.bulk_modulus(); }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
+
+  /// ElementBlock::enable_erosion: quadrilaterals of a law with a plastic strain (erode()).
+  void enable_erosion(Real failure_strain) override {
+    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
+    if (nq_ < element_count())
+      throw NotImplementedError("part " + std::to_string(part_id_) + ": erosion of C0 triangles is not implemented");
+    erosion_.enable(failure_strain, element_count(), element_count());
+  }
+  const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
 
   /// Nodal mass rho A t / 4 and rotary inertia (rho A t / 4) max(t^2, A) / 12 per corner.
@@ -163,6 +172,7 @@ class BasicShellBlock final : public ElementBlock {
       compute_chunks<true>(nodes, dt, corners);
     else
       compute_chunks<false>(nodes, dt, corners);
+    if (erosion_.active()) energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
     return reduce_element_chunks(chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_, chunk_bad_, energy,
                                  "shell", ids_, part_id_,
                                  "degenerated (non-positive area or non-finite force)");
@@ -171,67 +181,28 @@ class BasicShellBlock final : public ElementBlock {
  private:
   template <bool damped>
   void compute_chunks(const NodalFields& nodes, Real dt, CornerBuffer& corners) {
-    const Real c = mat_.wave_speed();
     parallel_for_chunks(element_count(), [&](Index b, Index end, Index chunk) {
       Real dtmin = std::numeric_limits<Real>::max();
       Index dtarg = b;
       Real p_hg = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
       Index bad = -1;
       for (Index e = b; e < end; ++e) {
-        if (e >= nq_) {
-          const TriangleResult tr = triangle_forces<damped>(nodes, dt, e, corners);
-          if (tr.bad && bad < 0) bad = e;
-          if (tr.bad) continue;
-          p_visc += tr.p_visc;
-          p_damp += tr.p_damp;
-          p_all += tr.p_all;
-          if (tr.dt < dtmin) {
-            dtmin = tr.dt;
-            dtarg = e;
-          }
+        if (erosion_.active() && erosion_.deleted(e)) {  // no forces, no step; its nodes may be anywhere
+          store_element(e, shell_bt::NodeMat::Zero(), shell_bt::NodeMat::Zero(), corners);
           continue;
         }
-        const shell_bt::NodeMat X = gather(nodes.x, e);
-        const shell_bt::NodeMat V = gather(nodes.v, e);
-        const shell_bt::NodeMat W = gather(nodes.omega, e);
-        const shell_bt::LocalGeometry g = shell_bt::local_geometry(X);
-        if (!(g.area > 0.0)) {
-          if (bad < 0) bad = e;
-          continue;
-        }
-        // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: a rigid rotation's chord velocities
-        // are exactly rigid there, so strain and hourglass rates vanish for it.
-        const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
-        const shell_bt::LocalGeometry gm = dt > 0.0 ? shell_bt::local_geometry(Xm) : g;
-        if (!(gm.area > 0.0)) {
-          if (bad < 0) bad = e;
-          continue;
-        }
-        const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
-        shell_bt::Resultants r;
-        [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r, sec_.shear_factor);
-        // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
-        const Real len = shell_bt::characteristic_length(X, g.area);
-        Real qdt = bulk_viscosity(sr, len, g.area, r, p_visc);
-        if constexpr (damped) {
-          p_damp += damp * g.area;
-          qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
-        }
-        shell_bt::NodeMat fl, ml;
-        shell_bt::resultant_forces(g, r, fl, ml);
-
-        shell_bt::NodeMat f = fl * g.e.transpose();
-        shell_bt::NodeMat m = ml * g.e.transpose();
-        if (qhg_ > 0.0) p_hg += add_hourglass(e, gm, Xm, V, W, f, m);
-        if ((!f.allFinite() || !m.allFinite()) && bad < 0) bad = e;
-        p_all -= f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum();
-        Real dt_e = len / (qdt + std::sqrt(qdt * qdt + c * c));
-        if (!step_factor_.empty()) dt_e *= step_factor_[e];  // mass scaling (scale_element_masses)
-        if (dt_e < dtmin) {
-          dtmin = dt_e;
+        const ElementResult r = e >= nq_ ? triangle_forces<damped>(nodes, dt, e, corners)
+                                         : quad_forces<damped>(nodes, dt, e, chunk, corners);
+        if (r.bad && bad < 0) bad = e;
+        if (r.bad || r.deleted) continue;
+        p_hg += r.p_hg;
+        p_visc += r.p_visc;
+        p_damp += r.p_damp;
+        p_all += r.p_all;
+        if (r.dt < dtmin) {
+          dtmin = r.dt;
           dtarg = e;
         }
-        store_element(e, f, m, corners);
       }
       chunk_dt_[chunk] = dtmin;
       chunk_dt_element_[chunk] = dtarg;
@@ -241,6 +212,59 @@ class BasicShellBlock final : public ElementBlock {
       chunk_power_[chunk] = p_all;
       chunk_bad_[chunk] = bad;
     });
+  }
+
+  /// What one element adds to its chunk's sums (hourglass power: quadrilaterals only); `bad`: it
+  /// degenerated or its forces are not finite, `deleted`: erosion deleted it at this evaluation.
+  struct ElementResult {
+    Real dt = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0, p_hg = 0.0;
+    bool bad = false, deleted = false;
+  };
+
+  /// Forces and moments of quadrilateral e into its corner slots: the strain rates on the mid-step
+  /// geometry x^n - dt/2 v (exactly zero for a rigid rotation), the forces on the geometry at x^n;
+  /// then erosion (erode()): a quadrilateral deleted now stores no forces and adds nothing.
+  template <bool damped>
+  ElementResult quad_forces(const NodalFields& nodes, Real dt, Index e, Index chunk, CornerBuffer& corners) {
+    ElementResult out;
+    const Real c = mat_.wave_speed();
+    const shell_bt::NodeMat X = gather(nodes.x, e);
+    const shell_bt::NodeMat V = gather(nodes.v, e);
+    const shell_bt::NodeMat W = gather(nodes.omega, e);
+    const shell_bt::LocalGeometry g = shell_bt::local_geometry(X);
+    const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
+    const shell_bt::LocalGeometry gm = dt > 0.0 && g.area > 0.0 ? shell_bt::local_geometry(Xm) : g;
+    if (!(g.area > 0.0) || !(gm.area > 0.0)) {
+      out.bad = true;
+      return out;
+    }
+    const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
+    shell_bt::Resultants r;
+    [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r, sec_.shear_factor);
+    // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
+    const Real len = shell_bt::characteristic_length(X, g.area);
+    Real qdt = bulk_viscosity(sr, len, g.area, r, out.p_visc);
+    if constexpr (damped) {
+      out.p_damp = damp * g.area;
+      qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
+    }
+    shell_bt::NodeMat fl, ml;
+    shell_bt::resultant_forces(g, r, fl, ml);
+    shell_bt::NodeMat f = fl * g.e.transpose();
+    shell_bt::NodeMat m = ml * g.e.transpose();
+    if (qhg_ > 0.0) out.p_hg = add_hourglass(e, gm, Xm, V, W, f, m);
+    out.bad = !f.allFinite() || !m.allFinite();
+    out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
+    if (erosion_.active() && !out.bad &&
+        erode(e, chunk, out.p_all - out.p_visc - out.p_damp - out.p_hg, out.p_hg, dt)) {
+      out.deleted = true;
+      store_element(e, shell_bt::NodeMat::Zero(), shell_bt::NodeMat::Zero(), corners);
+      return out;
+    }
+    out.dt = len / (qdt + std::sqrt(qdt * qdt + c * c));
+    if (!step_factor_.empty()) out.dt *= step_factor_[e];  // mass scaling (scale_element_masses)
+    store_element(e, f, m, corners);
+    return out;
   }
 
   /// Bulk viscosity on the membrane dilatation rate of `sr` (a pressure over the thickness) of an
@@ -259,18 +283,13 @@ class BasicShellBlock final : public ElementBlock {
     return bulk_.linear * c + bulk_.quadratic * len * (-trd);
   }
 
-  /// What one triangle adds to its chunk's sums.
-  struct TriangleResult {
-    Real dt = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0;
-    bool bad = false;
-  };
 
   /// Forces and moments of triangle e (e >= nq_) into its corner slots, as compute_chunks does for
   /// a quad (mid-step geometry for the rates, the geometry at x^n for the forces), without
   /// hourglass control (the element has no spurious mode; shell_c0tri.hpp).
   template <bool damped>
-  TriangleResult triangle_forces(const NodalFields& nodes, Real dt, Index e, CornerBuffer& corners) {
-    TriangleResult out;
+  ElementResult triangle_forces(const NodalFields& nodes, Real dt, Index e, CornerBuffer& corners) {
+    ElementResult out;
     const shell_c0tri::NodeMat X = gather_triangle(nodes.x, e);
     const shell_c0tri::NodeMat V = gather_triangle(nodes.v, e);
     const shell_c0tri::NodeMat W = gather_triangle(nodes.omega, e);
@@ -451,6 +470,15 @@ class BasicShellBlock final : public ElementBlock {
     return cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] + cr * (qw[0] * qw[0] + qw[1] * qw[1]);
   }
 
+  /// Erosion (element_erosion.hpp) of quadrilateral e after its update (`internal`, `hourglass`: its
+  /// powers): deleted when every through-thickness point's plastic strain reached the failure strain.
+  bool erode(Index e, Index chunk, Real internal, Real hourglass, Real dt) {
+    const State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
+    Real eps = plastic_strain_of(st[0]);
+    for (int ip = 1; ip < rule_.n; ++ip) eps = std::min(eps, plastic_strain_of(st[ip]));
+    return erosion_.update(e, chunk, eps, internal, hourglass, dt);
+  }
+
   /// Writes element e's forces f and moments m (4 x 3, global) into its corner slots.
   void store_element(Index e, const shell_bt::NodeMat& f, const shell_bt::NodeMat& m,
                      CornerBuffer& corners) const {
@@ -507,6 +535,8 @@ class BasicShellBlock final : public ElementBlock {
       c.energy_density = 0.0;
       if constexpr (requires { { mat_.energy_density(st[0], sec_.shear_factor) } -> std::convertible_to<Real>; })
         for (int ip = 0; ip < n; ++ip) c.energy_density += 0.5 * rule_.w[ip] * mat_.energy_density(st[ip], sec_.shear_factor);
+      c.deleted = erosion_.active() && erosion_.deleted(e);
+      if (c.deleted) c.stress = c.stress_bottom = c.stress_top = SymTensor6{}, c.energy_density = 0.0;
     }
   }
 
@@ -572,6 +602,7 @@ class BasicShellBlock final : public ElementBlock {
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
+  ElementErosion erosion_;  ///< inactive unless enable_erosion
 };
 
 /// The elastic shell block (*MAT_ELASTIC).

@@ -107,13 +107,28 @@ class TetBlock final : public ElementBlock {
     const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
                                    corners.force.y.data() + force_slot_base(),
                                    corners.force.z.data() + force_slot_base()};
-    chunks_.scan(element_count(), [&](Index e) { return element_forces(nodes, e, dt, out); });
+    chunks_.scan(element_count(), [&](Index e) {
+      return eroding_element<Point>(
+          erosion_, e, dt, [&](Index k) { return element_forces(nodes, k, dt, out); },
+          [&](Index k) { return plastic_strain_of(state_[k]); },
+          [&](Index k) {
+            for (int i = 0; i < 3; ++i) std::fill_n(out[i] + 4 * static_cast<std::size_t>(k), 4, 0.0);
+          });
+    });
+    if (erosion_.active()) energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
     return chunks_.reduce(energy, "tetrahedron", ids_, part_id_, "inverted (non-positive volume or non-finite force)");
   }
 
   Id smallest_step_element() const override {
     return chunks_.smallest_step_element(ids_);
   }
+
+  /// ElementBlock::enable_erosion: the law's state must hold a plastic strain (element_erosion.hpp).
+  void enable_erosion(Real failure_strain) override {
+    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
+    erosion_.enable(failure_strain, element_count(), element_count());
+  }
+  const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
 
   /// The law's stress at the current geometry (its state advanced over a zero step on a copy),
   /// the state's plastic strain and, for a law with W(F), W per reference volume.
@@ -129,6 +144,8 @@ class TetBlock final : public ElementBlock {
       c.plastic_strain = plastic_strain_of(state_[e]);
       if constexpr (requires { { mat_.energy_density(F) } -> std::convertible_to<Real>; })
         c.energy_density = mat_.energy_density(F);
+      c.deleted = erosion_.active() && erosion_.deleted(e);
+      if (c.deleted) c.stress = c.stress_bottom = c.stress_top = SymTensor6{}, c.energy_density = 0.0;
     }
   }
 
@@ -198,6 +215,7 @@ class TetBlock final : public ElementBlock {
   std::vector<Real> volume0_;
   std::vector<State> state_;          ///< the law's state, one per element
   ElementChunks chunks_;  ///< per-chunk steps, failures and powers (sized at construction)
+  ElementErosion erosion_;  ///< inactive unless enable_erosion
 };
 
 }  // namespace slideline

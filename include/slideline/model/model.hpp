@@ -127,6 +127,7 @@ struct MatPlasticKinematic {
   Real beta = 0.0;  ///< 0 kinematic, 1 isotropic hardening
   Real src_c = 0.0;  ///< SRC: Cowper-Symonds C (0: no rate effect)
   Real srp = 0.0;    ///< SRP: Cowper-Symonds P
+  Real fs = 0.0;     ///< FS: failure strain, elements erode at this plastic strain (0: never)
   std::string title;
   Source src;
   bool operator==(const MatPlasticKinematic&) const = default;
@@ -134,7 +135,7 @@ struct MatPlasticKinematic {
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY (type 24): J2 plasticity, isotropic hardening by the curve
 /// LCSS, the 8-point table EPS/ES or the tangent modulus ETAN; rate scaling by C/P or LCSR.
-/// FAIL and TDEL other than 0 are refused by the reader.
+/// FAIL > 0 erodes elements at that plastic strain; TDEL other than 0 is refused by the reader.
 struct MatPiecewiseLinearPlasticity {
   Id mid = 0;
   Real ro = 0.0;
@@ -147,6 +148,7 @@ struct MatPiecewiseLinearPlasticity {
   Id lcss = 0;    ///< curve: yield stress against effective plastic strain (0: table or ETAN)
   Id lcsr = 0;    ///< curve: yield-stress scale factor against strain rate
   Real vp = 0.0;  ///< 0: rate = total strain rate; 1: viscoplastic (rate = plastic strain rate)
+  Real fail = 0.0;  ///< FAIL: failure strain, elements erode at this plastic strain (0: never)
   std::array<Real, 8> eps{};  ///< EPS1..EPS8 effective plastic strains of the table
   std::array<Real, 8> es{};   ///< ES1..ES8 yield stresses of the table
   std::string title;

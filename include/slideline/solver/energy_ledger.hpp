@@ -30,12 +30,20 @@ struct EnergyReport {
   /// Work of the forces that NodalConstraints (rigid bodies) apply to their nodes: the forces that
   /// keep a body rigid and hold its fixed dofs, and the velocity reset after the position update.
   Real constraint = 0.0;
+  /// Element erosion (element/element_erosion.hpp): the stress work and the hourglass work that
+  /// the deleted elements held when they were deleted, taken out of `internal` and `hourglass`
+  /// (which are then those of the elements still in the model). 0 without erosion.
+  Real eroded_internal = 0.0;
+  Real eroded_hourglass = 0.0;
+  /// The eroded energy, eroded_internal + eroded_hourglass.
+  Real eroded() const { return eroded_internal + eroded_hourglass; }
 
-  /// (kinetic + internal + hourglass + bulk viscosity + damping + contact + friction)
+  /// (kinetic + internal + hourglass + bulk viscosity + damping + contact + friction + eroded)
   ///   - (kinetic0 + external + support + constraint)
   Real balance_error() const {
-    return kinetic + internal + hourglass + bulk_viscosity + damping + contact + friction -
-           kinetic0 - external - support - constraint;
+    const Real e = kinetic + internal + hourglass + bulk_viscosity + damping + contact + friction -
+                   kinetic0 - external - support - constraint;
+    return eroded_internal == 0.0 && eroded_hourglass == 0.0 ? e : e + eroded();
   }
   /// balance_error() relative to the largest energy in play.
   Real relative_balance_error() const;
@@ -101,6 +109,13 @@ class EnergyLedger {
     report_.bulk_viscosity += viscous_power * dt;
     element_damping_ += damping_power * dt;
   }
+  /// Erosion: the stress and hourglass work that the elements deleted at this force evaluation
+  /// held (energies): moved from the internal and hourglass terms to the eroded ones.
+  void add_eroded(Real internal, Real hourglass) {
+    report_.eroded_internal += internal;
+    report_.eroded_hourglass += hourglass;
+    report_.hourglass -= hourglass;
+  }
   /// Books one velocity update's sums; `first` on the first cycle (sets kinetic0).
   void book(const NodalEnergySums& s, bool first) {
     report_.kinetic = s.kinetic;
@@ -111,6 +126,7 @@ class EnergyLedger {
     report_.constraint = constraint_.at_n(s.constraint);
     contact_work_ = contact_.at_n(s.contact);
     report_.internal = stress_.at_n(s.stress) - report_.hourglass - report_.bulk_viscosity - element_damping_;
+    if (report_.eroded() != 0.0) report_.internal -= report_.eroded();
     report_.contact = -contact_work_ - report_.friction;
     stress_.commit(s.stress);
     external_.commit(s.external);

@@ -18,6 +18,10 @@ struct MaterialLaws {
   /// from the card itself; E and PR set only its contact stiffness and time step.
   bool rigid = false;
   const char* keyword = "";  ///< the card, for messages: "*MAT_ELASTIC"
+  /// The effective plastic strain at which elements erode (FS of *MAT_PLASTIC_KINEMATIC, FAIL of
+  /// *MAT_PIECEWISE_LINEAR_PLASTICITY; element/element_erosion.hpp); 0: never.
+  Real failure_strain = 0.0;
+  const char* failure_field = "";  ///< its field name, for messages: "FS"
 };
 
 /// The laws of `material`, its curves (*MAT_PIECEWISE_LINEAR_PLASTICITY's LCSS and LCSR) taken from

@@ -87,6 +87,7 @@ class OutputRecorder {
   std::vector<Real> state_values_;
   Real last_history_ = -1.0;
   Real last_state_ = -1.0;
+  bool erodes_ = false;  ///< a block can erode: the history has energy/eroded
   const std::vector<OutputSink*>* sinks_ = nullptr;
 };
 

@@ -50,6 +50,7 @@ struct TopologyCellFields {
   std::vector<Real> von_mises;       ///< 1 per cell (force/length^2)
   std::vector<Real> plastic_strain;  ///< 1 per cell (dimensionless)
   std::vector<Real> energy_density;  ///< 1 per cell (energy per reference volume)
+  std::vector<Real> deleted;         ///< 1 per cell: 1 deleted by erosion, 0 not; empty: no part erodes
 };
 
 /// One output state. Nodal vectors hold 3 values per node (x, y, z interleaved); an empty span

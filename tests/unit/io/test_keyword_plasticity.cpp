@@ -40,10 +40,22 @@ TEST(KeywordPlasticity, PlasticKinematicFields) {
   EXPECT_DOUBLE_EQ(k.src_c, 40.4);
   EXPECT_DOUBLE_EQ(k.srp, 5.0);
   const std::string card1 = "*MAT_003\n         5    7.8e-9    2.0e+5       0.3     250.0\n";
-  EXPECT_EQ(thrown(card1 + ",,0.3\n"),
-            "p.k:3: *MAT_003: field FS = 0.3 (failure strain, element erosion) is not implemented; leave it "
-            "blank, 0 or 1e21 (no failure)");
-  EXPECT_NO_THROW(read_keyword_string(card1 + ",,1.0e+21\n", "p.k", nullptr));
+  // FS: the failure strain (element erosion, docs/solver.md); 0 and 1e21 (LS-DYNA's default):
+  // none; negative (a user subroutine): refused.
+  const auto fs = read_keyword_string(card1 + ",,0.3\n", "p.k", nullptr);
+  EXPECT_EQ(std::get<model::MatPlasticKinematic>(fs.materials.at(0)).fs, 0.3);
+  EXPECT_EQ(material_laws(fs.materials.at(0)).failure_strain, 0.3);
+  const auto never = read_keyword_string(card1 + ",,1.0e+21\n", "p.k", nullptr);
+  EXPECT_EQ(std::get<model::MatPlasticKinematic>(never.materials.at(0)).fs, 0.0);
+  EXPECT_EQ(material_laws(never.materials.at(0)).failure_strain, 0.0);
+  EXPECT_EQ(thrown(card1 + ",,-0.3\n"),
+            "p.k:3: *MAT_003: field FS = -0.3 (a user failure subroutine) is not implemented; give the failure "
+            "strain (> 0), or leave it blank, 0 or 1e21 (no failure)");
+  // The writer keeps FS.
+  EXPECT_EQ(std::get<model::MatPlasticKinematic>(read_keyword_string(write_keyword_string(fs), "w.k", nullptr)
+                                                     .materials.at(0))
+                .fs,
+            0.3);
   EXPECT_NE(thrown(card1 + ",,,1.0\n").find("p.k:3: *MAT_003: field VP = 1.0"),
             std::string::npos);
 }
@@ -83,9 +95,13 @@ TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
   EXPECT_DOUBLE_EQ(b.yield_stress(0.1), 2.0 + 0.1 * 1000.0 * 10.0 / 990.0);
 
   const std::string card1 = "*MAT_024\n         8    7.8e-9    2.0e+5       0.3     200.0\n";
-  EXPECT_EQ(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,0.2\n"),
-            "p.k:2: *MAT_024: field FAIL = 0.2 (element erosion) is not implemented; leave it blank, 0 or 1e21 "
-            "(no failure)");
+  const auto failing = read_keyword_string("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,0.2\n", "p.k", nullptr);
+  EXPECT_EQ(std::get<model::MatPiecewiseLinearPlasticity>(failing.materials.at(0)).fail, 0.2);
+  EXPECT_EQ(material_laws(failing.materials.at(0)).failure_strain, 0.2);
+  EXPECT_EQ(std::get<model::MatPiecewiseLinearPlasticity>(
+                read_keyword_string(write_keyword_string(failing), "w.k", nullptr).materials.at(0))
+                .fail,
+            0.2);
   EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,-1.0\n").find("field FAIL = -1.0"), std::string::npos);
   EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,,1e-7\n").find("field TDEL"), std::string::npos);
   // LS-DYNA's default FAIL (1e21, as deck writers print it) and 0 both mean no failure: read as
@@ -98,6 +114,7 @@ TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
     const auto& z = std::get<model::MatPiecewiseLinearPlasticity>(blank.materials.at(0));
     EXPECT_EQ(a.sigy, z.sigy) << fail;
     EXPECT_EQ(a.etan, z.etan) << fail;
+    EXPECT_EQ(a.fail, 0.0) << fail;
   }
   EXPECT_NE(thrown(card1 + ",,,,-1.0\n").find("p.k:3: *MAT_024: field VP = -1.0"),
             std::string::npos);

@@ -138,7 +138,7 @@ TEST(J2Plasticity, BatchMatchesOneElement) {
 // The deck card maps to the law with its constants, for solids and shells.
 TEST(J2Plasticity, RegistryMapsPlasticKinematic) {
   const MaterialLaws laws =
-      material_laws(model::MatPlasticKinematic{5, 7.8e-9, 2e5, 0.3, 250.0, 2e3, 0.5, 40.4, 5.0, "", {}});
+      material_laws(model::MatPlasticKinematic{5, 7.8e-9, 2e5, 0.3, 250.0, 2e3, 0.5, 40.4, 5.0, 0.0, "", {}});
   ASSERT_TRUE(laws.solid);
   ASSERT_TRUE(laws.shell);
   EXPECT_EQ(std::get<ShellPlasticity<J2Plasticity>>(*laws.shell).law().constants().yield, 250.0);
