@@ -3,7 +3,6 @@
 /// semantics (ids, not indices; LS-DYNA sign conventions). The keyword reader fills it, the writer
 /// writes it back out, the scenarios generate it, and `build_simulation` turns it into the runtime
 /// state (dense arrays, internal indices, physical sign conventions).
-///
 /// Units are whatever consistent set the deck uses (the spec's problems are unitless).
 /// A field left blank in a deck keeps the default given here, which is LS-DYNA's default.
 #include <array>
