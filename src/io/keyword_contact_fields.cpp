@@ -443,27 +443,18 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                     {"(field 6)", 0, Use::refuse, "not a field of this card"},
                                     {"(field 7)", 0, Use::refuse, "not a field of this card"},
                                     {"(field 8)", 0, Use::refuse, "not a field of this card"}};
-  // Type 9's OPTION selects a failure law: the one built is DYNA3D's (OPTION 0 / blank); the
-  // automatic tiebreak card's OPTION 1 is checked by check_automatic_tiebreak_card4.
-  static constexpr Rule kType9[] = {{"OPTION", 0, Use::refuse, "failure law (DYNA3D's Type 9 law, OPTION 0, is built)"},
-                                    {"NFLS", 0, Use::honoured, ""},
+  static constexpr Rule kType9[] = {{"OPTION", 0, Use::honoured, ""}, {"NFLS", 0, Use::honoured, ""},
                                     {"SFLS", 0, Use::honoured, ""},   {"PARAM", 0, Use::refuse, "failure law parameter"},
                                     {"ERATEN", 0, Use::refuse, "normal energy release rate"},
                                     {"ERATES", 0, Use::refuse, "shear energy release rate"},
                                     {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
                                     {"CN", 0, Use::refuse, "normal stiffness"}};
-  static constexpr Rule kAutomaticTiebreak[] = {
-      {"OPTION", 0, Use::honoured, ""},  {"NFLS", 0, Use::honoured, ""},
-      {"SFLS", 0, Use::honoured, ""},    {"PARAM", 0, Use::refuse, "failure law parameter"},
-      {"ERATEN", 0, Use::refuse, "normal energy release rate"},
-      {"ERATES", 0, Use::refuse, "shear energy release rate"},
-      {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
-      {"CN", 0, Use::refuse, "normal stiffness"}};
-  const std::span<const Rule> rules = c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
-                                      : c.form == model::ContactForm::automatic_surface_to_surface
-                                          ? std::span<const Rule>(kAutomaticTiebreak)
-                                          : std::span<const Rule>(kType9);
-  check_card(ctx, *card4, kw, "card 4", rules);
+  check_card(ctx, *card4, kw, "card 4", c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
+                                                                              : std::span<const Rule>(kType9));
+  // Type 9's OPTION selects a failure law; DYNA3D's (0) is built. The automatic card's OPTION 1:
+  // check_automatic_tiebreak_card4.
+  if (c.type == ContactType::tiebreak_surface && c.form != model::ContactForm::automatic_surface_to_surface)
+    field(ctx, card4, kw, "card 4", c.option, {"OPTION", 0, Use::refuse, "failure law (DYNA3D's Type 9 law, 0, is built)"});
 }
 
 namespace {
