@@ -114,6 +114,8 @@ class Card {
 
  private:
   [[noreturn]] void fail(int i, const char* name, const char* expected) const;
+  /// Refuses a number written across the end of field i or of the field before it (fixed format).
+  void check_field_boundaries(int i, const char* name) const;
   std::string_view field_text(int i) const;
   int width(int k) const;
   std::string place(int i) const;

@@ -168,21 +168,60 @@ void Card::fail(int i, const char* name, const char* expected) const {
                    std::string(keyword_) + "): expected " + expected + ", got " + got);
 }
 
+// A number written wider than its fixed-format field runs into the next one, which LS-DYNA (and a
+// plain column reader) would silently read as two numbers: "0.123456789" in a 10-column field is
+// 0.12345678 and, in the next field, 9. Refused when the field's last column and the next field's
+// first column are both written and the next field's text stops before its own last column (a
+// number of its own fills its field right-justified, or is separated by a blank).
+void Card::check_field_boundaries(int i, const char* name) const {
+  if (free_ || i < 0 || i >= static_cast<int>(widths_.size())) return;
+  const std::string_view text = line_.text;
+  const auto spills = [&](int k) {  // field k runs into field k + 1
+    if (k < 0 || k + 1 >= static_cast<int>(widths_.size())) return false;
+    std::size_t start = 0;
+    for (int j = 0; j <= k; ++j) start += static_cast<std::size_t>(width(j));
+    const std::size_t next_width = static_cast<std::size_t>(width(k + 1));
+    if (start == 0 || start >= text.size()) return false;
+    const auto written = [](char c) { return c != ' ' && c != '\t'; };
+    if (!written(text[start - 1]) || !written(text[start])) return false;
+    const std::string_view next = text.substr(start, next_width);
+    return next.size() < next_width || !written(next.back());
+  };
+  const auto refuse = [&](int k) {
+    std::size_t start = 0;
+    for (int j = 0; j < k; ++j) start += static_cast<std::size_t>(width(j));
+    std::size_t end = start + static_cast<std::size_t>(width(k));
+    while (end < text.size() && text[end] != ' ' && text[end] != '\t') ++end;
+    throw InputError(ctx_.where(line_.number) + place(k) + " (" + (k == i ? "field " + std::string(name)
+                                                                          : "the field before " + std::string(name)) +
+                     " of " + std::string(keyword_) + "): '" + std::string(text.substr(start, end - start)) +
+                     "' is written across the field's end into the next field's columns; fixed-format fields are " +
+                     std::to_string(width(k)) +
+                     " columns wide: shorten the number, separate the fields with commas (free format) or use the "
+                     "long format");
+  };
+  if (spills(i - 1)) refuse(i - 1);
+  if (spills(i)) refuse(i);
+}
+
 void Card::get(int i, const char* name, Real& out) const {
   const auto s = raw(i);
   if (s.empty()) return;
+  check_field_boundaries(i, name);
   if (!parse_real(s, out)) fail(i, name, "a real number");
 }
 
 void Card::get(int i, const char* name, Id& out) const {
   const auto s = raw(i);
   if (s.empty()) return;
+  check_field_boundaries(i, name);
   if (!parse_integer(s, out)) fail(i, name, "an integer");
 }
 
 void Card::get(int i, const char* name, int& out) const {
   const auto s = raw(i);
   if (s.empty()) return;
+  check_field_boundaries(i, name);
   Id v = 0;
   if (!parse_integer(s, v) || v < std::numeric_limits<int>::min() ||
       v > std::numeric_limits<int>::max())

@@ -16,6 +16,7 @@
 
 #include "general_contact_models.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "test_support/bar_mode.hpp"
 #include "test_support/collapsed_hex.hpp"
 
 namespace slideline {
@@ -34,77 +35,27 @@ constexpr Real kE = 1000.0, kRho = 2.0;
 /// x = 0, started in its first axial (quarter-wave) mode v = v0 cos(pi x / 2L) e_x; turned by R.
 std::string penta_bar_deck(int n, Real h, Real v0, Real t_end, const Mat3& R = Mat3::Identity(), int elform = 1,
                            bool pyramids = false) {
-  std::ostringstream s;
-  s << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << "\n*SECTION_SOLID\n1," << elform
-    << "\n*MAT_ELASTIC\n1," << kRho << "," << kE << ",0.0\n*PART\nbar\n1,1,1\n*NODE\n";
-  const Real length = n * h, pi = std::acos(-1.0);
-  const auto id = [](int i, int c) { return 4 * i + c + 1; };  // c = dy + 2 dz
-  for (int i = 0; i <= n; ++i)
-    for (int c = 0; c < 4; ++c) {
-      const Vec3 x = R * Vec3(i * h, (c & 1) * h, (c >> 1) * h);
-      s << id(i, c) << "," << x[0] << "," << x[1] << "," << x[2] << "\n";
-    }
-  const auto centre = [n](int i) { return 4 * (n + 1) + i + 1; };
-  for (int i = 0; pyramids && i < n; ++i) {
-    const Vec3 x = R * Vec3((i + 0.5) * h, 0.5 * h, 0.5 * h);
-    s << centre(i) << "," << x[0] << "," << x[1] << "," << x[2] << "\n";
-  }
-  s << "*ELEMENT_SOLID\n";
-  int eid = 1;
-  for (int i = 0; i < n; ++i) {
-    // LS-DYNA order with N1-N2 along x, N1-N4 along y, N1-N5 along z.
-    const std::array<int, 8> cell{id(i, 0), id(i + 1, 0), id(i + 1, 1), id(i, 1),
-                                  id(i, 2), id(i + 1, 2), id(i + 1, 3), id(i, 3)};
+  test_support::BarCells cells;
+  cells.centres = pyramids;
+  cells.elements = [pyramids](std::ostream& s, int& eid, const std::array<int, 8>& cell, int centre) {
     const auto write = [&](const std::array<int, 8>& e) {
       s << eid++ << ",1";
       for (int node : e) s << "," << node;
       s << "\n";
     };
     if (pyramids)
-      for (const auto& y : ::test_support::split_into_pyramids(cell, centre(i))) write(y);
+      for (const auto& y : ::test_support::split_into_pyramids(cell, centre)) write(y);
     else
       for (const auto& w : ::test_support::split_into_pentahedra(cell)) write(w);
-  }
-  s << "*SET_NODE_LIST\n1\n" << id(n, 0) << "," << id(n, 1) << "," << id(n, 2) << "," << id(n, 3)
-    << "\n*BOUNDARY_SPC_SET\n1,0,1,1,1\n*INITIAL_VELOCITY_NODE\n";
-  for (int i = 0; i < n; ++i)
-    for (int c = 0; c < 4; ++c) {
-      const Vec3 v = R * Vec3(v0 * std::cos(pi * i * h / (2.0 * length)), 0.0, 0.0);
-      s << id(i, c) << "," << v[0] << "," << v[1] << "," << v[2] << "\n";
-    }
-  for (int i = 0; pyramids && i < n; ++i) {
-    const Vec3 v = R * Vec3(v0 * std::cos(pi * (i + 0.5) * h / (2.0 * length)), 0.0, 0.0);
-    s << centre(i) << "," << v[0] << "," << v[1] << "," << v[2] << "\n";
-  }
-  s << "*END\n";
-  return s.str();
+  };
+  return test_support::bar_deck(n, h, v0, t_end, R, elform, kRho, kE, cells);
 }
 
-struct BarRun {
-  Real half_period = -1.0;  ///< first time the free end's axial displacement returns to zero
-  Real balance = 0.0;       ///< largest |energy balance error| / initial kinetic energy
-  long cycles = 0;
-};
+using test_support::BarRun;
 
-/// Runs the deck; the free end's axial displacement u = R^T (x - X) . e_x (mean of its 4 nodes).
+/// The bar's run (test_support/bar_mode.hpp), its deck named in error messages.
 BarRun run_bar(const std::string& deck, const Mat3& R = Mat3::Identity()) {
-  auto sim = build_simulation(read_keyword_string(deck, "penta_bar.k"));
-  BarRun r;
-  Real u_prev = 0.0, t_prev = 0.0;
-  bool rose = false;
-  while (sim->step()) {
-    Real u = 0.0;
-    for (Index k = 0; k < 4; ++k) u += (R.transpose() * (sim->nodes().x.get(k) - sim->nodes().x0.get(k)))[0] / 4.0;
-    rose = rose || u > 0.0;
-    if (rose && r.half_period < 0.0 && u_prev > 0.0 && u <= 0.0)
-      r.half_period = t_prev + (sim->time() - t_prev) * u_prev / (u_prev - u);
-    u_prev = u;
-    t_prev = sim->time();
-    const auto& e = sim->energy();
-    r.balance = std::max(r.balance, std::abs(e.balance_error()) / e.kinetic0);
-  }
-  r.cycles = sim->cycle();
-  return r;
+  return test_support::run_bar(deck, "penta_bar.k", R);
 }
 
 }  // namespace

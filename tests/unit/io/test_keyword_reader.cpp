@@ -238,6 +238,33 @@ TEST(KeywordReader, MalformedFieldNamesFileLineColumnsFieldAndCard) {
   EXPECT_THROW(read_keyword_file("/nonexistent/deck.k"), InputError);
 }
 
+// A fixed-format number wider than its 10 columns runs into the next field: "0.123456789" as
+// ENDTIM would be read as ENDTIM 0.12345678 and ENDCYC 9 by a column reader. Refused, naming the
+// columns, the field and the whole text; full-width neighbours and right-justified fields still read.
+TEST(KeywordReader, NumberWrittenAcrossAFixedFieldBoundaryIsAnError) {
+  try {
+    read_keyword_string("*KEYWORD\n*CONTROL_TERMINATION\n0.123456789\n*END\n", "t.k", nullptr);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("t.k:3: columns 1-10 (field ENDTIM of *CONTROL_TERMINATION): '0.123456789' is written "
+                        "across the field's end"),
+              std::string::npos)
+        << what;
+  }
+  // An integer run into the next field: ENDCYC "100.5" would be ENDCYC 10 and DTMIN 0.5.
+  EXPECT_THROW(read_keyword_string("*CONTROL_TERMINATION\n       1.0        100.5\n", "t.k", nullptr),
+               InputError);
+  // Two full-width numbers side by side, and right-justified fields, are plain fixed format.
+  const auto m = read_keyword_string("*CONTROL_TERMINATION\n1.2500E-01         01.0000E-02\n", "t.k", nullptr);
+  EXPECT_EQ(m.termination.endtim, 0.125);
+  EXPECT_EQ(m.termination.endcyc, 0);
+  EXPECT_EQ(m.termination.dtmin, 0.01);
+  const auto n = read_keyword_string("*CONTROL_TERMINATION\n       1.0       100\n", "t.k", nullptr);
+  EXPECT_EQ(n.termination.endtim, 1.0);
+  EXPECT_EQ(n.termination.endcyc, 100);
+}
+
 TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
   const std::string deck =
       "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE\n1,2\n*END\n";
