@@ -36,7 +36,7 @@ inline std::string bar_deck(int n, slideline::Real h, slideline::Real v0, slidel
   using slideline::Real;
   using slideline::Vec3;
   std::ostringstream s;
-  s << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << "\n*SECTION_SOLID\n1," << elform
+  s << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << ",0\n*SECTION_SOLID\n1," << elform
     << "\n*MAT_ELASTIC\n1," << rho << "," << E << ",0.0\n*PART\nbar\n1,1,1\n*NODE\n";
   const Real length = n * h, pi = std::acos(-1.0);
   const auto id = [](int i, int c) { return 4 * i + c + 1; };

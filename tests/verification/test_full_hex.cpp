@@ -38,7 +38,7 @@ struct Beam {
 std::string beam_deck(const Beam& b, int elform, Real nu, Real s, Real t_ramp, Real t_end, Real alpha,
                       const Mat3& R = Mat3::Identity()) {
   std::ostringstream o;
-  o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << "\n*SECTION_SOLID\n1," << elform
+  o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << ",0\n*SECTION_SOLID\n1," << elform
     << "\n*MAT_ELASTIC\n1," << kRho << "," << kE << "," << nu << "\n*PART\nbeam\n1,1,1\n*NODE\n";
   const Real dy = kH / kNy, dz = kW / kNz;
   for (int k = 0; k <= kNz; ++k)

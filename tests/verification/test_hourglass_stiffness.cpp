@@ -32,7 +32,7 @@ constexpr Real kE = 1000.0, kNu = 0.3, kRho = 1.0;
 std::string cantilever_deck(int n, Real length, Real load, int ihq, Real qm, Real t_ramp, Real t_end,
                             Real alpha, const Mat3& R = Mat3::Identity()) {
   std::ostringstream s;
-  s << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << "\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1," << kRho << ","
+  s << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << t_end << ",0\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1," << kRho << ","
     << kE << "," << kNu << "\n*HOURGLASS\n1," << ihq << "," << qm << "\n*PART\nbeam\n1,1,1,0,1\n*NODE\n";
   const auto id = [](int i, int c) { return 4 * i + c + 1; };
   for (int i = 0; i <= n; ++i)

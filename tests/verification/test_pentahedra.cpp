@@ -35,7 +35,7 @@ constexpr Real kE = 1000.0, kRho = 2.0;
 /// x = 0, started in its first axial (quarter-wave) mode v = v0 cos(pi x / 2L) e_x; turned by R.
 std::string penta_bar_deck(int n, Real h, Real v0, Real t_end, const Mat3& R = Mat3::Identity(), int elform = 1,
                            bool pyramids = false) {
-  test_support::BarCells cells;
+  ::test_support::BarCells cells;
   cells.centres = pyramids;
   cells.elements = [pyramids](std::ostream& s, int& eid, const std::array<int, 8>& cell, int centre) {
     const auto write = [&](const std::array<int, 8>& e) {
@@ -48,14 +48,14 @@ std::string penta_bar_deck(int n, Real h, Real v0, Real t_end, const Mat3& R = M
     else
       for (const auto& w : ::test_support::split_into_pentahedra(cell)) write(w);
   };
-  return test_support::bar_deck(n, h, v0, t_end, R, elform, kRho, kE, cells);
+  return ::test_support::bar_deck(n, h, v0, t_end, R, elform, kRho, kE, cells);
 }
 
-using test_support::BarRun;
+using ::test_support::BarRun;
 
 /// The bar's run (test_support/bar_mode.hpp), its deck named in error messages.
 BarRun run_bar(const std::string& deck, const Mat3& R = Mat3::Identity()) {
-  return test_support::run_bar(deck, "penta_bar.k", R);
+  return ::test_support::run_bar(deck, "penta_bar.k", R);
 }
 
 }  // namespace
