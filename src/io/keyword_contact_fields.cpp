@@ -534,7 +534,7 @@ namespace {
 
 constexpr Rule kShell1[] = {
     {"WRPANG", 20, Use::output, "shell warpage angle above which a warning is printed"},
-    {"ESORT", 0, Use::inert, "sorting of triangular shells, which are refused"},
+    {"ESORT", 0, Use::honoured, ""},  // stored (Model::shell_esort); 2 refused where triangles run
     {"IRNXX", -1, Use::inert, "shell normal update of Hughes-Liu shells; the shells here are Belytschko-Tsay"},
     {"ISTUPD", 0, Use::refuse, "shell thickness change with membrane strain"},
     {"THEORY", 2, Use::refuse, "default shell formulation; 2 = Belytschko-Tsay is the one here"},

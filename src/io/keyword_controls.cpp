@@ -35,7 +35,20 @@ void read_control_bulk_viscosity(const Context& ctx, Block& b, Model& m) {
   });
 }
 
-void read_control_fields(const Context& ctx, Block& b, Model&) { check_control_fields(ctx, b); }
+void read_control_fields(const Context& ctx, Block& b, Model& m) {
+  // *CONTROL_SHELL ESORT (card 1, field 2) is stored: whether triangles run as C0 (0, 1) or DKT (2,
+  // refused by the part checks where triangles exist); the other fields are checked as a whole.
+  if (b.keyword == "*CONTROL_SHELL" && !b.done()) {
+    const Line& l = b.cards[b.next];
+    const Card k(ctx, l, b.keyword, kStandard);
+    k.get(1, "ESORT", m.shell_esort);
+    if (m.shell_esort < 0 || m.shell_esort > 2)
+      throw InputError(ctx.where(l.number) + "*CONTROL_SHELL card 1: field ESORT = " + std::to_string(m.shell_esort) +
+                       " must be 0, 1 or 2");
+    m.shell_esort_src = ctx.source(l.number);
+  }
+  check_control_fields(ctx, b);
+}
 
 void read_control_termination(const Context& ctx, Block& b, Model& m) {
   m.termination.src = ctx.source(b.line);

@@ -171,8 +171,9 @@ void Card::fail(int i, const char* name, const char* expected) const {
 // A number written wider than its fixed-format field runs into the next one, which LS-DYNA (and a
 // plain column reader) would silently read as two numbers: "0.123456789" in a 10-column field is
 // 0.12345678 and, in the next field, 9. Refused when the field's last column and the next field's
-// first column are both written and the next field's text stops before its own last column (a
-// number of its own fills its field right-justified, or is separated by a blank).
+// first column are both written (the next one with a digit, sign or point) and the next field's text
+// stops before its own last column (a number of its own fills its field right-justified, or is
+// separated by a blank).
 void Card::check_field_boundaries(int i, const char* name) const {
   if (free_ || i < 0 || i >= static_cast<int>(widths_.size())) return;
   const std::string_view text = line_.text;
@@ -183,7 +184,9 @@ void Card::check_field_boundaries(int i, const char* name) const {
     const std::size_t next_width = static_cast<std::size_t>(width(k + 1));
     if (start == 0 || start >= text.size()) return false;
     const auto written = [](char c) { return c != ' ' && c != '\t'; };
-    if (!written(text[start - 1]) || !written(text[start])) return false;
+    const char first = text[start];  // a number starts with a digit, a sign or a point; text fields (SOLVER "MECH") do not
+    const bool numeric = (first >= '0' && first <= '9') || first == '.' || first == '+' || first == '-';
+    if (!written(text[start - 1]) || !numeric) return false;
     const std::string_view next = text.substr(start, next_width);
     return next.size() < next_width || !written(next.back());
   };

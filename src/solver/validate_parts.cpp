@@ -260,6 +260,10 @@ void check_parts(const model::Model& m, Problems& p) {
       if (shell_sec) check_shell_section(*shell_sec, use.quads, p);
     } else if (use.shells) {
       check_shell_part(*part, shell_sec, use.quads, laws, ihq, p);
+      if (use.triangle && m.shell_esort == 2)
+        p.todo(describe(m.shell_esort_src) + ": field ESORT of *CONTROL_SHELL: 2 (DKT triangular shells) is not "
+                                             "implemented, and part " + std::to_string(pid) + " has triangles (*ELEMENT_SHELL " +
+               std::to_string(use.triangle->id) + ", N3 = N4): they run as C0 triangles (ESORT 1); give 0 or 1");
     } else {
       check_solid_part(*part, find(ssec, part->secid), laws, ihq, p);
     }

@@ -568,6 +568,12 @@ struct Model {
   std::vector<DampingPartMass> damping_parts;
   std::vector<DampingPartStiffness> damping_stiffness;
   ControlTermination termination;
+  /// *CONTROL_SHELL ESORT: 0 (blank) and 1 run triangular shells (N3 = N4) as C0 triangles (what
+  /// ESORT 1 asks for; LS-DYNA's ESORT 0 runs them as degenerate quadrilaterals: docs/keywords.md);
+  /// 2 (DKT triangles) is refused where a deformable shell part has triangles. `shell_esort_src`:
+  /// where it was given.
+  int shell_esort = 0;
+  Source shell_esort_src;
   ControlTimestep timestep;
   ControlContact control_contact;
   DatabaseControl database;

@@ -8,6 +8,7 @@
 
 #include "slideline/core/error.hpp"
 #include "slideline/io/keyword_reader.hpp"
+#include "slideline/solver/build.hpp"
 
 namespace slideline {
 namespace {
@@ -86,6 +87,40 @@ TEST(KeywordControls, MassScalingFieldsAreReadAndMs1stZeroWarns) {
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("c.k:3: *CONTROL_TIMESTEP card 1: field MS1ST = 2"), std::string::npos)
+        << e.what();
+  }
+}
+
+// *CONTROL_SHELL ESORT is stored: 0 and 1 run triangles (N3 = N4) as C0 triangles, which is
+// ESORT 1; 2 (DKT triangles) is refused by the part checks when a deformable part has triangles
+// (naming the card's line, the part and a triangle), and passes where there are none; 3 is refused
+// by the reader.
+TEST(KeywordControls, ShellEsortTwoIsRefusedWhereTrianglesRun) {
+  const auto deck = [](const std::string& esort, bool triangle) {
+    return std::string("*KEYWORD\n*CONTROL_TERMINATION\n1.0\n*CONTROL_SHELL\n20,") + esort +
+           "\n*SECTION_SHELL\n1,2\n0.1\n*MAT_ELASTIC\n1,1.0,1000.0,0.3\n*PART\nplate\n1,1,1\n*NODE\n1,0,0,0\n2,1,0,0\n"
+           "3,1,1,0\n4,0,1,0\n*ELEMENT_SHELL\n" +
+           (triangle ? "7,1,1,2,3,3\n" : "7,1,1,2,3,4\n") + "*END\n";
+  };
+  EXPECT_EQ(read_keyword_string(deck("1", true), "c.k").shell_esort, 1);
+  EXPECT_NO_THROW(build_simulation(read_keyword_string(deck("1", true), "c.k")));
+  EXPECT_NO_THROW(build_simulation(read_keyword_string(deck("2", false), "c.k")));
+  try {
+    build_simulation(read_keyword_string(deck("2", true), "c.k"));
+    FAIL() << "ESORT 2 with a triangle ran";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("c.k:5: field ESORT of *CONTROL_SHELL: 2 (DKT triangular shells) is not implemented, and part 1 "
+                        "has triangles (*ELEMENT_SHELL 7"),
+              std::string::npos)
+        << what;
+  }
+  try {
+    read_keyword_string(deck("3", true), "c.k");
+    FAIL() << "ESORT 3 read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("c.k:5: *CONTROL_SHELL card 1: field ESORT = 3 must be 0, 1 or 2"),
+              std::string::npos)
         << e.what();
   }
 }
