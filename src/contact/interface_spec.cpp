@@ -220,6 +220,8 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   spec.penetration_check = card.penchk == 1 ? xpene : 0.0;
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
+  if (by_segment && card.form == model::ContactForm::automatic_surface_to_surface)
+    spec.cohesive = TiebreakCohesive{card.option, card.param, card.eraten, card.erates, card.ct2cn, card.cn};
   spec.window = ContactWindow{card.bt, card.dt};
   spec.transmitted_output = card.type == T::automatic && card.form == model::ContactForm::dyna3d;
   return spec;

@@ -5,6 +5,7 @@
 // *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK after failure (automatic_tiebreak_contact.hpp).
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -179,6 +180,13 @@ std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec&
   p.friction = spec.friction;
   p.release_to_owner = true;
   p.two_sided_contact = true;
+  if (spec.cohesive.option == 9) {  // the mixed-mode traction-separation law instead of the criterion
+    const TiebreakCohesive& c = spec.cohesive;
+    p.mixed_mode = true;
+    p.cohesive = MixedModeCohesiveLaw{c.cn, 0.0, spec.failure.normal, spec.failure.shear, c.eraten, c.erates,
+                                      c.param != 0.0 ? std::abs(c.param) : 1.0, c.param < 0.0};
+    p.ct2cn = c.ct2cn > 0.0 ? c.ct2cn : 1.0;
+  }
   auto tie = std::make_unique<TiebreakContact>(spec.title, std::move(spec.slave.nodes), std::move(spec.slave.surface),
                                                std::move(spec.master.surface), p);
   return std::make_unique<AutomaticTiebreakContact>(std::move(tie), std::move(contact), std::move(a.from_slave),

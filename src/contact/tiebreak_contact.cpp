@@ -112,12 +112,19 @@ void TiebreakContact::initialize(const ContactContext& c) {
   delta_.assign(n, Vec3::Zero());
   friction_force_.assign(n, Vec3::Zero());
   seed_contact(nodes.x, side);
+  damage_.assign(p_.mixed_mode ? n : 0, 0.0);
+  tie_force_.assign(p_.mixed_mode ? n : 0, Vec3::Zero());
+  cohesive_work_ = cohesive_stored_ = 0.0;
   friction_work_ = 0.0;
   slave_ = master_total_ = first_failure_stress_ = Vec3::Zero();
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
   dt_ = std::numeric_limits<Real>::max();
   for (std::size_t k = 0; k < n; ++k) {
-    const Real kk = compression_ * kappa_[k] * area_[k];
+    Real kk = compression_ * kappa_[k] * area_[k];
+    if (p_.mixed_mode) {
+      const MixedModeCohesiveLaw l = cohesive_law(k);
+      kk = std::max(kk, std::max(l.en, l.et) * area_[k]);
+    }
     if (!(kk > 0.0)) continue;
     Real mm = std::numeric_limits<Real>::max();
     for (int a = 0; a < 4; ++a)
@@ -145,6 +152,10 @@ void TiebreakContact::seed_contact(const Vec3Field& x, const std::vector<std::in
 }
 
 void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
+  if (p_.mixed_mode) {
+    apply_cohesive(nodes, out);
+    return;
+  }
   Vec3 slave = Vec3::Zero();
   master_total_ = Vec3::Zero();  // summed where forces are added to master nodes
   const std::size_t n = links_.size();

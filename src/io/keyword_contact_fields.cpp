@@ -449,9 +449,11 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                     {"ERATES", 0, Use::refuse, "shear energy release rate"},
                                     {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
                                     {"CN", 0, Use::refuse, "normal stiffness"}};
-  check_card(ctx, *card4, kw, "card 4", c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
-                                                                              : std::span<const Rule>(kType9));
-  // Type 9's OPTION selects a failure law; DYNA3D's (0) is built. The automatic card's OPTION 1:
+  // OPTION 9 of the automatic card honours the whole card (checked by check_automatic_tiebreak_card4).
+  if (c.form != model::ContactForm::automatic_surface_to_surface || c.option != 9)
+    check_card(ctx, *card4, kw, "card 4", c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
+                                                                                : std::span<const Rule>(kType9));
+  // Type 9's OPTION selects a failure law; DYNA3D's (0) is built. The automatic card's OPTIONs:
   // check_automatic_tiebreak_card4.
   if (c.type == ContactType::tiebreak_surface && c.form != model::ContactForm::automatic_surface_to_surface)
     field(ctx, card4, kw, "card 4", c.option, {"OPTION", 0, Use::refuse, "failure law (DYNA3D's Type 9 law, 0, is built)"});

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 
 #include "keyword_card.hpp"
@@ -63,27 +64,70 @@ void read_tiebreak_card4(const Card& k, model::Contact& c) {
     k.get(0, "OPTION", c.option);
     k.get(1, "NFLS", c.nfls);
     k.get(2, "SFLS", c.sfls);
+    k.get(3, "PARAM", c.param);
+    k.get(4, "ERATEN", c.eraten);
+    k.get(5, "ERATES", c.erates);
+    k.get(6, "CT2CN", c.ct2cn);
+    k.get(7, "CN", c.cn);
   }
 }
 
-/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK: OPTION 1 (the stress criterion, then the
-/// automatic contact) is built; the other laws of OPTION (2-11: damage, cohesive and mixed-mode
-/// laws) are refused, and so are NFLS, SFLS < 0 (curves in recent manuals). PARAM, ERATEN, ERATES,
-/// CT2CN and CN are refused by check_contact_fields (keyword_contact_fields.cpp).
+/// Why an OPTION of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK is not built (docs/contact.md,
+/// "Automatic tiebreak": the table of options).
+std::string unbuilt_tiebreak_option(int option) {
+  switch (option) {
+    case 0: return "blank or 0 is not a tiebreak law; give OPTION 1, 2 or 9";
+    case 3: return "OPTION 3 also ties nodes that come into contact later and fails them after sticking";
+    case 4: return "OPTION 4 lets tied nodes slide with friction before failure (PARAM = 1: SFLS a friction stress)";
+    case 5: return "OPTION 5 is a damage curve of the crack opening (SFLS a curve, NFLS a yield stress)";
+    case 6: return "OPTION 6's manual text says only that the damage is linear in the largest distance and "
+                   "complete at PARAM, not how the traction follows the damage nor from which distance it counts";
+    case 7: return "OPTION 7 (Dycoss discrete crack model, PARAM a friction angle) is defined in Lemmen and Meijer "
+                   "(2001), not by the manual's text";
+    case 8: case 10: case 11: return "OPTION " + std::to_string(option) + " is the offset-shell variant of OPTION " +
+                                  std::to_string(option == 8 ? 6 : option == 10 ? 7 : 9) +
+                                  "; shell segments are refused on this card";
+    case 13: case 14: return "OPTION 13 and 14 are the *MAT_240 elastoplastic rate-dependent law with extra cards";
+    default: return option < 0 ? "negative OPTION transfers moments (shells) or reads temperature curves (MORTAR)"
+                               : "OPTION " + std::to_string(option) + " is not a tiebreak law of the manual";
+  }
+}
+
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4. Built: OPTION 1 and 2 (the stress
+/// criterion, then the automatic contact; 2 is the manual's law for it, 1 kept as the earlier
+/// sessions built it) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
+/// ERATEN, ERATES, CT2CN, CN). Every other OPTION is refused saying why; NFLS, SFLS < 0 (curves)
+/// are refused. On OPTION 1 and 2, PARAM..CN off their blank default are refused by
+/// check_contact_fields (keyword_contact_fields.cpp).
 void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c, const Line* card4, int line) {
   const std::string at = ctx.where(card4 ? card4->number : line) + c.keyword + " card 4";
   if (!card4) throw InputError(at + " (OPTION NFLS SFLS PARAM ...) is missing");
-  if (c.option != 1)
-    throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) +
-                              " is not implemented; OPTION 1 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 "
-                              ">= 1, then automatic surface-to-surface contact) is the only tiebreak law built here");
+  if (c.option != 1 && c.option != 2 && c.option != 9)
+    throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) + " is not implemented (" +
+                              unbuilt_tiebreak_option(c.option) +
+                              "); built: 1 and 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
+                              "automatic surface-to-surface contact) and 9 (mixed-mode bilinear traction-separation)");
+  const auto value = [](Real v) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", v);
+    return std::string(s);
+  };
   for (const auto& [name, v] : {std::pair<const char*, Real>{"NFLS", c.nfls}, {"SFLS", c.sfls}}) {
     if (v >= 0.0) continue;
-    char value[32];
-    std::snprintf(value, sizeof value, "%g", v);
-    throw NotImplementedError(at + ": field " + name + " = " + value +
+    throw NotImplementedError(at + ": field " + name + " = " + value(v) +
                               " < 0 (a curve in recent manuals) is not implemented; give a stress >= 0");
   }
+  if (c.option != 9) return;
+  // OPTION 9: the peak tractions and the energy release rates have no default.
+  for (const auto& [name, v, what] :
+       {std::tuple<const char*, Real, const char*>{"NFLS", c.nfls, "the peak normal traction"},
+        {"SFLS", c.sfls, "the peak shear traction"},
+        {"ERATEN", c.eraten, "the mode I energy release rate"},
+        {"ERATES", c.erates, "the mode II energy release rate"}})
+    if (!(v > 0.0))
+      throw InputError(at + ": field " + name + " = " + value(v) + ": OPTION 9 needs " + what + " > 0");
+  for (const auto& [name, v] : {std::pair<const char*, Real>{"CT2CN", c.ct2cn}, {"CN", c.cn}})
+    if (v < 0.0) throw InputError(at + ": field " + name + " = " + value(v) + " < 0 (blank or 0: the default)");
 }
 
 /// "*CONTACT_SURFACE_TO_SURFACE, ... and *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE": the rows that

@@ -207,8 +207,13 @@ void write_contacts(const model::Model& m, std::string& o) {
       o += "$#    NFLF      SFLF       NEN       MES\n";
       o += CardOut().r(c.nflf).r(c.sflf).r(c.nen).r(c.mes).str();
     } else if (c.type == ContactType::tiebreak_surface) {
-      o += "$#  OPTION      NFLS      SFLS\n";
-      o += CardOut().i(c.option).r(c.nfls != 0.0 ? c.nfls : c.nflf).r(c.sfls != 0.0 ? c.sfls : c.sflf).str();
+      // PARAM..CN (OPTION 9 of the automatic card) only when given, so other decks write as before.
+      const bool law = c.param != 0.0 || c.eraten != 0.0 || c.erates != 0.0 || c.ct2cn != 0.0 || c.cn != 0.0;
+      o += law ? "$#  OPTION      NFLS      SFLS     PARAM    ERATEN    ERATES     CT2CN        CN\n"
+               : "$#  OPTION      NFLS      SFLS\n";
+      const Real nfls = c.nfls != 0.0 ? c.nfls : c.nflf, sfls = c.sfls != 0.0 ? c.sfls : c.sflf;
+      o += law ? CardOut().i(c.option).r(nfls).r(sfls).r(c.param).r(c.eraten).r(c.erates).r(c.ct2cn).r(c.cn).str()
+               : CardOut().i(c.option).r(nfls).r(sfls).str();
     }
     const bool card_a = c.soft != 0 || c.sofscl != 0.1;
     if (card_a) {

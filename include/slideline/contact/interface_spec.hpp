@@ -46,6 +46,16 @@ struct TiebreakFailure {
   Real shear_exponent = 2.0;   ///< MES (Type 8; Type 9 uses 2)
 };
 
+/// The cohesive law of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (card 4 after NFLS, SFLS).
+struct TiebreakCohesive {
+  int option = 0;      ///< OPTION: 1, 2 the stress criterion; 9 the mixed-mode law
+  Real param = 0.0;    ///< OPTION 9: mixing exponent (> 0 power law, < 0 B-K; 0 means 1)
+  Real eraten = 0.0;   ///< OPTION 9: mode I energy release rate
+  Real erates = 0.0;   ///< OPTION 9: mode II energy release rate
+  Real ct2cn = 0.0;    ///< OPTION 9: tangential / normal stiffness (0 means 1)
+  Real cn = 0.0;       ///< OPTION 9: normal stiffness per unit area (0: the penalty stiffness)
+};
+
 /// A card resolved: everything a family's factory needs.
 struct InterfaceSpec {
   std::string title;  ///< output title (contact_title)
@@ -91,6 +101,7 @@ struct InterfaceSpec {
   /// PENCHK = 1: XPENE (*CONTROL_CONTACT), PenaltyPassOptions::penetration_check; 0 for PENCHK = 0.
   Real penetration_check = 0.0;
   TiebreakFailure failure;
+  TiebreakCohesive cohesive;
   ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)
   /// Type 12: write interfaces/<title>/transmitted_force (the force between its parts).
   bool transmitted_output = false;

@@ -54,6 +54,7 @@
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
+#include "slideline/contact/mixed_mode_cohesive_law.hpp"
 #include "slideline/contact/search/closest_point.hpp"
 #include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/search/tie_search.hpp"
@@ -80,6 +81,14 @@ struct TiebreakParameters {
   /// on tied slave segments push too, each with its slave segment's stiffness kappa_s A_s. Those
   /// springs join the compression factor c, so that the normal force does not jump at release.
   bool two_sided_contact = false;
+  /// OPTION 9 of the automatic card (release_to_owner set): each tie spring follows the mixed-mode
+  /// traction-separation law `cohesive` (damage per tied node, mixed_mode_cohesive_law.hpp) instead
+  /// of the stress criterion; a node is released when its damage reaches 1, a slave segment fails
+  /// when all of its nodes are released. cohesive.en <= 0: the tie's penalty stiffness per unit
+  /// area (LS-DYNA's default for CN); cohesive.et is set per node to ct2cn x en.
+  bool mixed_mode = false;
+  MixedModeCohesiveLaw cohesive;
+  Real ct2cn = 1.0;
 };
 
 class TiebreakContact final : public ContactAlgorithm, public ContactForces {
@@ -119,6 +128,11 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   const std::vector<std::uint8_t>& failed_segments() const { return segment_failed_; }
   /// Per link: the current tie spring stiffness (force / length).
   Real stiffness(std::size_t k) const { return kappa_[k] * area_[k]; }
+  /// Mixed mode (OPTION 9): per link, the damage D in [0, 1].
+  const std::vector<Real>& damage() const { return damage_; }
+  /// Mixed mode: the energy the cohesive springs dissipated so far (their work less the elastic
+  /// energy they still hold); also in the energy ledger's contact term.
+  Real cohesive_dissipation() const { return cohesive_work_ - cohesive_stored_; }
   /// Per slave segment (Type 9): the force of the tie on it at the last cycle (on the slave side).
   const std::vector<Vec3>& segment_forces() const { return segment_force_; }
 
@@ -164,6 +178,15 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   /// returns the force on the slave node (the master side goes through add_to_master).
   Vec3 contact_after_failure(std::size_t k, Real kn, Real kk, const NodalFields& nodes, const StepTimes& times,
                              ContactForceView out);
+  /// Mixed mode (OPTION 9): the law of link k (its normal stiffness per area and ct2cn x it).
+  MixedModeCohesiveLaw cohesive_law(std::size_t k) const {
+    MixedModeCohesiveLaw l = p_.cohesive;
+    l.en = p_.cohesive.en > 0.0 ? p_.cohesive.en : kappa_[k];
+    l.et = p_.ct2cn * l.en;
+    return l;
+  }
+  /// Mixed mode: the tie forces from the cohesive law, damage, releases (tiebreak_cohesive.cpp).
+  void apply_cohesive(const NodalFields& nodes, ContactForceView out);
 
   std::string name_;
   std::vector<Index> candidates_;  ///< the nodes the tie search may tie
@@ -188,6 +211,10 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
   Vec3 first_failure_stress_ = Vec3::Zero();  ///< Type 9: (max, mean, max/mean) normal traction
+  std::vector<Real> damage_;         ///< mixed mode: per link, the damage
+  std::vector<Vec3> tie_force_;      ///< mixed mode: per link, the force on the slave at the last cycle
+  Real cohesive_work_ = 0.0;         ///< mixed mode: work done on the cohesive springs (trapezoidal)
+  Real cohesive_stored_ = 0.0;       ///< mixed mode: elastic energy the springs hold now
 };
 
 }  // namespace slideline

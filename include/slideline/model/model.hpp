@@ -493,7 +493,7 @@ struct Contact {
   Real nen = 2.0;   ///< normal exponent
   Real mes = 2.0;   ///< shear exponent
   int option = 0;   ///< tiebreak OPTION
-  Real nfls = 0.0, sfls = 0.0;
+  Real nfls = 0.0, sfls = 0.0, param = 0.0, eraten = 0.0, erates = 0.0, ct2cn = 0.0, cn = 0.0;  ///< card 4
   Real radius = 0.0;  ///< nodal contact radius for discrete nodes (type 5)
   /// Slave-master coupling (Types 3, 5, 10, 12 with surface slaves; the keyword's _MORTAR option
   /// sets 1, docs/keywords.md): 0 DYNA3D's rule (each slave node on its master segment's closest

@@ -171,8 +171,11 @@ TEST(ContactKeywords, AutomaticTiebreakCard4) {
     }
   };
   const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
-  refused("2,2.5,3.5\n", at + "OPTION = 2 is not implemented");
-  refused("9,2.5,3.5\n", at + "OPTION = 9 is not implemented");
+  refused("3,2.5,3.5\n", at + "OPTION = 3 is not implemented");
+  refused("6,2.5,3.5,0.1\n", at + "OPTION = 6 is not implemented (OPTION 6's manual text");
+  refused("7,2.5,3.5\n", at + "OPTION = 7 is not implemented (OPTION 7 (Dycoss");
+  refused("11,2.5,3.5\n", at + "OPTION = 11 is not implemented (OPTION 11 is the offset-shell variant of OPTION 9");
+  refused("-9,2.5,3.5\n", at + "OPTION = -9 is not implemented");
   refused(",2.5,3.5\n", at + "OPTION = 0 is not implemented");
   refused("1,-4,3.5\n", at + "NFLS = -4");
   refused("1,2.5,-7\n", at + "SFLS = -7");
@@ -182,6 +185,61 @@ TEST(ContactKeywords, AutomaticTiebreakCard4) {
   refused("1,2.5,3.5,0,0,0,0.5\n", at + "CT2CN = 0.5");
   refused("1,2.5,3.5,0,0,0,0,1e5\n", at + "CN = 100000");
   EXPECT_THROW(read_keyword_string(deck(""), "c.k"), InputError);  // card 4 missing
+}
+
+// OPTION 2 is the stress criterion (OPTION 1's law, under the manual's number); OPTION 9 reads the
+// whole card (PARAM, ERATEN, ERATES, CT2CN, CN) and writes it back; its peak tractions and energy
+// release rates are required (> 0), CT2CN and CN < 0 refused; PARAM..CN on OPTION 2 are refused.
+TEST(ContactKeywords, AutomaticTiebreakOptions2And9) {
+  const auto deck = [](const std::string& card4) {
+    return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n1\n" + card4 + "*END\n";
+  };
+  const auto two = read_keyword_string(deck("2,2.5,3.5\n"), "c.k");
+  EXPECT_EQ(two.contacts.at(0).option, 2);
+  EXPECT_EQ(two.contacts.at(0).nflf, 2.5);
+  const auto m = read_keyword_string(deck("9,2.5,3.5,-1.5,0.01,0.02,0.8,1e4\n"), "c.k");
+  const auto& c = m.contacts.at(0);
+  EXPECT_EQ(c.option, 9);
+  EXPECT_EQ(c.nflf, 2.5);
+  EXPECT_EQ(c.sflf, 3.5);
+  EXPECT_EQ(c.param, -1.5);
+  EXPECT_EQ(c.eraten, 0.01);
+  EXPECT_EQ(c.erates, 0.02);
+  EXPECT_EQ(c.ct2cn, 0.8);
+  EXPECT_EQ(c.cn, 1e4);
+  const auto again = read_keyword_string(write_keyword_string(m), "again.k");
+  const auto& b = again.contacts.at(0);
+  EXPECT_EQ(b.option, 9);
+  EXPECT_EQ(b.nflf, 2.5);
+  EXPECT_EQ(b.sflf, 3.5);
+  EXPECT_EQ(b.param, -1.5);
+  EXPECT_EQ(b.eraten, 0.01);
+  EXPECT_EQ(b.erates, 0.02);
+  EXPECT_EQ(b.ct2cn, 0.8);
+  EXPECT_EQ(b.cn, 1e4);
+
+  const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
+  const auto input_error = [&](const std::string& card4, const std::string& message) {
+    SCOPED_TRACE(card4);
+    try {
+      read_keyword_string(deck(card4), "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  input_error("9,0,3.5,1,0.01,0.02\n", at + "NFLS = 0: OPTION 9 needs the peak normal traction > 0");
+  input_error("9,2.5,,1,0.01,0.02\n", at + "SFLS = 0: OPTION 9 needs the peak shear traction > 0");
+  input_error("9,2.5,3.5,1,,0.02\n", at + "ERATEN = 0: OPTION 9 needs the mode I energy release rate > 0");
+  input_error("9,2.5,3.5,1,0.01,-2\n", at + "ERATES = -2: OPTION 9 needs the mode II energy release rate > 0");
+  input_error("9,2.5,3.5,1,0.01,0.02,-1\n", at + "CT2CN = -1 < 0");
+  input_error("9,2.5,3.5,1,0.01,0.02,1,-5\n", at + "CN = -5 < 0");
+  try {
+    read_keyword_string(deck("2,2.5,3.5,0,0.01\n"), "c.k");
+    ADD_FAILURE() << "read";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find(at + "ERATEN = 0.01"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
