@@ -318,12 +318,28 @@ TEST(Build, ShellMassScalingReachesTheRequestedStep) {
 TEST(Build, AddedMassAboveEndmasIsRefused) {
   model::Model m = plate_model(false);
   m.timestep.dt2ms = -5e-3;
+  m.timestep.ms1st = 1;
   m.termination.endmas = 10.0;
   try {
     build_simulation(m)->initialize();
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("ENDMAS"), std::string::npos) << e.what();
+  }
+}
+
+// Mass scaling every cycle (MS1ST = 0, LS-DYNA's default) is built for hexahedra only: the shell
+// plate with DT2MS and MS1ST = 0 is refused at initialize(), naming MS1ST and the part.
+TEST(Build, ShellMassScalingEveryCycleIsRefused) {
+  model::Model m = plate_model(false);
+  m.timestep.dt2ms = -5e-3;
+  m.timestep.ms1st = 0;
+  try {
+    build_simulation(m)->initialize();
+    FAIL() << "expected NotImplementedError";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("MS1ST = 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("part 1"), std::string::npos) << e.what();
   }
 }
 
