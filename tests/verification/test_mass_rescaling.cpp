@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -71,6 +72,7 @@ struct PushedBar : test_support::StagedSimulation {
       pushed.supports.push_back(push);
     }
     setup.supports = {held, pushed};
+    for (int c = 0; c < 4; ++c) setup.nodes.v.set(4 * n + c, -push_speed * dir);  // no jump at t = 0
     setup.controls.end_time = 0.0;
   }
   static Real wave_speed() { return std::sqrt(kE / kRho); }
@@ -79,11 +81,44 @@ struct PushedBar : test_support::StagedSimulation {
     const auto& x = sim().nodes().x;
     return (x.get(4 * (e + 1)) - x.get(4 * e)).dot(r.col(0));
   }
+  /// Element e's stable step from its deformed geometry: V / A_max / c, V the volume of the
+  /// trilinear hexahedron (2 x 2 x 2 Gauss points integrate its det J, a polynomial of degree <= 2
+  /// in each coordinate, exactly), A_max the largest face area 1/2 |d1 x d2| (d1, d2 the face's
+  /// diagonals; exact for a plane face). For the ideal box this is l / c; the pushed bar is a box
+  /// to ~1e-9 only: compressed far past Euler's load (stress ~0.2 E against pi^2 E h^2 / (12 L^2)
+  /// ~ 0.008 E) it amplifies round-off into a bending of that size, so the closed form is
+  /// evaluated on the actual nodes.
+  Real element_step(int e) const {
+    const auto& x = sim().nodes().x;
+    const Index a = 4 * e, b = 4 * (e + 1);
+    const std::array<Index, 8> q{a + 0, b + 0, b + 1, a + 1, a + 3, b + 3, b + 2, a + 2};
+    constexpr int sx[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, sy[8] = {-1, -1, 1, 1, -1, -1, 1, 1},
+                  sz[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+    const Real g = 1.0 / std::sqrt(3.0);
+    Real volume = 0.0;
+    for (int p = 0; p < 8; ++p) {
+      const Real xi = g * sx[p], eta = g * sy[p], zeta = g * sz[p];
+      Eigen::Matrix3d jac = Eigen::Matrix3d::Zero();
+      for (int k = 0; k < 8; ++k) {
+        const Vec3 d(sx[k] * (1 + sy[k] * eta) * (1 + sz[k] * zeta), sy[k] * (1 + sx[k] * xi) * (1 + sz[k] * zeta),
+                     sz[k] * (1 + sx[k] * xi) * (1 + sy[k] * eta));
+        jac += x.get(q[static_cast<std::size_t>(k)]) * (d / 8.0).transpose();
+      }
+      volume += jac.determinant();
+    }
+    constexpr int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    Real area = 0.0;
+    for (const auto& f : faces) {
+      const Vec3 d1 = x.get(q[f[2]]) - x.get(q[f[0]]), d2 = x.get(q[f[3]]) - x.get(q[f[1]]);
+      area = std::max(area, 0.5 * d1.cross(d2).norm());
+    }
+    return volume / area / wave_speed();
+  }
   /// The closed-form added mass sum_e m_e ((T / dt_e)^2 - 1) over the elements with dt_e < T.
   Real closed_form_added(Real target) const {
     Real added = 0.0;
     for (int e = 0; e < n; ++e) {
-      const Real dt_e = length(e) / wave_speed();
+      const Real dt_e = element_step(e);
       if (dt_e < target) added += kRho * kH * kH * kH * ((target / dt_e) * (target / dt_e) - 1.0);
     }
     return added;
@@ -102,7 +137,7 @@ Eigen::Matrix3d rotation() {
 
 bool has_channel(const Simulation& s, const std::string& name) {
   const auto& c = s.channels();
-  return std::any_of(c.begin(), c.end(), [&](const HistoryChannel& h) { return h.name == name; });
+  return std::any_of(c.begin(), c.end(), [&](const HistoryChannel& h) { return h.path == name; });
 }
 
 /// Pushes a 10-element bar at v_p = 2 (c = 100) for `cycles` cycles with DT2MS = -0.95 h/c and
@@ -141,10 +176,15 @@ TEST(MassRescaling, PushedBarKeepsTheStepWithTheClosedFormAddedMass) {
   const long cycles = 120;
   PushedBar once(10, Eigen::Matrix3d::Identity(), 2.0);
   const PushResult r1 = push(once, false, cycles);
-  // l ~ 0.8 h at the end: the step follows the shortest element, min l_e / c, well below T.
-  Real lmin_once = kH;
-  for (int e = 0; e < once.n; ++e) lmin_once = std::min(lmin_once, once.length(e));
-  EXPECT_NEAR(once.sim().stable_dt(), lmin_once / PushedBar::wave_speed(), 1e-10 * target);
+  // l ~ 0.8 h at the end: the step follows the shortest element, min dt_e (= min l_e / c to the
+  // bending's 1e-9), well below T.
+  Real dt_once = 1.0, lmin_once = kH;
+  for (int e = 0; e < once.n; ++e) {
+    dt_once = std::min(dt_once, once.element_step(e));
+    lmin_once = std::min(lmin_once, once.length(e));
+  }
+  EXPECT_NEAR(once.sim().stable_dt(), dt_once, 1e-12 * target);
+  EXPECT_NEAR(once.sim().stable_dt(), lmin_once / PushedBar::wave_speed(), 1e-7 * target);
   EXPECT_LT(r1.min_stable, 0.9 * target);
   EXPECT_EQ(once.sim().added_mass().at(0).added, 0.0);
   for (const Eigen::Matrix3d& rot : {Eigen::Matrix3d(Eigen::Matrix3d::Identity()), rotation()}) {
@@ -160,19 +200,23 @@ TEST(MassRescaling, PushedBarKeepsTheStepWithTheClosedFormAddedMass) {
     const PartAddedMass& p = bar.sim().added_mass().at(0);
     EXPECT_EQ(p.scaled, 10);
     EXPECT_NEAR(p.mass, m0, 1e-13 * m0);
-    EXPECT_NEAR(p.added, expected, 1e-10 * expected);
+    EXPECT_NEAR(p.added, expected, 1e-12 * expected);
     EXPECT_GT(expected, 0.3 * m0);  // (0.95 / 0.8)^2 - 1 ~ 0.4 per element
     EXPECT_NEAR(bar.total_mass(), m0 + expected, 1e-10 * m0);
     // The smallest element step before the factors, from the shortest element.
-    Real lmin = kH;
-    for (int e = 0; e < bar.n; ++e) lmin = std::min(lmin, bar.length(e));
-    EXPECT_NEAR(p.smallest_step, lmin / PushedBar::wave_speed(), 1e-10 * target);
-    // Energy: the mass changes put kinetic energy in; booked, the balance closes (the bound
-    // measured: 1e-3 of the energy in play, the O(dt^2) of the half-step kinetic energy).
+    Real dt_min = 1.0;
+    for (int e = 0; e < bar.n; ++e) dt_min = std::min(dt_min, bar.element_step(e));
+    EXPECT_NEAR(p.smallest_step, dt_min, 1e-12 * target);
+    // Energy: the mass changes put kinetic energy in (energy/mass_scaling, 3.1e-3 here); booked,
+    // the balance error is that of the same push without mass scaling (measured 5.7e-5 and
+    // 7.9e-5 of the support's work 1.7: the O(dt^2) of the half-step kinetic energy), 50 times
+    // smaller than the term; unbooked it would be 3.1e-3.
     const EnergyReport& en = bar.sim().energy();
+    const EnergyReport& en_once = once.sim().energy();
     EXPECT_GT(en.mass_scaling, 0.0);
-    EXPECT_LT(std::abs(en.relative_balance_error()), 1e-3) << en.balance_error() << " of " << en.support;
-    EXPECT_GT(std::abs(en.mass_scaling), 10.0 * std::abs(en.balance_error()));
+    EXPECT_LT(std::abs(en.relative_balance_error()), 1e-4) << en.balance_error() << " of " << en.support;
+    EXPECT_LT(std::abs(en.balance_error()), 2.0 * std::abs(en_once.balance_error()));
+    EXPECT_GT(std::abs(en.mass_scaling), 20.0 * std::abs(en.balance_error()));
     EXPECT_TRUE(has_channel(bar.sim(), "energy/mass_scaling"));
     EXPECT_TRUE(has_channel(bar.sim(), "parts/1/added_mass"));
   }
