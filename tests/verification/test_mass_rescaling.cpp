@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -217,6 +218,10 @@ TEST(MassRescaling, PushedBarKeepsTheStepWithTheClosedFormAddedMass) {
     EXPECT_LT(std::abs(en.relative_balance_error()), 1e-4) << en.balance_error() << " of " << en.support;
     EXPECT_LT(std::abs(en.balance_error()), 2.0 * std::abs(en_once.balance_error()));
     EXPECT_GT(std::abs(en.mass_scaling), 20.0 * std::abs(en.balance_error()));
+    std::printf("pushed bar (%s): added mass %.10g (closed form %.10g, %.3g of the mass), stable step / T - 1 in "
+                "[%.2g, %.2g]; energy: mass_scaling %.4g, balance error %.3g (MS1ST = 1: %.3g) of support work %.4g\n",
+                rot.isIdentity() ? "along x" : "rotated", p.added, expected, p.added / m0, r.min_stable / target - 1.0,
+                r.max_stable / target - 1.0, en.mass_scaling, en.balance_error(), en_once.balance_error(), en.support);
     EXPECT_TRUE(has_channel(bar.sim(), "energy/mass_scaling"));
     EXPECT_TRUE(has_channel(bar.sim(), "parts/1/added_mass"));
   }
