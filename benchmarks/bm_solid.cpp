@@ -17,8 +17,11 @@ namespace {
 /// n x n x n unit cube of the spec's rubber, bottom fixed in y, loaded by gravity-like body load;
 /// stiffness damping `beta` (0 = none), hourglass form `hg` (default: the spec's type 10; QM 1, or
 /// the default 0.1 for the viscous form).
+/// `ms1st` >= 0: mass scaling with DT2MS = -2 h / c (every element's mass x 4), once (1) or every
+/// cycle (0).
 std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0,
-                                      HexHourglass::Kind hg = HexHourglass::Kind::physical_stiffness) {
+                                      HexHourglass::Kind hg = HexHourglass::Kind::physical_stiffness,
+                                      int ms1st = -1) {
   SimulationSetup setup;
   const int m = n + 1;
   const Index nn = m * m * m;
@@ -65,6 +68,10 @@ std::unique_ptr<Simulation> make_cube(int n, Real beta = 0.0,
   d.alpha = 15.0;
   setup.damping.push_back(d);
   setup.controls.end_time = 1e30;
+  if (ms1st >= 0) {
+    setup.controls.dt2ms = -2.0 * h / MooneyRivlin(0.01, 909.091, 0.0, 0.1).wave_speed();
+    setup.controls.mass_scaling_every_cycle = ms1st == 0;
+  }
   auto sim = std::make_unique<Simulation>(std::move(setup));
   sim->initialize();
   return sim;
@@ -119,6 +126,17 @@ void BM_HexHourglassForms(benchmark::State& state) {
 void BM_FullStep(benchmark::State& state) {
   set_threads(static_cast<int>(state.range(1)));
   auto sim = make_cube(static_cast<int>(state.range(0)));
+  for (auto _ : state) sim->step();
+  set_counters(state, sim->element_count());
+  set_threads(max_threads());
+}
+
+/// The full step with mass scaling (DT2MS = -2 h / c, every element x 4): MS1ST = 1 (argument 1,
+/// scaled once) against MS1ST = 0 (argument 0, factors and nodal masses rebuilt every cycle).
+void BM_FullStepMassScaling(benchmark::State& state) {
+  set_threads(static_cast<int>(state.range(1)));
+  auto sim = make_cube(static_cast<int>(state.range(0)), 0.0, HexHourglass::Kind::physical_stiffness,
+                       static_cast<int>(state.range(2)));
   for (auto _ : state) sim->step();
   set_counters(state, sim->element_count());
   set_threads(max_threads());
@@ -195,6 +213,11 @@ BENCHMARK(BM_HexHourglassForms)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_FullStep)->Apply(sizes);
+BENCHMARK(BM_FullStepMassScaling)
+    ->ArgsProduct({{22, 46}, {1, 2}, {1, 0}})
+    ->ArgNames({"n", "threads", "ms1st"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_SolidForms)
     ->ArgsProduct({{22}, {1, 2, 10}})
     ->ArgNames({"n", "elform"})

@@ -140,9 +140,9 @@ void print_added_mass(const slideline::Simulation& sim, const char* prefix, bool
     added += p.added;
     if (per_part) fmt::print("{}{}\n", prefix, slideline::describe(p));
   }
-  fmt::print("{}DT2MS = {:g}: added mass {:.6g} ({:.3g}% of {:.6g}); step TSSFAC x |DT2MS| = {:.6g}\n", prefix,
-             sim.controls().dt2ms, added, mass > 0.0 ? 100.0 * added / mass : 0.0, mass,
-             sim.controls().dt_scale * std::abs(sim.controls().dt2ms));
+  fmt::print("{}DT2MS = {:g}{}: added mass {:.6g} ({:.3g}% of {:.6g}); step TSSFAC x |DT2MS| = {:.6g}\n", prefix,
+             sim.controls().dt2ms, sim.controls().mass_scaling_every_cycle ? " (MS1ST = 0, every cycle)" : " (MS1ST = 1, once)",
+             added, mass > 0.0 ? 100.0 * added / mass : 0.0, mass, sim.controls().dt_scale * std::abs(sim.controls().dt2ms));
 }
 
 /// Element erosion (element/element_erosion.hpp): per eroding part, the elements deleted and when

@@ -78,8 +78,8 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     k.get(5, "LCTM", t.lctm);
     k.get(7, "MS1ST", t.ms1st);
     // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
-    // step (the stable step is always respected); DT2MS (mass scaling), MS1ST and LCTM are the
-    // builder's business.
+    // step (the stable step is always respected); DT2MS (mass scaling, once with MS1ST = 1, every
+    // cycle with MS1ST = 0: docs/solver.md, "Mass scaling") and LCTM are the builder's business.
     const auto ignored = [&](bool set, const char* field, const char* what) {
       if (set)
         ctx.warn(l.number, std::string("*CONTROL_TIMESTEP: field ") + field + " (" + what +
@@ -87,11 +87,13 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     };
     ignored(t.dtinit != 0.0, "DTINIT", "initial time step");
     ignored(t.isdo != 0, "ISDO", "shell time-step length option");
-    ignored(t.tslimt != 0.0, "TSLIMT", "shell minimum time step");
-    if (t.dt2ms != 0.0 && t.ms1st == 0)  // docs/solver.md, "Mass scaling"
-      ctx.warn(l.number, "*CONTROL_TIMESTEP: DT2MS with MS1ST = 0: LS-DYNA re-scales the masses every cycle; "
-                         "slideline scales them once, at the start (MS1ST = 1), and where elements shrink later "
-                         "the step falls below TSSFAC x |DT2MS| instead of more mass being added");
+    // TSLIMT lowers the moduli of shells whose step falls below it (LS-DYNA: elastic-plastic
+    // shells): physics, not implemented.
+    if (t.tslimt != 0.0)
+      throw NotImplementedError(ctx.where(l.number) + "*CONTROL_TIMESTEP card 1: field TSLIMT = " +
+                                std::string(k.raw(3)) + " (shell minimum time step: lowers the moduli of shells whose "
+                                "step falls below it) is not implemented; running without it would be a different "
+                                "model (leave it blank or give its default 0)");
     if (t.ms1st != 0 && t.ms1st != 1)
       throw InputError(ctx.where(l.number) + "*CONTROL_TIMESTEP card 1: field MS1ST = " + std::to_string(t.ms1st) +
                        " must be 0 or 1");

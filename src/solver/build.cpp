@@ -483,7 +483,8 @@ struct Builder {
       c.energy_error_warning = std::min(0.01, 0.2 * c.energy_error_limit);
     }
     c.dt_scale = m.timestep.tssfac > 0.0 ? m.timestep.tssfac : 0.9;
-    c.dt2ms = m.timestep.dt2ms;  // mass scaling at initialize (solver/mass_scaling.hpp)
+    c.dt2ms = m.timestep.dt2ms;  // mass scaling (solver/mass_scaling.hpp, mass_rescaling.hpp)
+    c.mass_scaling_every_cycle = m.timestep.ms1st == 0;  // LS-DYNA's default: every cycle
     c.added_mass_limit_percent = m.termination.endmas > 0.0 ? m.termination.endmas : 1e8;
     if (m.timestep.lctm != 0) {
       // The curve (positive, validate_model) bounds the step; the stable step is still respected below it.

@@ -8,7 +8,7 @@ namespace slideline {
 
 Real EnergyReport::relative_balance_error() const {
   const Real scale =
-      std::max({std::abs(external) + std::abs(support) + std::abs(constraint) + kinetic0, kinetic,
+      std::max({std::abs(external) + std::abs(support) + std::abs(constraint) + kinetic0 + std::abs(mass_scaling), kinetic,
                 std::abs(internal) + hourglass + bulk_viscosity + damping + std::abs(contact) + friction + eroded(),
                 std::numeric_limits<Real>::min()});
   return balance_error() / scale;

@@ -8,14 +8,6 @@
 
 namespace slideline {
 
-Real mass_scale_factor(Real dt_e, Real dt2ms) {
-  const Real target = std::abs(dt2ms);
-  if (dt2ms == 0.0 || !(dt_e < std::numeric_limits<Real>::max())) return 1.0;
-  if (dt2ms < 0.0 && dt_e >= target) return 1.0;
-  const Real r = target / dt_e;
-  return r * r;
-}
-
 PartAddedMass scale_block_mass(ElementBlock& block, NodalFields& nodes, Real block_mass, Real dt2ms) {
   PartAddedMass p;
   p.part = block.part_id();

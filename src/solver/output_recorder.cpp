@@ -57,13 +57,25 @@ void OutputRecorder::build_channels(const OutputSources& src) {
   for (std::size_t b = 0; b < src.blocks.size(); ++b) {
     if (!src.blocks[b]->has_plasticity()) continue;
     const Id part = src.blocks[b]->part_id();
-    auto it = std::find_if(plastic_parts_.begin(), plastic_parts_.end(), [&](const PlasticPart& p) { return p.part == part; });
-    if (it == plastic_parts_.end()) it = plastic_parts_.insert(plastic_parts_.end(), PlasticPart{part, {}});
+    auto it = std::find_if(plastic_parts_.begin(), plastic_parts_.end(), [&](const PartBlocks& p) { return p.part == part; });
+    if (it == plastic_parts_.end()) it = plastic_parts_.insert(plastic_parts_.end(), PartBlocks{part, {}});
     it->blocks.push_back(b);
   }
-  for (const PlasticPart& p : plastic_parts_) {
+  for (const PartBlocks& p : plastic_parts_) {
     channels_.push_back({"parts/" + std::to_string(p.part) + "/max_plastic_strain", 1});
     channels_.push_back({"parts/" + std::to_string(p.part) + "/plastic_work", 1});
+  }
+  // Mass scaling every cycle: the energy it put in and each part's added mass, only then.
+  mass_parts_.clear();
+  if (!src.added_mass.empty()) {
+    channels_.push_back({"energy/mass_scaling", 1});
+    for (std::size_t b = 0; b < src.added_mass.size(); ++b) {
+      const Id part = src.added_mass[b].part;
+      auto it = std::find_if(mass_parts_.begin(), mass_parts_.end(), [&](const PartBlocks& p) { return p.part == part; });
+      if (it == mass_parts_.end()) it = mass_parts_.insert(mass_parts_.end(), PartBlocks{part, {}});
+      it->blocks.push_back(b);
+    }
+    for (const PartBlocks& p : mass_parts_) channels_.push_back({"parts/" + std::to_string(p.part) + "/added_mass", 1});
   }
   std::size_t width = 0;
   for (const auto& c : channels_) width += c.components;
@@ -205,11 +217,19 @@ void OutputRecorder::collect_history(const OutputSources& src) {
   for (Index i : src.history_nodes) put3(src.nodes.displacement(i));
   for (Real v : src.energy.values()) values[k++] = v;
   if (erodes_) values[k++] = src.energy.eroded();
-  for (const PlasticPart& p : plastic_parts_) {
+  for (const PartBlocks& p : plastic_parts_) {
     PlasticityTotals t;
     for (std::size_t b : p.blocks) t += src.blocks[b]->plasticity_totals(src.nodes);
     values[k++] = t.max_plastic_strain;
     values[k++] = t.plastic_work;
+  }
+  if (!src.added_mass.empty()) {
+    values[k++] = src.energy.mass_scaling;
+    for (const PartBlocks& p : mass_parts_) {
+      Real added = 0.0;
+      for (std::size_t b : p.blocks) added += src.added_mass[b].added;
+      values[k++] = added;
+    }
   }
 }
 

@@ -60,7 +60,9 @@ void Simulation::initialize() {
   // Who dictates each node's motion: rigid bodies first (their node lists are known before they
   // initialise), then contact ties (known after the interfaces initialise, initialize_contacts).
   roles_.assign_rigid(n, constraints_);
+  if (rescaling_.active()) refuse_unsupported_rescaling();
   resolve_body_loads(block_mass);
+  if (rescaling_.active() && !body_loads_.empty()) rescaling_.attach_body_loads(body_loads_, blocks_, corners_.force_slots);
   roles_.assign_supports(n, supports_, t_);
   alpha_.assign(n, 0.0);
   has_damping_curves_ = std::any_of(damping_.begin(), damping_.end(), [](const MassDamping& d) { return d.has_curve; });
@@ -100,7 +102,7 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
     b->set_slot_base(fbase, mbase);
     before = nodes_.mass;
     b->initialize(nodes_);
-    if (controls_.dt2ms != 0.0) scale_block_mass(*b, before);
+    if (controls_.dt2ms != 0.0) scale_block_mass(*b, before);  // MS1ST = 0: the physical mass only
     block_mass.emplace_back(nodes_.mass);
     for (Index i = 0; i < n; ++i) block_mass.back()[i] -= before[i];
     const auto conn = b->connectivity();
@@ -120,6 +122,8 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
   if (mbase > 0) corners_.moment_slots.build(n, moment_pairs);
   has_rotations_ = std::any_of(nodes_.has_rotation.begin(), nodes_.has_rotation.end(),
                                [](std::uint8_t r) { return r != 0; });
+  if (controls_.dt2ms != 0.0 && controls_.mass_scaling_every_cycle)
+    rescaling_.initialize(blocks_, nodes_, corners_.force_slots, fbase, controls_.dt2ms, added_mass_);
   check_added_mass();
   return block_mass;
 }
@@ -127,7 +131,37 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
 void Simulation::scale_block_mass(ElementBlock& block, const std::vector<Real>& before) {
   Real lumped = 0.0;  // the block's physical mass, in node order (thread-count independent)
   for (std::size_t i = 0; i < before.size(); ++i) lumped += nodes_.mass[i] - before[i];
+  if (controls_.mass_scaling_every_cycle) {  // MS1ST = 0: MassRescaling sets the added mass
+    added_mass_.push_back(PartAddedMass{block.part_id(), lumped, 0.0, 0, block.element_count(), 0.0});
+    return;
+  }
   added_mass_.push_back(slideline::scale_block_mass(block, nodes_, lumped, controls_.dt2ms));
+}
+
+void Simulation::refuse_unsupported_rescaling() const {
+  // What takes the nodal masses once, at the start, would miss the mass added later.
+  const char* what = "mass scaling re-evaluated every cycle (DT2MS with MS1ST = 0 of *CONTROL_TIMESTEP)";
+  const auto rigid = roles_.rigid();
+  for (Index i : rescaling_.scaled_nodes())
+    if (rigid[static_cast<std::size_t>(i)])
+      throw NotImplementedError(std::string(what) + ": node " + std::to_string(nodes_.ids[static_cast<std::size_t>(i)]) +
+                                " belongs to a rigid body and to a deformable element; the body takes its mass "
+                                "properties once, at the start (MS1ST = 1 scales the masses once)");
+}
+
+void Simulation::check_added_mass_in_run() const {
+  Real mass = 0.0, added = 0.0;
+  for (const auto& p : added_mass_) {
+    mass += p.mass;
+    added += p.added;
+  }
+  if (mass > 0.0 && 100.0 * added / mass > controls_.added_mass_limit_percent)
+    throw InstabilityError("mass scaling (DT2MS with MS1ST = 0 of *CONTROL_TIMESTEP) has added " + std::to_string(added) +
+                               ", " + std::to_string(100.0 * added / mass) + "% of the model's mass " +
+                               std::to_string(mass) + ", more than ENDMAS of *CONTROL_TERMINATION allows (" +
+                               std::to_string(controls_.added_mass_limit_percent) + "%) at t = " + std::to_string(t_) +
+                               ", cycle " + std::to_string(cycle_),
+                           t_, cycle_);
 }
 
 void Simulation::check_added_mass() const {
@@ -219,7 +253,10 @@ void Simulation::classify_contact_nodes() {
 }
 
 OutputSources Simulation::output_sources() const {
-  return OutputSources{nodes_, blocks_, contacts_, supports_, constraints_, history_nodes_, ledger_.report()};
+  return OutputSources{nodes_,         blocks_,          contacts_,
+                       supports_,      constraints_,     history_nodes_,
+                       ledger_.report(), rescaling_.active() ? std::span<const PartAddedMass>(added_mass_)
+                                                             : std::span<const PartAddedMass>()};
 }
 
 void Simulation::update_damping_coefficients() {
@@ -299,6 +336,7 @@ bool Simulation::step() {
   }
   advance(plan);
   votes_ = assemble_forces();  // the forces at t^{n+1}: the next cycle's loads and stable step
+  if (rescaling_.active()) check_added_mass_in_run();  // ENDMAS, as the masses change
   return true;
 }
 

@@ -19,6 +19,16 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 StepVotes Simulation::assemble_forces() {
   StepVotes local;
   local.elements = compute_internal_forces(local.block);
+  if (rescaling_.active()) {
+    // MS1ST = 0: the factors from the steps just computed; the masses change at v^{n+1/2}, and
+    // that kinetic energy is booked (not at the start: the first kinetic energy has the new mass).
+    const MassRescaling::Result r = rescaling_.rescale(blocks_, nodes_, corners_.force_slots, false, added_mass_);
+    if (r.controlling) {
+      local.elements = r.step;
+      local.block = r.controlling;
+    }
+    if (initialized_) ledger_.add_mass_scaling_work(r.kinetic_change);
+  }
   if (dt_initial_ == 0.0 && has_contact()) {
     // The initial step the SOFT = 1 springs are sized by (over all processes, as the step is;
     // the one exchange call more, once, only in a model with contact).

@@ -106,7 +106,7 @@ void StabilityMonitor::check_energy(const EnergyReport& e, PartEnergyMonitor& pa
   const Real bal = e.balance_error();
   if (!std::isfinite(bal) || !std::isfinite(e.kinetic))
     throw InstabilityError(locate_non_finite(model) + at(t, cycle), t, cycle);
-  peak_energy_ = std::max({peak_energy_, std::abs(e.external) + std::abs(e.support) + std::abs(e.constraint) + e.kinetic0,
+  peak_energy_ = std::max({peak_energy_, std::abs(e.external) + std::abs(e.support) + std::abs(e.constraint) + e.kinetic0 + std::abs(e.mass_scaling),
                            e.kinetic, std::abs(e.internal) + e.hourglass + e.bulk_viscosity + e.damping +
                                           std::abs(e.contact) + e.friction});
   if (cycle < kEnergyCheckStart) return;

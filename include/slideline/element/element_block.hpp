@@ -15,6 +15,7 @@
 #include "slideline/core/types.hpp"
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/element_erosion.hpp"
+#include "slideline/element/element_mass_scaling.hpp"
 #include "slideline/mesh/corner_buffer.hpp"
 #include "slideline/mesh/mesh_block.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
@@ -134,6 +135,24 @@ class ElementBlock : public MeshBlock {
       if (f != 1.0) throw NotImplementedError("part " + std::to_string(part_id()) + ": mass scaling of " + kind() +
                                               " elements is not implemented");
     return 0.0;
+  }
+
+  /// Mass scaling every cycle (MS1ST = 0; element_mass_scaling.hpp): from now on compute_forces
+  /// keeps each element's stable step before any factor. Called once, after initialize(), instead
+  /// of scale_element_masses. A block that cannot (no step of its own, or not implemented) refuses.
+  virtual void enable_mass_rescaling() {
+    throw NotImplementedError("part " + std::to_string(part_id()) + ": mass scaling re-evaluated every cycle "
+                              "(DT2MS with MS1ST = 0 of *CONTROL_TIMESTEP) of " + kind() +
+                              " elements is not implemented (MS1ST = 1 scales them once, at the start)");
+  }
+  /// MS1ST = 0: re-evaluates every element's factor mass_scale_factor(dt_e, dt2ms) from its step
+  /// dt_e at the last compute_forces (`at_reference`: from reference_steps instead, at the start),
+  /// writes the mass each element adds to each of its corners (its physical mass / corners x
+  /// (factor - 1)) into `corner_added` (the block's own corner slots, from 0), and multiplies the
+  /// step it votes from the next compute_forces on by sqrt(factor). Allocates nothing.
+  virtual RescaledBlock rescale_element_masses(Real /*dt2ms*/, bool /*at_reference*/, const NodalFields& /*nodes*/,
+                                               std::span<Real> /*corner_added*/) {
+    throw NotImplementedError("part " + std::to_string(part_id()) + ": mass scaling every cycle is not implemented");
   }
 
   /// Tells the block where its corner slots start in the shared buffer.

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "slideline/core/lanes.hpp"
+#include "slideline/core/tensor3.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/hex8_geometry.hpp"
 
@@ -113,6 +114,28 @@ inline HgMat hourglass_shape(const NodeMat& X, const NodeMat& B) {
   const HgMat& G = hourglass_base();
   const Eigen::Matrix<Real, 4, 3> gx = G * X;  // (Gamma_alpha . x_i)
   return G - gx * B.transpose();
+}
+
+/// D = sym(v (x) B) of a batch (1/time), from the nodal velocities and the gradient operator.
+inline Tensor3<Lanes> rate_of_deformation(const NodeLanes& vx, const NodeLanes& vy,
+                                          const NodeLanes& vz, const NodeLanes& bx,
+                                          const NodeLanes& by, const NodeLanes& bz) {
+  Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
+  Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
+  Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
+  for (int k = 0; k < 8; ++k) {
+    dxx += vx[k] * bx[k];
+    dyy += vy[k] * by[k];
+    dzz += vz[k] * bz[k];
+    lxy += vx[k] * by[k];
+    lyx += vy[k] * bx[k];
+    lyz += vy[k] * bz[k];
+    lzy += vz[k] * by[k];
+    lxz += vx[k] * bz[k];
+    lzx += vz[k] * bx[k];
+  }
+  const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
+  return {{{dxx, dxy, dxz}, {dxy, dyy, dyz}, {dxz, dyz, dzz}}};
 }
 
 }  // namespace slideline::hex8

@@ -182,6 +182,20 @@ class HexBlock final : public ElementBlock {
     return added;
   }
 
+  /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.
+  void enable_mass_rescaling() override {
+    rescaling_.enable(element_count(), padded(element_count()));
+    step_factor_.assign(padded(element_count()), 1.0);
+  }
+  /// ElementBlock::rescale_element_masses: element e's physical mass rho V0 over its 8 corners.
+  RescaledBlock rescale_element_masses(Real dt2ms, bool at_reference, const NodalFields& nodes,
+                                       std::span<Real> corner_added) override {
+    if (at_reference) reference_steps(nodes, rescaling_.raw_steps_span(element_count()));
+    const Real rho = mat_.density();
+    return rescaling_.rescale(element_count(), 8, dt2ms, [&](Index e) { return rho * volume0_[e]; },
+                              step_factor_.data(), corner_added);
+  }
+
   /// Internal forces of all elements into their corner slots of `corners` (residual form), the
   /// hourglass, bulk-viscosity and stiffness-damping powers into `energy`; returns the smallest
   /// element time step. Throws InstabilityError naming the first element (of the first chunk)
@@ -232,7 +246,8 @@ class HexBlock final : public ElementBlock {
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
         if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk);
-        accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data());
+        accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data(),
+                           rescaling_.raw_steps());
         store_forces(f, e0, valid, out);
       }
       Index lane = 0;
@@ -359,7 +374,7 @@ class HexBlock final : public ElementBlock {
   /// (tr D < 0) and, when damped, the stiffness-damping stress.
   template <bool damped>
   BatchStress batch_stress(const Batch& bt, Index e0, Real dt_law, const KernelConstants& kc) {
-    const Tensor3<Lanes> d = rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
+    const Tensor3<Lanes> d = hex8::rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
     BatchStress st;
     st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
     Lanes trd = Lanes::Zero();
@@ -486,13 +501,15 @@ class HexBlock final : public ElementBlock {
     hex8::hourglass_scatter(gam, Q, hx, hy, hz);
   }
 
-  /// Adds a batch's step (times `step_factor`, per element, when the masses are scaled), powers and
+  /// Adds a batch's step (times `step_factor`, per element, when the masses are scaled; before it
+  /// into `raw_steps`, when not null, for mass scaling every cycle), powers and
   /// failure to the chunk's sums; the spare lanes of a last partial batch (lanes valid..kLanes-1)
   /// count for nothing.
   template <bool damped>
   static void accumulate(ChunkSums& s, const Batch& bt, BatchStress& st, BatchForces& f, Index e0,
-                         int valid, Real c, const Real* step_factor) {
+                         int valid, Real c, const Real* step_factor, Real* raw_steps) {
     Lanes dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
+    if (raw_steps) Lanes::Map(raw_steps + e0) = dt;  // mass scaling every cycle (enable_mass_rescaling)
     if (step_factor) dt *= Lanes::Map(step_factor + e0);  // mass scaling (scale_element_masses)
     const LaneMask failed = !(bt.vol > 0.0) || !f.fsum.isFinite();
     if (valid < kLanes) {
@@ -532,28 +549,6 @@ class HexBlock final : public ElementBlock {
       }
   }
 
-  /// D = sym(v (x) B) of a batch (1/time), from the nodal velocities and the gradient operator.
-  static Tensor3<Lanes> rate_of_deformation(const hex8::NodeLanes& vx, const hex8::NodeLanes& vy,
-                                            const hex8::NodeLanes& vz, const hex8::NodeLanes& bx,
-                                            const hex8::NodeLanes& by, const hex8::NodeLanes& bz) {
-    Lanes dxx = Lanes::Zero(), dyy = Lanes::Zero(), dzz = Lanes::Zero();
-    Lanes lxy = Lanes::Zero(), lyx = Lanes::Zero(), lyz = Lanes::Zero();
-    Lanes lzy = Lanes::Zero(), lxz = Lanes::Zero(), lzx = Lanes::Zero();
-    for (int k = 0; k < 8; ++k) {
-      dxx += vx[k] * bx[k];
-      dyy += vy[k] * by[k];
-      dzz += vz[k] * bz[k];
-      lxy += vx[k] * by[k];
-      lyx += vy[k] * bx[k];
-      lyz += vy[k] * bz[k];
-      lzy += vz[k] * by[k];
-      lxz += vx[k] * bz[k];
-      lzx += vz[k] * bx[k];
-    }
-    const Lanes dxy = 0.5 * (lxy + lyx), dyz = 0.5 * (lyz + lzy), dxz = 0.5 * (lxz + lzx);
-    return {{{dxx, dxy, dxz}, {dxy, dyy, dyz}, {dxz, dyz, dzz}}};
-  }
-
   static Index padded(Index n) { return (n + kLanes - 1) / kLanes * kLanes; }
 
   hex8::NodeMat gather(const Vec3Field& f, Index e) const {
@@ -570,6 +565,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Index> conn_lanes_;  ///< connectivity by batch, node and lane (see the constructor)
   std::vector<Real> volume0_;      ///< padded to whole batches
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor, padded; empty: no scaling
+  ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<State> state_;       ///< the law's state, one per batch
   std::vector<Lanes> hg_force_;    ///< IHQ 4/5: generalised hourglass forces, 12 per batch (mode, component)
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;

@@ -365,9 +365,9 @@ struct ControlTermination {
   /// the largest energy in play. LS-DYNA's field is a change of the energy ratio in percent; blank
   /// or 0 keeps slideline's default of 5%.
   Real endeng = 0.0;
-  /// ENDMAS: the run is refused when mass scaling (DT2MS) adds more than ENDMAS percent of the
-  /// model's mass (LS-DYNA terminates then; here the mass is set once, at the start). 0 or blank:
-  /// LS-DYNA's default 1e8, no limit.
+  /// ENDMAS: mass scaling (DT2MS) may add at most ENDMAS percent of the model's mass: more at the
+  /// start refuses the run; more later (MS1ST = 0, mass re-scaled every cycle) stops it as DTMIN
+  /// does. 0 or blank: LS-DYNA's default 1e8, no limit.
   Real endmas = 1e8;
   Source src;
   bool operator==(const ControlTermination&) const = default;
@@ -378,14 +378,14 @@ struct ControlTimestep {
   Real dtinit = 0.0;
   Real tssfac = 0.9;  ///< time-step scale factor
   int isdo = 0;
-  Real tslimt = 0.0;
+  Real tslimt = 0.0;  ///< TSLIMT (shell moduli lowered below this step): refused when not 0
   /// Mass scaling (docs/solver.md, "Mass scaling"): < 0 the elements whose stable step is below
   /// |DT2MS| get the mass that makes it |DT2MS|; > 0 every deformable element's mass is scaled so
   /// that its step is DT2MS (mass added or removed). The run's step is then TSSFAC x |DT2MS|.
   Real dt2ms = 0.0;
   Id lctm = 0;
-  /// MS1ST: 1 mass scaling at the first step only (what slideline does); 0, LS-DYNA's default,
-  /// re-scales every cycle, which slideline does not (the reader warns; docs/solver.md).
+  /// MS1ST: 1 mass scaling at the first step only; 0 (LS-DYNA's default, blank) re-evaluates it
+  /// every cycle from the elements' current steps (solver/mass_rescaling.hpp; docs/solver.md).
   int ms1st = 0;
   Source src;
   bool operator==(const ControlTimestep&) const = default;

@@ -37,12 +37,17 @@ struct EnergyReport {
   Real eroded_hourglass = 0.0;
   /// The eroded energy, eroded_internal + eroded_hourglass.
   Real eroded() const { return eroded_internal + eroded_hourglass; }
+  /// Mass scaling every cycle (MS1ST = 0; solver/mass_rescaling.hpp): the kinetic energy the mass
+  /// changes put in, the sum over the changes of 1/2 (m_new - m_old) |v|^2 at the node's velocity
+  /// when its mass changed (an input, as external work). 0 otherwise.
+  Real mass_scaling = 0.0;
 
   /// (kinetic + internal + hourglass + bulk viscosity + damping + contact + friction + eroded)
-  ///   - (kinetic0 + external + support + constraint)
+  ///   - (kinetic0 + external + support + constraint + mass_scaling)
   Real balance_error() const {
-    const Real e = kinetic + internal + hourglass + bulk_viscosity + damping + contact + friction -
-                   kinetic0 - external - support - constraint;
+    Real e = kinetic + internal + hourglass + bulk_viscosity + damping + contact + friction -
+             kinetic0 - external - support - constraint;
+    if (mass_scaling != 0.0) e -= mass_scaling;
     return eroded_internal == 0.0 && eroded_hourglass == 0.0 ? e : e + eroded();
   }
   /// balance_error() relative to the largest energy in play.
@@ -135,6 +140,8 @@ class EnergyLedger {
     support_.commit(s.support);
     constraint_.commit(s.constraint);
   }
+  /// Mass scaling every cycle: the kinetic energy change 1/2 dm |v|^2 of one re-evaluation.
+  void add_mass_scaling_work(Real w) { report_.mass_scaling += w; }
   /// Work done on constrained nodes outside the velocity update (a rigid body's velocity reset).
   void add_constraint_work(Real w) { constraint_.committed += w; }
   /// Work done by contact outside the velocity update (a tie resetting its slaves).

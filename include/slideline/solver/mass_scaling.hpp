@@ -10,6 +10,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/element/element_block.hpp"
+#include "slideline/element/element_mass_scaling.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
 
 namespace slideline {
@@ -24,9 +25,7 @@ struct PartAddedMass {
   Real smallest_step = 0.0; ///< the smallest element step before scaling (time)
 };
 
-/// The factor (T / dt_e)^2 mass scaling applies to an element of stable step `dt_e` for the
-/// deck's `dt2ms` (1 where the element keeps its mass).
-Real mass_scale_factor(Real dt_e, Real dt2ms);
+// mass_scale_factor(dt_e, dt2ms), the factor (T / dt_e)^2: element/element_mass_scaling.hpp.
 
 /// Scales the masses `block` lumped to `nodes` (after its initialize(); `block_mass` is the mass
 /// it lumped) for `dt2ms` != 0, and reports the change.

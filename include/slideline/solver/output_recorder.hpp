@@ -13,6 +13,7 @@
 #include "slideline/mesh/nodal_fields.hpp"
 #include "slideline/solver/boundary.hpp"
 #include "slideline/solver/energy_ledger.hpp"
+#include "slideline/solver/mass_scaling.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
 
 namespace slideline {
@@ -28,6 +29,9 @@ struct OutputSources {
   const std::vector<std::unique_ptr<NodalConstraint>>& constraints;
   std::span<const Index> history_nodes;  ///< internal indices
   const EnergyReport& energy;
+  /// Mass scaling every cycle (MS1ST = 0): each block's added mass now (one entry per block);
+  /// empty otherwise (then the history has no added-mass channels).
+  std::span<const PartAddedMass> added_mass = {};
 };
 
 /// Where an element goes in the output cells: its topology's entry in MeshDescription::cells and
@@ -78,11 +82,13 @@ class OutputRecorder {
   std::vector<std::size_t> constraint_outputs_;  // history values each constraint writes
   // The parts with plasticity (ElementBlock::has_plasticity), in the order of their first block,
   // each with its blocks: the channels parts/<id>/max_plastic_strain and parts/<id>/plastic_work.
-  struct PlasticPart {
+  struct PartBlocks {
     Id part = 0;
     std::vector<std::size_t> blocks;
   };
-  std::vector<PlasticPart> plastic_parts_;
+  std::vector<PartBlocks> plastic_parts_;
+  // MS1ST = 0: the parts of the rescaled blocks, each with its blocks: parts/<id>/added_mass.
+  std::vector<PartBlocks> mass_parts_;
   std::vector<Real> history_values_;
   std::vector<Real> state_values_;
   Real last_history_ = -1.0;

@@ -25,6 +25,7 @@
 #include "slideline/solver/central_difference.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/solver/exchange.hpp"
+#include "slideline/solver/mass_rescaling.hpp"
 #include "slideline/solver/mass_scaling.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
 #include "slideline/solver/node_roles.hpp"
@@ -107,7 +108,8 @@ class Simulation {
   /// (one entry per part at most; part_energy_monitor.hpp).
   const std::vector<HourglassWarning>& hourglass_warnings() const { return part_energy_.hourglass_warnings(); }
   /// What mass scaling (controls().dt2ms) did, one entry per element block (part), after
-  /// initialize(); empty without mass scaling.
+  /// initialize() and, with controls().mass_scaling_every_cycle (MS1ST = 0), as of the last force
+  /// evaluation; empty without mass scaling.
   const std::vector<PartAddedMass>& added_mass() const { return added_mass_; }
   /// Internal and hourglass energy per part.
   const PartEnergyMonitor& part_energies() const { return part_energy_; }
@@ -128,6 +130,11 @@ class Simulation {
   void scale_block_mass(ElementBlock& block, const std::vector<Real>& before);
   /// Refuses a model whose mass scaling added more than controls_.added_mass_limit_percent.
   void check_added_mass() const;
+  /// MS1ST = 0: stops the run (InstabilityError, as DTMIN does) once the added mass passes it.
+  void check_added_mass_in_run() const;
+  /// MS1ST = 0: refuses what takes the nodal masses once (a rigid body sharing nodes with
+  /// rescaled elements).
+  void refuse_unsupported_rescaling() const;
   void check_nodal_moments() const;
   void resolve_body_loads(const std::vector<std::vector<Real>>& block_mass);
   void initialize_contacts();
@@ -189,7 +196,8 @@ class Simulation {
   std::vector<BlockEnergy> block_energy_;  // this cycle's element powers per block (exchange point 3)
   CornerBuffer corners_;
   std::vector<Real> alpha_;              // per-node mass-damping coefficient
-  std::vector<PartAddedMass> added_mass_;  // mass scaling per block (initialize)
+  std::vector<PartAddedMass> added_mass_;  // mass scaling per block (initialize; every cycle with MS1ST = 0)
+  MassRescaling rescaling_;                // MS1ST = 0 (inactive otherwise)
   std::vector<Vec3> dictated_v_old_;     // the tied slaves' v^{n-1/2} (and omega) during a cycle
   std::vector<Vec3> dictated_w_old_;
   // Effective mass and total loads of the constraint phase (see ConstraintLoads). Without

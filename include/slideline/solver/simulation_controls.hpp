@@ -29,6 +29,10 @@ struct SimulationControls {
   /// (solver/mass_scaling.hpp): < 0 elements whose stable step is below |dt2ms| get mass to make
   /// it |dt2ms|; > 0 every deformable element's mass is scaled to make its step dt2ms.
   Real dt2ms = 0.0;
+  /// With dt2ms != 0: re-evaluate the factors from the elements' current steps after every force
+  /// evaluation (LS-DYNA's MS1ST = 0, solver/mass_rescaling.hpp) instead of once at initialize()
+  /// (MS1ST = 1). Hexahedra (ELFORM 1) only; other deformable blocks refuse.
+  bool mass_scaling_every_cycle = false;
   /// initialize() refuses a model whose mass scaling adds more than this percentage of its mass
   /// (LS-DYNA's ENDMAS of *CONTROL_TERMINATION; its default 1e8 is no limit).
   Real added_mass_limit_percent = 1e8;

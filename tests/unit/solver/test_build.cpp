@@ -318,6 +318,7 @@ TEST(Build, ShellMassScalingReachesTheRequestedStep) {
 TEST(Build, AddedMassAboveEndmasIsRefused) {
   model::Model m = plate_model(false);
   m.timestep.dt2ms = -5e-3;
+  m.timestep.ms1st = 1;
   m.termination.endmas = 10.0;
   try {
     build_simulation(m)->initialize();
@@ -325,6 +326,50 @@ TEST(Build, AddedMassAboveEndmasIsRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("ENDMAS"), std::string::npos) << e.what();
   }
+}
+
+// Mass scaling every cycle (MS1ST = 0, LS-DYNA's default) is built for hexahedra only: the shell
+// plate with DT2MS and MS1ST = 0 is refused at initialize(), naming MS1ST and the part.
+TEST(Build, ShellMassScalingEveryCycleIsRefused) {
+  model::Model m = plate_model(false);
+  m.timestep.dt2ms = -5e-3;
+  m.timestep.ms1st = 0;
+  try {
+    build_simulation(m)->initialize();
+    FAIL() << "expected NotImplementedError";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("MS1ST = 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("part 1"), std::string::npos) << e.what();
+  }
+}
+
+// MS1ST = 0 with a rigid body sharing nodes with a rescaled hexahedron is refused (the body takes
+// its mass properties once); MS1ST = 1 runs it.
+TEST(Build, MassScalingEveryCycleOnANodeOfARigidBodyIsRefused) {
+  model::Model m;
+  for (int i = 0; i <= 2; ++i)
+    for (const Vec3& c : {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 1), Vec3(0, 0, 1)})
+      m.nodes.push_back({static_cast<Id>(m.nodes.size() + 1), c + Vec3(i, 0, 0), 0, 0});
+  for (Id e = 0; e < 2; ++e) {  // plane e: nodes 4e + 1..4; element e + 1 between planes e and e + 1
+    const Id a = 4 * e + 1, b = a + 4;
+    m.solids.push_back({e + 1, e + 1, {a, b, b + 1, a + 1, a + 3, b + 3, b + 2, a + 2}});
+    m.parts.push_back({e + 1, "cube", 1, e + 1, 0, 0, {}});
+  }
+  m.solid_sections.push_back({1, 1, {}});
+  m.materials.push_back(model::MatElastic{1, 0.01, 1000.0, 0.3, "", {}});
+  m.materials.push_back(model::MatRigid{2, 0.01, 1000.0, 0.3, 0.0, 0, 0, "", {}});
+  m.termination.endtim = 0.01;
+  m.timestep.dt2ms = -1.0;
+  m.timestep.ms1st = 0;
+  try {
+    build_simulation(m)->initialize();
+    FAIL() << "expected NotImplementedError";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid body"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("MS1ST = 0"), std::string::npos) << e.what();
+  }
+  m.timestep.ms1st = 1;
+  EXPECT_NO_THROW(build_simulation(m)->initialize());
 }
 
 // *DAMPING_PART_MASS: FLAG = 1 is the per-direction factor card (not a part set); one common
