@@ -123,6 +123,8 @@ void check_runs(const model::Contact& card) {
     case T::automatic:
       break;
   }
+  if (lagrange && card.eroding)
+    throw_contact_not_implemented(card, "the eroding cards run with penalty enforcement only");
   if (lagrange && card.form != model::ContactForm::dyna3d)
     throw_contact_not_implemented(card, "the LS-DYNA automatic cards run with penalty enforcement only");
   if (card.form == model::ContactForm::force_transducer) return;  // output only: any side types
@@ -224,6 +226,8 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
     spec.cohesive = TiebreakCohesive{card.option, card.param, card.eraten, card.erates, card.ct2cn, card.cn};
   spec.window = ContactWindow{card.bt, card.dt};
   spec.transmitted_output = card.type == T::automatic && card.form == model::ContactForm::dyna3d;
+  spec.eroding_card = card.eroding;
+  spec.interior_faces = !card.eroding || card.erosop == 1;
   return spec;
 }
 

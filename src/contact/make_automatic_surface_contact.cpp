@@ -144,6 +144,10 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
   out.pass->slave_part() = node_parts(pass_side);
   out.pass->set_slave_orientation(SlaveOrientation(own, pass_side.nodes));
   out.pass->set_sides(std::move(nodes.mask), out.sides, std::move(offsets));
+  // Eroding parts (docs/contact_erosion.md): two-sided, the slaves lie on the pass's surface; one
+  // way, on their own side's.
+  if (spec.eroding)
+    out.pass->set_erosion(ContactErosion(master, two_sided ? nullptr : &own, pass_side.nodes));
   return out;
 }
 

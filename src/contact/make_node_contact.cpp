@@ -30,6 +30,8 @@ std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
                                 penalty_pass_options(spec, spec.slave_stiffness, spec.master_shells));
   pass->slave_part() = node_parts(side);
   pass->set_slave_orientation(SlaveOrientation(side.surface, side.nodes));
+  // Eroding parts (docs/contact_erosion.md): the surface is its own slaves' surface.
+  if (spec.eroding) pass->set_erosion(ContactErosion(side.surface, nullptr, side.nodes));
   std::vector<Id> parts = side.parts;
   return make_penalty_interface<AutomaticContact>(spec, std::move(pass), std::move(parts));
 }

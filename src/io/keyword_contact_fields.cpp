@@ -157,7 +157,7 @@ constexpr Rule kControl2[] = {
     {"INTERM", 0, Use::refuse, "intermittent searching"},
     {"XPENE", 4, Use::honoured, ""},  // read by read_control_contact_cards (PENCHK = 1)
     {"SSTHK", 0, Use::refuse, "true shell thickness in single-surface contact"},
-    {"ECDT", 0, Use::inert, "time step of eroding contact (no erosion here)"},
+    {"ECDT", 0, Use::step, "eroding contact left out of the time step"},
     {"TIEDPRJ", 0, Use::refuse, "bypass of the projection of tied nodes"},
 };
 constexpr Rule kControl3[] = {
@@ -182,7 +182,7 @@ constexpr Rule kControl4[] = {
 };
 constexpr Rule kControl5[] = {
     {"ISYM", 0, Use::refuse, "symmetry planes of automatic contact"},
-    {"NSEROD", 0, Use::inert, "eroding node-to-surface option (no erosion here)"},
+    {"NSEROD", 0, Use::refuse, "one-way node-to-surface algorithm of eroding contact"},
     {"RWGAPS", 1, Use::inert, "rigid-wall gap stiffness (penalty walls only; refused)"},
     {"RWGDTH", 0, Use::inert, "rigid-wall gap death (penalty walls only; refused)"},
     {"RWKSF", 1, Use::inert, "rigid-wall penalty scale (penalty walls only; refused)"},
@@ -519,7 +519,7 @@ void read_control_contact_cards(const Context& ctx, Block& b, model::ControlCont
     field(ctx, &card1, kw, "card 1", t.penopt, {"PENOPT", 1, Use::refuse, "penalty stiffness option"});
   field(ctx, &card1, kw, "card 1", t.thkchg, {"THKCHG", 0, Use::refuse, "shell thickness changes in contact"});
   field(ctx, &card1, kw, "card 1", t.orien, {"ORIEN", 1, Use::refuse, "segment orientation option"});
-  field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::inert, "mass of eroded nodes (no erosion here)"});
+  field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::refuse, "nodes freed by erosion kept in contact with their mass; here they leave it (0)"});
   t.ignore = read_ignore(ctx, b, 2, 0, "card 4");
   t.xpene = read_xpene(ctx, b);
   check_remaining(ctx, b, kControl);

@@ -152,6 +152,7 @@ void read_contact(const Context& ctx, Block& b, model::Model& m, const model::Co
   c.type = row.type;
   c.automatic_general = row.automatic_general;
   c.form = row.form;
+  c.eroding = row.eroding;
   c.enforcement = options.lagrange ? Enforcement::lagrange : row.enforcement;
   if (options.mortar) {
     // The coupling changes the physics: refuse it where it is not built (the model build refuses
@@ -194,6 +195,7 @@ void read_contact(const Context& ctx, Block& b, model::Model& m, const model::Co
     }
     if (c.form == model::ContactForm::automatic_surface_to_surface) check_automatic_tiebreak_card4(ctx, c, card4, b.line);
   }
+  if (c.eroding) read_eroding_card4(ctx, b, c);
   // Type 5 with discrete slave nodes: SST is the nodal contact radius.
   if (c.type == ContactType::nodes_to_surface && c.sstyp == 4) c.radius = c.sst;
   if (c.form == model::ContactForm::force_transducer)

@@ -182,6 +182,9 @@ std::string contact_description(const model::ContactKeyword& k) {
   // An LS-DYNA card without a DYNA3D number (model::ContactForm): runs with the type's pass.
   if (k.form == model::ContactForm::force_transducer)
     return "contact force transducer: the contact force on its side(s) as an interface history; adds no force";
+  if (k.eroding)
+    return "contact, LS-DYNA " + std::string(k.name) + ": the automatic pass of DYNA3D type 12 with its surfaces "
+           "updated as elements erode (card 4: ISYM, EROSOP, IADJ); penalty";
   if (k.form != model::ContactForm::dyna3d && k.type == model::ContactType::tiebreak_surface)
     return "contact, LS-DYNA " + std::string(k.name) + ": OPTION 1, DYNA3D type 9's tie and failure law, then the "
            "automatic surface-to-surface pass; penalty";

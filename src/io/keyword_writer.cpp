@@ -203,6 +203,10 @@ void write_contacts(const model::Model& m, std::string& o) {
     o += "$#     SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n";
     o += CardOut().r(c.sfs).r(c.sfm).r(radius_in_sst ? c.radius : c.sst).r(c.mst).r(c.sfst).r(c.sfmt)
              .r(c.fsf).r(c.vsf).str();
+    if (c.eroding) {
+      o += "$#    ISYM    EROSOP      IADJ\n";
+      o += CardOut().i(c.isym).i(c.erosop).i(c.iadj).str();
+    }
     if (c.type == ContactType::tiebreak_nodes) {
       o += "$#    NFLF      SFLF       NEN       MES\n";
       o += CardOut().r(c.nflf).r(c.sflf).r(c.nen).r(c.mes).str();

@@ -211,6 +211,31 @@ Surface build_surface_from_parts(MeshBlocks blocks, const NodalFields& nodes,
   return surf;
 }
 
+Surface interior_faces_of_parts(MeshBlocks blocks, const NodalFields& nodes, std::span<const Id> parts,
+                                const std::string& context) {
+  const std::set<Id> wanted(parts.begin(), parts.end());
+  const std::vector<Candidate> cand =
+      collect(blocks, nodes, context, true, [&](const MeshBlock& b) { return wanted.count(b.part_id()) != 0; });
+  // The complement of build_surface_from_parts' rule: the solid faces another solid face of
+  // these parts shares, each kept with its own element and orientation.
+  std::vector<char> keep(cand.size(), 0);
+  const std::vector<KeyRef> order = sorted_by_key(cand);
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    int solids = 0;
+    for (; j < order.size() && order[j].key == order[i].key; ++j)
+      solids += cand[order[j].i].kind == SegmentKind::solid_face;
+    if (solids > 1)
+      for (std::size_t k = i; k < j; ++k)
+        if (cand[order[k].i].kind == SegmentKind::solid_face) keep[order[k].i] = 1;
+    i = j;
+  }
+  Surface surf;
+  for (std::size_t i = 0; i < cand.size(); ++i)
+    if (keep[i]) push_segment(surf, blocks, cand[i], cand[i].conn);
+  return surf;
+}
+
 Surface build_surface_from_segments(MeshBlocks blocks, const NodalFields& nodes,
                                     std::span<const SegmentNodes> segments,
                                     const std::string& context) {

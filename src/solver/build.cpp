@@ -510,7 +510,8 @@ struct Builder {
         if ((card.form == model::ContactForm::force_transducer) != transducers) continue;
         if (transducers) check_transducer_measures(card);
         InterfaceSpec spec = resolve_interface(card, k + 1, ctx);
-        if (!eroding.empty()) refuse_eroding_contact(spec, eroding);
+        // Contact with eroding parts: the automatic cards update their surfaces, the others refuse.
+        prepare_eroding_contact(spec, ctx, eroding);
         // BT, DT: the manager honours them for every interface type (contact_manager.hpp).
         setup.contacts.add(make_contact_interface(spec, ctx), spec.window);
       }
@@ -527,19 +528,6 @@ struct Builder {
         if (part[static_cast<std::size_t>(n)] == 0) part[static_cast<std::size_t>(n)] = b->part_id();
     }
     return part;
-  }
-
-  /// The contact surfaces are built once and not updated when elements are deleted: an interface
-  /// with a node of an eroding part on either side is refused (docs/solver.md, "Failure and erosion").
-  static void refuse_eroding_contact(const InterfaceSpec& spec, const std::vector<Id>& eroding) {
-    for (const ContactSide* side : {&spec.slave, &spec.master})
-      for (Index n : side->nodes)
-        if (const Id pid = eroding[static_cast<std::size_t>(n)]; pid != 0)
-          throw NotImplementedError(spec.where + ": part " + std::to_string(pid) +
-                                    " can erode (its material's failure strain FS / FAIL) and is on this contact's " +
-                                    (side == &spec.slave ? "slave" : "master") +
-                                    " side: contact with eroding parts (updating the surfaces as elements are "
-                                    "deleted) is not implemented");
   }
 
   /// A force transducer measures f_contact: refused beside an interface whose forces are not

@@ -105,6 +105,14 @@ struct InterfaceSpec {
   ContactWindow window;         ///< BT, DT (honoured by ContactManager for every type)
   /// Type 12: write interfaces/<title>/transmitted_force (the force between its parts).
   bool transmitted_output = false;
+  /// Contact with eroding parts (docs/contact_erosion.md). eroding_card: a *CONTACT_ERODING_...
+  /// card; interior_faces: interior faces become surface as the elements in front of them are
+  /// deleted (every automatic card, and EROSOP = 1), else only the exterior faces, each dropped
+  /// with its element (EROSOP = 0); eroding: set by prepare_eroding_contact() when a side holds an
+  /// eroding part (the factories then attach a ContactErosion to the pass).
+  bool eroding_card = false;
+  bool interior_faces = true;
+  bool eroding = false;
 };
 
 /// Resolves `card` (the `position`-th contact of the deck, from 1). Throws NotImplementedError

@@ -3,11 +3,20 @@
 /// ContactAlgorithm class: src/contact/make_contact_interface.cpp dispatches on the DYNA3D type
 /// and enforcement; each family of interfaces has its own factory file, which reads only the spec.
 #include <memory>
+#include <vector>
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/interface_spec.hpp"
 
 namespace slideline {
+
+/// Contact with eroding parts (docs/contact_erosion.md), before make_contact_interface():
+/// `eroding_part` holds, per internal node, the deck id of an eroding part that holds it (0:
+/// none; empty: no part erodes). When a side of `spec` holds such a node: an interface that
+/// updates its surfaces (the automatic penalty cards and *CONTACT_ERODING_...) gets the interior
+/// faces of its sides' solids (InterfaceSpec::interior_faces) and spec.eroding; any other is
+/// refused (NotImplementedError naming the card, the part and the cards that support it).
+void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx, const std::vector<Id>& eroding_part);
 
 /// Builds the interface of a resolved card (resolve_interface); takes the spec's sides.
 std::unique_ptr<ContactAlgorithm> make_contact_interface(InterfaceSpec& spec, const ContactBuildContext& ctx);

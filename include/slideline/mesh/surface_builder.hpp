@@ -38,6 +38,14 @@ using MeshBlocks = std::span<const MeshBlock* const>;
 Surface build_surface_from_parts(MeshBlocks blocks, const NodalFields& nodes,
                                  std::span<const Id> parts, const std::string& context);
 
+/// The solid faces of the parts `parts` that build_surface_from_parts leaves out as interior
+/// (another solid face of these parts has the same nodes), each once per element that owns it and
+/// oriented out of that element, ordered by block, element, face; adjacency not built. Contact
+/// with eroding parts (contact/search/contact_erosion.hpp) makes them surface when the element in
+/// front of them is deleted.
+Surface interior_faces_of_parts(MeshBlocks blocks, const NodalFields& nodes, std::span<const Id> parts,
+                                const std::string& context);
+
 /// The surface of a segment set: segments of 4 internal node indices (n3 == n4 for a triangle),
 /// in any of the elements' blocks. Each segment is matched to the solid face or shell with
 /// the same node set and takes its block, element, part and thickness. Orientation:
@@ -62,6 +70,12 @@ Surface build_surface_from_parts(const R& blocks, const NodalFields& nodes, std:
                                  const std::string& context) {
   const std::vector<const MeshBlock*> b = mesh_blocks(blocks);
   return build_surface_from_parts(MeshBlocks(b), nodes, parts, context);
+}
+template <MeshBlockRange R>
+Surface interior_faces_of_parts(const R& blocks, const NodalFields& nodes, std::span<const Id> parts,
+                                const std::string& context) {
+  const std::vector<const MeshBlock*> b = mesh_blocks(blocks);
+  return interior_faces_of_parts(MeshBlocks(b), nodes, parts, context);
 }
 template <MeshBlockRange R>
 Surface build_surface_from_segments(const R& blocks, const NodalFields& nodes,

@@ -24,6 +24,9 @@ struct ContactKeyword {
   /// takes the _MORTAR option (Contact::penalty_coupling = 1, the mortar coupling of the penalty
   /// springs; docs/contact.md, "The contact patch test")
   bool mortar_option = false;
+  /// *CONTACT_ERODING_...: the automatic card of `form` with its surfaces updated as elements
+  /// erode, and the mandatory card 4 (ISYM EROSOP IADJ; Contact::eroding)
+  bool eroding = false;
 };
 
 inline constexpr ContactKeyword kContactKeywords[] = {
@@ -56,6 +59,12 @@ inline constexpr ContactKeyword kContactKeywords[] = {
      "forming one way", ContactForm::forming_one_way},
     {"*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK", ContactType::tiebreak_surface, false, 9, Enforcement::penalty,
      false, "automatic surface to surface tiebreak", ContactForm::automatic_surface_to_surface},
+    {"*CONTACT_ERODING_SINGLE_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "eroding single surface", ContactForm::dyna3d, false, true},
+    {"*CONTACT_ERODING_SURFACE_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "eroding surface to surface", ContactForm::automatic_surface_to_surface, false, true},
+    {"*CONTACT_ERODING_NODES_TO_SURFACE", ContactType::automatic, false, 12, Enforcement::penalty, false,
+     "eroding nodes to surface", ContactForm::automatic_nodes_to_surface, false, true},
     {"*CONTACT_FORCE_TRANSDUCER_PENALTY", ContactType::surface_to_surface, false, 3, Enforcement::penalty, false,
      "force transducer", ContactForm::force_transducer},
 };
@@ -72,7 +81,7 @@ static_assert([] {
 constexpr const ContactKeyword* contact_keyword(const Contact& c) {
   const ContactKeyword* first = nullptr;
   for (const auto& k : kContactKeywords) {
-    if (k.type != c.type || k.form != c.form) continue;
+    if (k.type != c.type || k.form != c.form || k.eroding != c.eroding) continue;
     if (k.automatic_general == c.automatic_general) return &k;
     if (!first) first = &k;
   }

@@ -495,6 +495,12 @@ struct Contact {
   int option = 0;   ///< tiebreak OPTION
   Real nfls = 0.0, sfls = 0.0, param = 0.0, eraten = 0.0, erates = 0.0, ct2cn = 0.0, cn = 0.0;  ///< card 4
   Real radius = 0.0;  ///< nodal contact radius for discrete nodes (type 5)
+  /// *CONTACT_ERODING_... (the automatic counterpart, its surfaces updated as elements are
+  /// deleted; docs/contact_erosion.md) and its card 4: ISYM (symmetry-plane faces left out: 0 only
+  /// here), EROSOP (1: interior faces become surface when the element in front of them is deleted;
+  /// 0: only the exterior faces, each dropped with its element), IADJ (0 only here).
+  bool eroding = false;
+  int isym = 0, erosop = 0, iadj = 0;
   /// Slave-master coupling (Types 3, 5, 10, 12 with surface slaves; the keyword's _MORTAR option
   /// sets 1, docs/keywords.md): 0 DYNA3D's rule (each slave node on its master segment's closest
   /// point; penalty spring f K A^2 / V), 1 mortar (penalty: the same stiffness per unit area times

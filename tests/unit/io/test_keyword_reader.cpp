@@ -267,7 +267,7 @@ TEST(KeywordReader, NumberWrittenAcrossAFixedFieldBoundaryIsAnError) {
 
 TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
   const std::string deck =
-      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_ERODING_SINGLE_SURFACE\n1\n*CONTACT_SURFACE_TO_SURFACE\n1,2\n*END\n";
+      "*KEYWORD\n*FOO_BAR\n1,2\n*CONTACT_SPOTWELD\n1\n*CONTACT_SURFACE_TO_SURFACE\n1,2\n*END\n";
   std::vector<Diagnostic> warnings;
   try {
     read_keyword_string(deck, "w.k", &warnings);
@@ -275,7 +275,7 @@ TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
   } catch (const NotImplementedError& e) {
     const std::string what = e.what();
     EXPECT_EQ(what.rfind("w.k:2: *FOO_BAR (keyword not in slideline's tables) is not supported\n", 0), 0u) << what;
-    EXPECT_NE(what.find("w.k:4: *CONTACT_ERODING_SINGLE_SURFACE (contact type) is not supported"), std::string::npos)
+    EXPECT_NE(what.find("w.k:4: *CONTACT_SPOTWELD (contact type) is not supported"), std::string::npos)
         << what;
   }
   EXPECT_TRUE(warnings.empty());
@@ -295,7 +295,7 @@ TEST(KeywordReader, UnknownKeywordsAreErrorsNamingCardAndLine) {
       << to_string(warnings[0]);
   const auto dropped = describe_dropped(m);
   ASSERT_EQ(dropped.size(), 2u);
-  EXPECT_EQ(to_string(dropped[1]), "w.k:4: *CONTACT_ERODING_SINGLE_SURFACE (id 1) dropped, 1 card(s)");
+  EXPECT_EQ(to_string(dropped[1]), "w.k:4: *CONTACT_SPOTWELD (id 1) dropped, 1 card(s)");
 }
 
 // _SLIDING_ONLY (no separation) changes the physics: where it means nothing it is an error naming

@@ -43,6 +43,7 @@
 #include "slideline/contact/enforcement/mortar_weights.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/friction/frictionless.hpp"
+#include "slideline/contact/search/contact_erosion.hpp"
 #include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/shell_offset.hpp"
 #include "slideline/core/parallel.hpp"
@@ -185,6 +186,16 @@ class PenaltyPass {
   void set_held(std::span<const std::uint8_t> held_nodes, std::span<const std::uint8_t> held_segments) {
     pairs_.set_held(held_nodes, held_segments);
   }
+  /// Contact with eroding parts (search/contact_erosion.hpp; the automatic passes): the slaves and
+  /// segments are admitted only while active, the flags re-read at the start of each compute()
+  /// (a new search when one changed). Before initialize() and after set_slave_orientation().
+  void set_erosion(ContactErosion erosion) {
+    erosion_ = std::move(erosion);
+    eroding_ = true;
+    pairs_.set_erosion(erosion_.slave_active(), erosion_.segment_active(), erosion_.own_active());
+  }
+  /// The erosion state (null without set_erosion()).
+  const ContactErosion* erosion() const { return eroding_ ? &erosion_ : nullptr; }
   /// Part of each slave node (automatic pass: its own-part filter), set by the owner.
   std::vector<Id>& slave_part() { return pairs_.slave_parts(); }
   const std::vector<Id>& slave_part() const { return pairs_.slave_parts(); }
@@ -240,6 +251,8 @@ class PenaltyPass {
 
   ContactPairs pairs_;
   PenaltyPassOptions opt_;
+  ContactErosion erosion_;  ///< set_erosion(): the activity flags pairs_ reads
+  bool eroding_ = false;
   std::vector<Real> k_seg_;
   std::vector<Real> kappa_;             ///< mortar coupling: k_s / A_s per segment (else empty)
   Surface slave_surface_;               ///< mortar coupling: the slaves' own surface

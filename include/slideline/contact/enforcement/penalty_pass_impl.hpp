@@ -8,6 +8,7 @@ namespace slideline {
 
 inline void PenaltyPass::initialize(const NodalFields& nodes,
                                     const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
+  if (eroding_) erosion_.bind(blocks);  // the flags at t = 0, before the first search
   const Surface& master = pairs_.master();
   const Index ns = master.segment_count();
   k_seg_.assign(static_cast<std::size_t>(ns), 0.0);
@@ -127,6 +128,9 @@ template <class Friction>
 void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& times, const Friction& friction) {
   if (opt_.soft_scale > 0.0 && !(times.dt_initial > 0.0))
     throw Error("PenaltyPass::compute: SOFT = 1 needs the run's initial step (StepTimes::dt_initial)");
+  // The elements of this cycle have run (and deleted what fails): a segment or slave that changed
+  // activity needs a new search (the candidates of the last one may miss a new face).
+  if (eroding_ && erosion_.update()) pairs_.force_search();
   pairs_.locate(nodes.x);
   parallel_for(static_cast<Index>(pairs_.slaves().size()),
                [&](Index i) { evaluate(static_cast<std::size_t>(i), nodes, times, friction); });

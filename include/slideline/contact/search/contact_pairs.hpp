@@ -124,6 +124,17 @@ class ContactPairs {
     held_node_ = held_nodes;
     held_segment_ = held_segments;
   }
+  /// Contact with eroding parts (search/contact_erosion.hpp): slave i is admitted only while
+  /// slave_active[i] != 0, segment s only while segment_active[s] != 0, and the orientation reads
+  /// only the active own faces (own_active, per segment of the slaves' own surface). Views of the
+  /// owner's flags, which it updates between cycles (then force_search()); before initialize();
+  /// never called: everything is active.
+  void set_erosion(std::span<const std::uint8_t> slave_active, std::span<const std::uint8_t> segment_active,
+                   std::span<const std::uint8_t> own_active) {
+    slave_active_ = slave_active;
+    segment_active_ = segment_active;
+    orientation_.set_own_activity(own_active);
+  }
   /// One offset per master segment (length) instead of the ShellOffsetRule's (a surface whose
   /// segments come from two sides with their own thickness rules); before initialize().
   void set_master_offsets(std::vector<Real> offsets) { master_offset_given_ = std::move(offsets); }
@@ -214,6 +225,8 @@ class ContactPairs {
   std::vector<Real> master_offset_given_;        ///< set_master_offsets() (empty: the rule's)
   std::span<const std::uint8_t> held_node_;      ///< set_held(): per internal node (empty: none held)
   std::span<const std::uint8_t> held_segment_;   ///< set_held(): per master segment
+  std::span<const std::uint8_t> slave_active_;   ///< set_erosion(): per slave (empty: all active)
+  std::span<const std::uint8_t> segment_active_; ///< set_erosion(): per master segment
   std::vector<std::uint8_t> slave_solid_;  ///< skip_own_shell_part: the node has only solid faces
   Real allowance_ = 0.0;
   Real min_size_ = 1.0;
@@ -235,13 +248,16 @@ inline void ContactPairs::initialize(const Vec3Field& x) {
   master_offset_.assign(static_cast<std::size_t>(ns), 0.0);
   Real min_diag = std::numeric_limits<Real>::max(), max_offset = 0.0;
   for (Index s = 0; s < ns; ++s) {
-    min_diag = std::min(min_diag, segment_max_diagonal(master_, s, x));
+    // Under erosion the allowance is sized by the segments active at the start (the interior
+    // faces that may become active later are not contact surface yet).
+    if (segment_active_.empty() || segment_active_[static_cast<std::size_t>(s)] != 0)
+      min_diag = std::min(min_diag, segment_max_diagonal(master_, s, x));
     master_offset_[static_cast<std::size_t>(s)] = master_offset_given_.empty()
                                                       ? segment_offset(master_, s, master_shells_)
                                                       : master_offset_given_[static_cast<std::size_t>(s)];
     max_offset = std::max(max_offset, master_offset_[static_cast<std::size_t>(s)]);
   }
-  min_size_ = ns > 0 ? min_diag : 1.0;
+  min_size_ = ns > 0 && min_diag < std::numeric_limits<Real>::max() ? min_diag : 1.0;
   allowance_ = opt_.allowance_fraction * min_size_;
   Real box_margin = allowance_ + max_offset;
   if (opt_.boxes_cover_slave_offsets) {
@@ -282,13 +298,15 @@ inline void ContactPairs::initialize(const Vec3Field& x) {
   }
 }
 
-/// Which segments slave i may meet: with set_sides(), the cross pairs only; no pair a tie holds
-/// (set_held()); its orientation
+/// Which segments slave i may meet: with set_sides(), the cross pairs only; under erosion
+/// (set_erosion()) an active slave and an active segment only; no pair a tie holds (set_held());
+/// its orientation
 /// (search/slave_orientation.hpp) and, with skip_own_shell_part, no self-contact of a shell part
 /// (a shell node or a shell segment never meets its own part).
 inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) const {
   const std::size_t su = static_cast<std::size_t>(s);
   if (!segment_side_mask_.empty() && (slave_side_mask_[i] | segment_side_mask_[su]) != 3) return false;
+  if (!segment_active_.empty() && (slave_active_[i] == 0 || segment_active_[su] == 0)) return false;
   if (!held_node_.empty() && (held_node_[static_cast<std::size_t>(slaves_[i])] != 0 || held_segment_[su] != 0))
     return false;
   if (opt_.skip_own_shell_part && (!slave_solid_[i] || master_.kind[su] == SegmentKind::shell) &&

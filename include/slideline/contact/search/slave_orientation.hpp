@@ -61,10 +61,16 @@ class SlaveOrientation {
         const Index s = own.node_segments.value[static_cast<std::size_t>(j)];
         const Index* c = &own.conn[4 * static_cast<std::size_t>(s)];
         conn_.insert(conn_.end(), c, c + 4);
+        face_segment_.push_back(s);
         ++offset_[i + 1];
       }
     }
   }
+
+  /// Under erosion (search/contact_erosion.hpp): per segment of the `own` surface, 1 while it is
+  /// active; an inactive own face orients nothing. A view of the owner's flags; never called: every
+  /// own face counts.
+  void set_own_activity(std::span<const std::uint8_t> active) { own_active_ = active; }
 
   /// True when slave i is filtered (a node on solid faces only).
   bool filtered(std::size_t i) const { return !offset_.empty() && offset_[i + 1] > offset_[i]; }
@@ -75,6 +81,8 @@ class SlaveOrientation {
     const Vec3 nm = segment_normal(master, s, x);
     const bool two_sided = master.kind[static_cast<std::size_t>(s)] == SegmentKind::shell;
     for (Index f = offset_[i]; f < offset_[i + 1]; ++f) {
+      if (!own_active_.empty() && own_active_[static_cast<std::size_t>(face_segment_[static_cast<std::size_t>(f)])] == 0)
+        continue;
       const Index* c = &conn_[4 * static_cast<std::size_t>(f)];
       const Vec3 a = (x.get(c[2]) - x.get(c[0])).cross(x.get(c[3]) - x.get(c[1]));
       const Real len = a.norm();
@@ -88,6 +96,8 @@ class SlaveOrientation {
  private:
   std::vector<Index> offset_;  ///< slaves + 1 entries (empty: nothing filtered)
   std::vector<Index> conn_;    ///< 4 nodes per own face
+  std::vector<Index> face_segment_;  ///< per own face: its segment in the `own` surface
+  std::span<const std::uint8_t> own_active_;  ///< set_own_activity() (empty: all count)
 };
 
 /// The deepest a slave may be behind segment s of `master` (at coordinates x) and still belong to

@@ -1,0 +1,111 @@
+// Contact with eroding parts (docs/contact_erosion.md): the interfaces that update their surfaces
+// as elements are deleted get every face of their sides' eroding solids (contact/search/
+// contact_erosion.hpp says which are active when); the others refuse an eroding part.
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/core/error.hpp"
+#include "slideline/element/element_block.hpp"
+#include "slideline/element/element_erosion.hpp"
+#include "slideline/mesh/surface_builder.hpp"
+
+namespace slideline {
+
+namespace {
+
+constexpr const char* kSupported =
+    "contact with eroding parts runs on *CONTACT_AUTOMATIC_SINGLE_SURFACE, *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, "
+    "*CONTACT_AUTOMATIC_NODES_TO_SURFACE and *CONTACT_ERODING_SINGLE_SURFACE / _SURFACE_TO_SURFACE / "
+    "_NODES_TO_SURFACE (penalty; docs/contact_erosion.md)";
+
+bool block_erodes(const ContactBuildContext& ctx, Index b) {
+  const ElementErosion* er = std::as_const(*ctx.blocks[static_cast<std::size_t>(b)]).erosion();
+  return er && er->active();
+}
+
+/// Appends to side.surface the interior faces of its parts' solids where one of the two elements
+/// that own a face can erode (each face once per owner, oriented out of it), rebuilds the
+/// adjacency and the side's nodes.
+void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const std::string& where) {
+  if (side.parts.empty()) return;  // a segment set: its segments only
+  const Surface inner = interior_faces_of_parts(ctx.blocks, ctx.nodes, side.parts, where);
+  using Key = std::pair<std::array<Index, 4>, Index>;
+  std::vector<Key> keys;
+  for (Index k = 0; k < inner.segment_count(); ++k) {
+    std::array<Index, 4> a{};
+    std::copy_n(&inner.conn[4 * static_cast<std::size_t>(k)], 4, a.begin());
+    if (a[2] == a[3]) a[3] = -1;
+    std::sort(a.begin(), a.end());
+    keys.push_back({a, k});
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<char> keep(static_cast<std::size_t>(inner.segment_count()), 0);
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i;
+    bool erodes = false;
+    for (; j < keys.size() && keys[j].first == keys[i].first; ++j)
+      erodes = erodes || block_erodes(ctx, inner.block[static_cast<std::size_t>(keys[j].second)]);
+    for (std::size_t k = i; k < j; ++k) keep[static_cast<std::size_t>(keys[k].second)] = erodes ? 1 : 0;
+    i = j;
+  }
+  Surface& s = side.surface;
+  for (Index k = 0; k < inner.segment_count(); ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    if (!keep[u]) continue;
+    s.conn.insert(s.conn.end(), &inner.conn[4 * u], &inner.conn[4 * u] + 4);
+    s.block.push_back(inner.block[u]);
+    s.element.push_back(inner.element[u]);
+    s.part.push_back(inner.part[u]);
+    s.kind.push_back(inner.kind[u]);
+    s.thickness.push_back(inner.thickness[u]);
+  }
+  build_surface_adjacency(s);
+  side.nodes = s.nodes;
+}
+
+}  // namespace
+
+void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx, const std::vector<Id>& eroding_part) {
+  if (eroding_part.empty()) return;
+  Id pid = 0;
+  const ContactSide* on = nullptr;
+  for (const ContactSide* side : {&spec.slave, &spec.master})
+    for (Index n : side->nodes)
+      if (pid == 0 && eroding_part[static_cast<std::size_t>(n)] != 0) {
+        pid = eroding_part[static_cast<std::size_t>(n)];
+        on = side;
+      }
+  if (pid == 0) return;
+  const std::string part = "part " + std::to_string(pid) + " can erode (its material's failure strain) and is on "
+                           "this contact's " + (on == &spec.slave ? "slave" : "master") + " side: ";
+  using F = model::ContactForm;
+  const bool automatic = spec.type == model::ContactType::automatic &&
+                         spec.enforcement == model::Enforcement::penalty &&
+                         (spec.form == F::dyna3d || spec.form == F::automatic_surface_to_surface ||
+                          spec.form == F::automatic_nodes_to_surface);
+  if (!automatic) throw NotImplementedError(spec.where + ": " + part + "not implemented for this card; " + kSupported);
+  if (spec.mortar_coupling)
+    throw NotImplementedError(spec.where + ": " + part + "the mortar coupling (_MORTAR) with eroding parts is not "
+                                                         "implemented (the slave surface's weights would not follow "
+                                                         "the erosion)");
+  if (spec.node_set_slaves)
+    for (Index n : spec.slave.nodes)
+      if (eroding_part[static_cast<std::size_t>(n)] != 0)
+        throw NotImplementedError(spec.where + ": part " + std::to_string(eroding_part[static_cast<std::size_t>(n)]) +
+                                  " can erode and holds slave nodes of a node set (SSTYP 4): not implemented; "
+                                  "select the slave side by part (SSTYP 2 or 3)");
+  if (spec.interior_faces) {
+    add_interior_faces(spec.slave, ctx, spec.where + ": SSID");
+    if (spec.single_surface)
+      spec.master = spec.slave;
+    else
+      add_interior_faces(spec.master, ctx, spec.where + ": MSID");
+  }
+  spec.eroding = true;
+}
+
+}  // namespace slideline
