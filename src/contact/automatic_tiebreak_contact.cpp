@@ -1,4 +1,4 @@
-// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (OPTION 1): Type 9's tie, then the automatic
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (OPTION 2): Type 9's tie, then the automatic
 // surface-to-surface pass. See include/slideline/contact/automatic_tiebreak_contact.hpp.
 #include "slideline/contact/automatic_tiebreak_contact.hpp"
 

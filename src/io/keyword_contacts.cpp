@@ -76,7 +76,11 @@ void read_tiebreak_card4(const Card& k, model::Contact& c) {
 /// "Automatic tiebreak": the table of options).
 std::string unbuilt_tiebreak_option(int option) {
   switch (option) {
-    case 0: return "blank or 0 is not a tiebreak law; give OPTION 1, 2 or 9";
+    case 0: return "blank or 0 means the manual's default, OPTION 1: nodes in contact, and those that come into "
+                   "contact later, stick permanently; ties formed during the run are not built; give OPTION 2 for the "
+                   "tie that fails by NFLS and SFLS";
+    case 1: return "OPTION 1 ties nodes in contact, and those that come into contact later, permanently (no failure); "
+                   "ties formed during the run are not built; give OPTION 2 for the tie that fails by NFLS and SFLS";
     case 3: return "OPTION 3 also ties nodes that come into contact later and fails them after sticking";
     case 4: return "OPTION 4 lets tied nodes slide with friction before failure (PARAM = 1: SFLS a friction stress)";
     case 5: return "OPTION 5 is a damage curve of the crack opening (SFLS a curve, NFLS a yield stress)";
@@ -93,19 +97,19 @@ std::string unbuilt_tiebreak_option(int option) {
   }
 }
 
-/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4. Built: OPTION 1 and 2 (the stress
-/// criterion, then the automatic contact; 2 is the manual's law for it, 1 kept as the earlier
-/// sessions built it) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4. Built: OPTION 2 (the stress criterion,
+/// then the automatic contact: the manual's law for it; OPTION 1, a permanent tie that also ties
+/// nodes arriving later, is refused) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
 /// ERATEN, ERATES, CT2CN, CN). Every other OPTION is refused saying why; NFLS, SFLS < 0 (curves)
-/// are refused. On OPTION 1 and 2, PARAM..CN off their blank default are refused by
+/// are refused. On OPTION 2, PARAM..CN off their blank default are refused by
 /// check_contact_fields (keyword_contact_fields.cpp).
 void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c, const Line* card4, int line) {
   const std::string at = ctx.where(card4 ? card4->number : line) + c.keyword + " card 4";
   if (!card4) throw InputError(at + " (OPTION NFLS SFLS PARAM ...) is missing");
-  if (c.option != 1 && c.option != 2 && c.option != 9)
+  if (c.option != 2 && c.option != 9)
     throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) + " is not implemented (" +
                               unbuilt_tiebreak_option(c.option) +
-                              "); built: 1 and 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
+                              "); built: 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
                               "automatic surface-to-surface contact) and 9 (mixed-mode bilinear traction-separation)");
   const auto value = [](Real v) {
     char s[32];

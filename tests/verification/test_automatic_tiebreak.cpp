@@ -1,4 +1,4 @@
-// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, OPTION 1, against closed forms. Two blocks of one
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, OPTION 2, against closed forms. Two blocks of one
 // hexahedron each (1 x 0.5 x 1) are tied across their common face (area A = 1; slave side: the
 // upper block's bottom face, master side: the lower block's top face, as segment sets); the lower
 // block's bottom is fixed and a ramped load acts on the upper block's top nodes.
@@ -83,7 +83,7 @@ TieResult run_tie(const TieCase& tc) {
   card.sstyp = card.mstyp = 0;
   card.fs = card.fd = kMu;
   card.sfs = card.sfm = 10.0;
-  card.option = 1;
+  card.option = 2;
   card.nfls = card.nflf = kNfls;
   card.sfls = card.sflf = kSfls;
   m.contacts.push_back(card);

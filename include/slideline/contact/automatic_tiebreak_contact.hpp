@@ -1,5 +1,5 @@
 #pragma once
-/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, OPTION 1: the slave side's nodes that touch the
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, OPTION 2: the slave side's nodes that touch the
 /// master side at t = 0 are tied by penalty springs until their slave segments fail by the stress
 /// criterion (|sigma_n| / NFLS)^2 + (|sigma_s| / SFLS)^2 >= 1 (sigma_n tensile only); then the
 /// two-sided automatic surface-to-surface contact with friction (FS, FD, DC) takes those nodes

@@ -41,7 +41,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& 
 /// (tied surfaces with failure: failure per slave segment, NFLF/SFLF stresses): penalty factor
 /// SLSFAC x SFS; friction FS, FD, DC after failure.
 std::unique_ptr<ContactAlgorithm> make_tiebreak_contact(InterfaceSpec& spec);
-/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (OPTION 1): Type 9's tie and failure law, then
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (OPTION 2): Type 9's tie and failure law, then
 /// the automatic surface-to-surface pass (automatic_tiebreak_contact.hpp); solid faces only.
 std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
 

@@ -48,10 +48,10 @@ TEST(ContactKeywords, EachRowReadsAsItSaysAndIsWrittenUnderItsName) {
   for (const auto& k : model::kContactKeywords)
     for (const auto& s : spellings(k)) {
       SCOPED_TRACE(s.keyword);
-      // The automatic tiebreak card needs its card 4 (OPTION 1, the law built).
+      // The automatic tiebreak card needs its card 4 (OPTION 2, the stress-criterion law).
       const bool card4 = k.type == model::ContactType::tiebreak_surface && k.form != model::ContactForm::dyna3d;
       const std::string deck = "*KEYWORD\n" + s.keyword + "\n" + (s.heading ? "         7a contact\n" : "") +
-                               "1,2\n" + (card4 ? "0\n1\n1\n" : "") + "*END\n";
+                               "1,2\n" + (card4 ? "0\n1\n2\n" : "") + "*END\n";
       const auto m = read_keyword_string(deck, "c.k");
       ASSERT_EQ(m.contacts.size(), 1u);
       const auto& c = m.contacts[0];
@@ -137,26 +137,27 @@ TEST(ContactKeywords, TheReadersTableKeepsTheOptionGrammar) {
     EXPECT_FALSE(reads_keyword(kw)) << kw;
 }
 
-// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: OPTION 1 with NFLS, SFLS is read (stresses,
-// kept as the tiebreak failure fields) and written back; any other OPTION, a field of card 4 that
-// is not honoured and a curve (NFLS, SFLS < 0) are refused naming the file, line, field and value.
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: OPTION 2 with NFLS, SFLS is read (stresses,
+// kept as the tiebreak failure fields) and written back; OPTION 1 (and blank, its default: a
+// permanent tie that also ties nodes arriving later), the other unbuilt OPTIONs, a field of card 4
+// that is not honoured and a curve (NFLS, SFLS < 0) are refused naming the file, line, field and value.
 TEST(ContactKeywords, AutomaticTiebreakCard4) {
   const auto deck = [](const std::string& card4) {
     return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n1\n" + card4 + "*END\n";
   };
-  const auto m = read_keyword_string(deck("1,2.5,3.5\n"), "c.k");
+  const auto m = read_keyword_string(deck("2,2.5,3.5\n"), "c.k");
   ASSERT_EQ(m.contacts.size(), 1u);
   const auto& c = m.contacts[0];
   EXPECT_EQ(c.type, model::ContactType::tiebreak_surface);
   EXPECT_EQ(c.form, model::ContactForm::automatic_surface_to_surface);
-  EXPECT_EQ(c.option, 1);
+  EXPECT_EQ(c.option, 2);
   EXPECT_EQ(c.nflf, 2.5);
   EXPECT_EQ(c.sflf, 3.5);
   const std::string written = write_keyword_string(m);
   EXPECT_NE(written.find("\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n"), std::string::npos) << written;
   const auto again = read_keyword_string(written, "again.k");
   ASSERT_EQ(again.contacts.size(), 1u);
-  EXPECT_EQ(again.contacts[0].option, 1);
+  EXPECT_EQ(again.contacts[0].option, 2);
   EXPECT_EQ(again.contacts[0].nflf, 2.5);
   EXPECT_EQ(again.contacts[0].sflf, 3.5);
   EXPECT_EQ(again.contacts[0].fs, 0.2);
@@ -176,18 +177,20 @@ TEST(ContactKeywords, AutomaticTiebreakCard4) {
   refused("7,2.5,3.5\n", at + "OPTION = 7 is not implemented (OPTION 7 (Dycoss");
   refused("11,2.5,3.5\n", at + "OPTION = 11 is not implemented (OPTION 11 is the offset-shell variant of OPTION 9");
   refused("-9,2.5,3.5\n", at + "OPTION = -9 is not implemented");
-  refused(",2.5,3.5\n", at + "OPTION = 0 is not implemented");
-  refused("1,-4,3.5\n", at + "NFLS = -4");
-  refused("1,2.5,-7\n", at + "SFLS = -7");
-  refused("1,2.5,3.5,0.1\n", at + "PARAM = 0.1");
-  refused("1,2.5,3.5,0,5\n", at + "ERATEN = 5");
-  refused("1,2.5,3.5,0,0,6\n", at + "ERATES = 6");
-  refused("1,2.5,3.5,0,0,0,0.5\n", at + "CT2CN = 0.5");
-  refused("1,2.5,3.5,0,0,0,0,1e5\n", at + "CN = 100000");
+  refused(",2.5,3.5\n", at + "OPTION = 0 is not implemented (blank or 0 means the manual's default, OPTION 1");
+  refused("1,2.5,3.5\n", at + "OPTION = 1 is not implemented (OPTION 1 ties nodes in contact, and those that come "
+                              "into contact later, permanently");
+  refused("2,-4,3.5\n", at + "NFLS = -4");
+  refused("2,2.5,-7\n", at + "SFLS = -7");
+  refused("2,2.5,3.5,0.1\n", at + "PARAM = 0.1");
+  refused("2,2.5,3.5,0,5\n", at + "ERATEN = 5");
+  refused("2,2.5,3.5,0,0,6\n", at + "ERATES = 6");
+  refused("2,2.5,3.5,0,0,0,0.5\n", at + "CT2CN = 0.5");
+  refused("2,2.5,3.5,0,0,0,0,1e5\n", at + "CN = 100000");
   EXPECT_THROW(read_keyword_string(deck(""), "c.k"), InputError);  // card 4 missing
 }
 
-// OPTION 2 is the stress criterion (OPTION 1's law, under the manual's number); OPTION 9 reads the
+// OPTION 2 is the stress criterion; OPTION 9 reads the
 // whole card (PARAM, ERATEN, ERATES, CT2CN, CN) and writes it back; its peak tractions and energy
 // release rates are required (> 0), CT2CN and CN < 0 refused; PARAM..CN on OPTION 2 are refused.
 TEST(ContactKeywords, AutomaticTiebreakOptions2And9) {
