@@ -79,10 +79,14 @@ class HexBlock final : public ElementBlock {
   std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
-  /// ElementBlock::enable_erosion: the law's state must hold a plastic strain.
-  void enable_erosion(Real failure_strain) override {
-    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
-    erosion_.enable(failure_strain, element_count(), padded(element_count()));
+  /// ElementBlock::enable_erosion: a failure strain needs a law whose state holds a plastic
+  /// strain; the stress and time criteria and TDEL work with any law.
+  void enable_erosion(const ErosionCriteria& criteria) override {
+    if constexpr (!requires(const State& s) { s.eps; })
+      if (criteria.plastic_strain > 0.0)
+        throw NotImplementedError("part " + std::to_string(part_id_) + ": a failure strain needs a plastic law");
+    erosion_.enable(criteria, element_count(), padded(element_count()));
+    needs_stress_ = criteria.needs_stress();
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
 
@@ -231,7 +235,7 @@ class HexBlock final : public ElementBlock {
         gather_batch(nodes, e0, bt);
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
-        if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk);
+        if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk, kc.c);
         accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data());
         store_forces(f, e0, valid, out);
       }
@@ -263,6 +267,7 @@ class HexBlock final : public ElementBlock {
   /// powers, the characteristic length and the viscous term of the step.
   struct BatchStress {
     Tensor3<Lanes> sigma;
+    Tensor3<Lanes> law;  ///< the law's stress alone: set only when an erosion criterion reads it
     Lanes visc, damp, qdt, len;
   };
 
@@ -323,13 +328,26 @@ class HexBlock final : public ElementBlock {
     }
   }
 
-  /// Erosion of a batch's elements after the law's update (element_erosion.hpp): a deleted
-  /// element's forces and powers are zeroed and its step is +inf (it votes none).
-  void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk) {
+  /// Erosion of a batch's elements after the law's update (element_erosion.hpp): an element goes
+  /// when its plastic strain reaches the failure strain, when NCS of *MAT_ADD_EROSION's
+  /// thresholds hold for the law's stress (its one point), or when its step (wave speed `c`, as
+  /// accumulate() computes it) falls below TDEL. A deleted element's forces and powers are zeroed
+  /// and its step is +inf (it votes none).
+  void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
     const State& s = state_[e0 / kLanes];
+    const ErosionCriteria& k = erosion_.criteria();
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
-      if (!erosion_.update(e0 + l, chunk, plastic_strain_of(s, l), internal, f.hg[l], dt)) continue;
+      bool fails = k.plastic_strain > 0.0 && plastic_strain_of(s, l) >= k.plastic_strain;
+      if (!fails && k.has_thresholds())
+        fails = k.point_fails(needs_stress_ ? sym6(st.law, l) : SymTensor6{}, erosion_.time());
+      if (!fails && k.min_step > 0.0) {
+        const Real q = st.qdt[l];
+        Real dt_e = st.len[l] / (q + std::sqrt(q * q + c * c));
+        if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
+        fails = dt_e < k.min_step;
+      }
+      if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
       st.len[l] = std::numeric_limits<Real>::infinity();
@@ -362,6 +380,7 @@ class HexBlock final : public ElementBlock {
     const Tensor3<Lanes> d = rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
     BatchStress st;
     st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
+    if (needs_stress_) st.law = st.sigma;  // the law's stress, for *MAT_ADD_EROSION's thresholds
     Lanes trd = Lanes::Zero();
     for (int k = 0; k < 8; ++k) trd += bt.vx[k] * bt.bx[k] + bt.vy[k] * bt.by[k] + bt.vz[k] * bt.bz[k];
     st.len = bt.vol / hex8::max_face_area(bt.x, bt.y, bt.z);
@@ -576,6 +595,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
   ElementErosion erosion_;  ///< inactive unless enable_erosion
+  bool needs_stress_ = false;  ///< an erosion criterion reads the law's stress (BatchStress::law)
   inline static const Lanes kLaneOffsets = Lanes::LinSpaced(kLanes, 0.0, kLanes - 1.0);
 
  public:
