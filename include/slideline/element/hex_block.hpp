@@ -85,6 +85,9 @@ class HexBlock final : public ElementBlock {
     if constexpr (!requires(const State& s) { s.eps; })
       if (criteria.plastic_strain > 0.0)
         throw NotImplementedError("part " + std::to_string(part_id_) + ": a failure strain needs a plastic law");
+    if (criteria.has_thresholds() && criteria.points_needed(1) > 1)
+      throw InputError("part " + std::to_string(part_id_) + ": NUMFIP of *MAT_ADD_EROSION asks for " +
+                       std::to_string(criteria.points_needed(1)) + " failed points, but a one-point hexahedron has 1");
     erosion_.enable(criteria, element_count(), padded(element_count()));
     needs_stress_ = criteria.needs_stress();
   }

@@ -126,6 +126,11 @@ TEST(KeywordAddErosion, RefusedAtTheBuild) {
             std::string::npos)
       << what;
   EXPECT_NE(what.find("*MAT_ADD_EROSION (p.k:3)"), std::string::npos) << what;
+  what = thrown(deck("*MAT_ADD_EROSION\n1,,,,,,2\n,,20\n"), true);
+  EXPECT_NE(what.find("NUMFIP of *MAT_ADD_EROSION asks for 2 failed points, but a one-point hexahedron has 1"),
+            std::string::npos)
+      << what;
+  EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1,,,,,,-50\n,,20\n"), true), "(no error)");  // 50% of one point
   what = thrown(deck("*MAT_ADD_EROSION\n1\n,,20\n", 10), true);
   EXPECT_NE(what.find("*MAT_ADD_EROSION on tetrahedra (ELFORM 10) are not implemented"), std::string::npos) << what;
 }
