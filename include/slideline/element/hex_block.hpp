@@ -338,17 +338,17 @@ class HexBlock final : public ElementBlock {
   /// and its step is +inf (it votes none).
   void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
     const State& s = state_[e0 / kLanes];
-    const ErosionCriteria& k = erosion_.criteria();
+    const ErosionCriteria& crit = erosion_.criteria();
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
-      bool fails = k.plastic_strain > 0.0 && plastic_strain_of(s, l) >= k.plastic_strain;
-      if (!fails && k.has_thresholds())
-        fails = k.point_fails(needs_stress_ ? sym6(st.law, l) : SymTensor6{}, erosion_.time());
-      if (!fails && k.min_step > 0.0) {
+      bool fails = crit.plastic_strain > 0.0 && plastic_strain_of(s, l) >= crit.plastic_strain;
+      if (!fails && crit.has_thresholds())
+        fails = crit.point_fails(needs_stress_ ? sym6(st.law, l) : SymTensor6{}, erosion_.time());
+      if (!fails && crit.min_step > 0.0) {
         const Real q = st.qdt[l];
         Real dt_e = st.len[l] / (q + std::sqrt(q * q + c * c));
         if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
-        fails = dt_e < k.min_step;
+        fails = dt_e < crit.min_step;
       }
       if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
