@@ -94,8 +94,9 @@ TEST(KeywordAddErosion, RefusesWhatIsNotBuilt) {
   refused("1\n,,20,,,,3\n", "p.k:5: *MAT_ADD_EROSION: card 2 field IMPULSE = 3");
   refused("1\n,-7\n", "p.k:5: *MAT_ADD_EROSION: card 2 field SIGP1 = -7");
   refused("1\n,,-8\n", "p.k:5: *MAT_ADD_EROSION: card 2 field SIGVM = -8");
-  // EXCL 9: a blank strain field is 0, not 9: a criterion, refused.
-  refused("1,9,9,,9,9\n9,9,20,9,9,9,9,9\n", "p.k:4: *MAT_ADD_EROSION: card 1 field MNEPS = 0 (blank)");
+  // EXCL 9: a blank MXEPS is 0, not 9: a criterion, refused (MNEPS, EFFEPS, VOLEPS and MXPRES at 0
+  // are excluded whatever EXCL).
+  refused("1,9,9,,9,9\n9,9,20,,9,9,9,9\n", "p.k:5: *MAT_ADD_EROSION: card 2 field MXEPS = 0 (blank)");
   refused("1\n,,20\n-1\n", "p.k:6: *MAT_ADD_EROSION: card 3 field IDAM = -1");
   refused("1\n,,20\n\n5\n", "p.k:7: *MAT_ADD_EROSION: card 4 field LCFLD = 5");
   refused("1\n,,20\n\n\n,,,1e-6\n", "p.k:8: *MAT_ADD_EROSION: card 5 field DTMIN = 1e-6");
