@@ -38,6 +38,7 @@ std::string deck(const std::string& extra, int elform = 1, bool shell = false) {
       for (int i = 0; i <= 1; ++i)
         d += std::to_string(1 + i + 2 * j + 4 * k) + "," + std::to_string(i) + "," + std::to_string(j) + "," +
              std::to_string(k) + "\n";
+  d += "*CONTROL_TERMINATION\n1.0\n";  // after `extra`, which the tests name by line
   if (shell) return d + "*SECTION_SHELL\n1,2,1.0,2\n0.1,0.1,0.1,0.1\n*ELEMENT_SHELL\n1,1,1,2,4,3\n*END\n";
   d += "*SECTION_SOLID\n1," + std::to_string(elform) + "\n*ELEMENT_SOLID\n";
   d += elform == 10 ? "1,1,1,2,4,5,5,5,5,5\n" : "1,1,1,2,4,3,5,6,8,7\n";
