@@ -13,6 +13,7 @@
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
+#include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/element/hex_hourglass_stiffness.hpp"
 #include "slideline/material/solid_material.hpp"
@@ -79,15 +80,9 @@ class HexBlock final : public ElementBlock {
   std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
-  /// ElementBlock::enable_erosion: a failure strain needs a law whose state holds a plastic
-  /// strain; the stress and time criteria and TDEL work with any law.
+  /// ElementBlock::enable_erosion (refusals: solid_erosion::check).
   void enable_erosion(const ErosionCriteria& criteria) override {
-    if constexpr (!requires(const State& s) { s.eps; })
-      if (criteria.plastic_strain > 0.0)
-        throw NotImplementedError("part " + std::to_string(part_id_) + ": a failure strain needs a plastic law");
-    if (criteria.has_thresholds() && criteria.points_needed(1) > 1)
-      throw InputError("part " + std::to_string(part_id_) + ": NUMFIP of *MAT_ADD_EROSION asks for " +
-                       std::to_string(criteria.points_needed(1)) + " failed points, but a one-point hexahedron has 1");
+    solid_erosion::check<State>(criteria, part_id_);
     erosion_.enable(criteria, element_count(), padded(element_count()));
     needs_stress_ = criteria.needs_stress();
   }
@@ -331,25 +326,19 @@ class HexBlock final : public ElementBlock {
     }
   }
 
-  /// Erosion of a batch's elements after the law's update (element_erosion.hpp): an element goes
-  /// when its plastic strain reaches the failure strain, when NCS of *MAT_ADD_EROSION's
-  /// thresholds hold for the law's stress (its one point), or when its step (wave speed `c`, as
-  /// accumulate() computes it) falls below TDEL. A deleted element's forces and powers are zeroed
-  /// and its step is +inf (it votes none).
+  /// Erosion of a batch's elements after the law's update (solid_erosion::fails, the step as
+  /// accumulate() computes it with wave speed `c`): a deleted element's forces and powers are
+  /// zeroed and its step is +inf (it votes none).
   void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
     const State& s = state_[e0 / kLanes];
     const ErosionCriteria& crit = erosion_.criteria();
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
-      bool fails = crit.plastic_strain > 0.0 && plastic_strain_of(s, l) >= crit.plastic_strain;
-      if (!fails && crit.has_thresholds())
-        fails = crit.point_fails(needs_stress_ ? sym6(st.law, l) : SymTensor6{}, erosion_.time());
-      if (!fails && crit.min_step > 0.0) {
-        const Real q = st.qdt[l];
-        Real dt_e = st.len[l] / (q + std::sqrt(q * q + c * c));
-        if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
-        fails = dt_e < crit.min_step;
-      }
+      const Real q = st.qdt[l];
+      Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c * c)) : 0.0;
+      if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
+      const SymTensor6 law = needs_stress_ ? sym6(st.law, l) : SymTensor6{};
+      const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e);
       if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
