@@ -259,6 +259,8 @@ void read_mat_rigid(const Context& ctx, Block& block, model::Model& model, bool 
 void read_mat_plastic_kinematic(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_piecewise_linear(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_null(const Context& ctx, Block& block, model::Model& model, bool titled);
+/// *MAT_ADD_EROSION (keyword_add_erosion.cpp).
+void read_mat_add_erosion(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_hourglass(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_set_node(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_set_part(const Context& ctx, Block& block, model::Model& model, bool titled);

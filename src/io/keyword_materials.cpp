@@ -65,14 +65,13 @@ void read_mat_piecewise_linear(const Context& ctx, Block& b, Model& m, bool titl
     c.get(3, "PR", mat.pr);
     c.get(4, "SIGY", mat.sigy);
     c.get(5, "ETAN", mat.etan);
-    // FAIL erodes elements at a plastic strain (0 and the default 1e21: never); TDEL (erosion of
-    // elements whose step falls below it) is not built.
-    Real tdel = 0.0;
+    // FAIL erodes elements at a plastic strain (0 and the default 1e21: never); TDEL erodes
+    // elements whose stable step falls below it (0: never; docs/solver.md, "Failure and erosion").
     mat.fail = failure_strain(ctx, b, c, 6, "FAIL");
-    c.get(7, "TDEL", tdel);
-    if (tdel != 0.0)
-      throw NotImplementedError(ctx.where(c.line()) + b.keyword +
-                                ": field TDEL (element erosion) is not implemented; leave it blank");
+    c.get(7, "TDEL", mat.tdel);
+    if (mat.tdel < 0.0)
+      throw InputError(ctx.where(c.line()) + b.keyword + ": card 1 field TDEL = " + std::string(c.raw(7)) +
+                       " must be >= 0 (the smallest element step kept; blank or 0: none)");
     const Line* l2 = b.take();
     if (!l2) return;
     Card c2 = Card(ctx, *l2, b.keyword, kStandard);

@@ -133,6 +133,8 @@ constexpr Row kRows[] = {
     {"*MAT_024", "_TITLE", "material 24 by number: as *MAT_PIECEWISE_LINEAR_PLASTICITY", with_option<read_mat_piecewise_linear>},
     {"*MAT_NULL", "_TITLE", "material 9: no stiffness, mass only (shells)", with_option<read_mat_null>},
     {"*MAT_009", "_TITLE", "material 9 by number: as *MAT_NULL", with_option<read_mat_null>},
+    {"*MAT_ADD_EROSION", "_TITLE", "failure criteria of a material: pressure, principal and von Mises stress, time",
+     with_option<read_mat_add_erosion>},
     {"*HOURGLASS", "_TITLE", "hourglass control of the parts that name it", with_option<read_hourglass>},
     {"*SET_NODE_LIST", "_TITLE", "node set", with_option<read_set_node>},
     {"*SET_NODE", "_TITLE", "node set (as *SET_NODE_LIST)", with_option<read_set_node>},

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <fstream>
 #include <span>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -142,7 +143,8 @@ void write_materials(const model::Model& m, std::string& o) {
                                            : "*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\n" + heading(pw.title);
                      o += "$#     MID        RO         E        PR      SIGY      ETAN      FAIL      TDEL\n";
                      CardOut c1 = CardOut().i(pw.mid).r(pw.ro).r(pw.e).r(pw.pr).r(pw.sigy).r(pw.etan);
-                     if (pw.fail != 0.0) c1.r(pw.fail);  // written only when set, as FS above
+                     if (pw.fail != 0.0 || pw.tdel != 0.0) c1.r(pw.fail);  // written only when set, as FS above
+                     if (pw.tdel != 0.0) c1.r(pw.tdel);
                      o += c1.str();
                      o += "$#       C         P      LCSS      LCSR        VP\n";
                      o += CardOut().r(pw.c).r(pw.p).i(pw.lcss).i(pw.lcsr).r(pw.vp).str();
@@ -170,6 +172,16 @@ void write_materials(const model::Model& m, std::string& o) {
                    },
                },
                mat);
+  // *MAT_ADD_EROSION: an excluded threshold (and every criterion not built) is written as EXCL.
+  for (const auto& a : m.add_erosions) {
+    o += a.title.empty() ? "*MAT_ADD_EROSION\n" : "*MAT_ADD_EROSION_TITLE\n" + heading(a.title);
+    const auto th = [&](const std::optional<Real>& v) { return v ? *v : a.excl; };
+    o += "$#     MID      EXCL    MXPRES     MNEPS    EFFEPS    VOLEPS    NUMFIP       NCS\n";
+    o += CardOut().i(a.mid).r(a.excl).r(th(a.mxpres)).r(a.excl).r(a.excl).r(a.excl).r(a.numfip).i(a.ncs).str();
+    o += "$#  MNPRES     SIGP1     SIGVM     MXEPS     EPSSH     SIGTH   IMPULSE    FAILTM\n";
+    o += CardOut().r(th(a.mnpres)).r(th(a.sigp1)).r(th(a.sigvm)).r(a.excl).r(a.excl).r(a.excl).r(a.excl)
+             .r(th(a.failtm)).str();
+  }
 }
 
 /// The card's row of the contact keyword table.

@@ -18,6 +18,7 @@
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/validate_model.hpp"
 #include "build_support.hpp"
+#include "erosion_setup.hpp"
 #include "initial_velocity.hpp"
 
 namespace slideline {
@@ -93,6 +94,7 @@ struct Builder {
     for (const auto& mat : m.materials)
       if (!mats.emplace(model::material_id(mat), &mat).second)
         throw InputError("duplicate material id " + std::to_string(model::material_id(mat)));
+    const auto add_erosions = add_erosions_by_material(m, mats);
 
     std::vector<Id> order;
     std::map<Id, PartElements> by_part;
@@ -138,20 +140,28 @@ struct Builder {
       else
         build_solid_part(part, laws, g, ssec.at(part.secid, part.src, "SECID of *PART"), ihq, qm, bv, damping);
       for (std::size_t b = first_block; b < setup.blocks.size(); ++b) setup.blocks[b]->set_material_id(part.mid);
-      if (laws.failure_strain > 0.0 && !laws.rigid) enable_erosion(part, laws, first_block);
+      const auto ait = add_erosions.find(part.mid);
+      const model::MatAddErosion* add = ait == add_erosions.end() ? nullptr : ait->second;
+      if (!laws.rigid) enable_erosion(part, laws, add, first_block);
     }
   }
 
-  /// Element erosion of the part's blocks from `first_block` on (element/element_erosion.hpp); a
-  /// block that cannot erode refuses, named by the part and the material's field.
-  void enable_erosion(const model::Part& part, const MaterialLaws& laws, std::size_t first_block) {
+  /// Element erosion of the part's blocks from `first_block` on (element/element_erosion.hpp), when
+  /// its material or a *MAT_ADD_EROSION of it sets a criterion (erosion_setup.hpp); a block that
+  /// cannot erode so refuses, named by the part and what sets the criterion.
+  void enable_erosion(const model::Part& part, const MaterialLaws& laws, const model::MatAddErosion* add,
+                      std::size_t first_block) {
+    const ErosionCriteria k = erosion_criteria(laws, add);
+    if (!k.any()) return;
     for (std::size_t b = first_block; b < setup.blocks.size(); ++b) {
       try {
-        setup.blocks[b]->enable_erosion(laws.failure_strain);
-      } catch (const NotImplementedError& e) {
-        throw NotImplementedError(describe(part.src) + ": *PART " + std::to_string(part.pid) + ": material " +
-                                  std::to_string(part.mid) + " (" + laws.keyword + ") has the failure strain " +
-                                  laws.failure_field + " = " + std::to_string(laws.failure_strain) + ": " + e.what());
+        setup.blocks[b]->enable_erosion(k);
+      } catch (const Error& e) {
+        const std::string what = describe(part.src) + ": *PART " + std::to_string(part.pid) + ": material " +
+                                 std::to_string(part.mid) + " (" + laws.keyword + ") erodes by " +
+                                 erosion_description(laws, add) + ": " + e.what();
+        if (dynamic_cast<const NotImplementedError*>(&e)) throw NotImplementedError(what);
+        throw InputError(what);
       }
     }
   }

@@ -58,7 +58,7 @@ MaterialLaws material_laws(const model::Material& material, std::span<const mode
             PiecewisePlasticity law = piecewise_law(m, curves);
             ShellPlasticity<PiecewisePlasticity> shell(law);
             return MaterialLaws{std::move(law), std::move(shell), false, "*MAT_PIECEWISE_LINEAR_PLASTICITY", m.fail,
-                                "FAIL"};
+                                "FAIL", m.tdel};
           },
           [](const model::MatNull& m) {
             return MaterialLaws{std::nullopt, NullShell(m.ro, m.ym, m.pr), false, "*MAT_NULL"};

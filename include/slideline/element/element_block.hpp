@@ -189,12 +189,13 @@ class ElementBlock : public MeshBlock {
   /// without plasticity.
   virtual PlasticityTotals plasticity_totals(const NodalFields& /*nodes*/) const { return {}; }
 
-  /// Element erosion (element_erosion.hpp): deletes the elements whose effective plastic strain
-  /// reaches `failure_strain` (> 0). Called once, before the first step. A block that cannot
-  /// erode refuses (NotImplementedError).
-  virtual void enable_erosion(Real failure_strain) {
-    throw NotImplementedError("part " + std::to_string(part_id()) + ": element erosion (failure strain " +
-                              std::to_string(failure_strain) + ") of " + kind() + " elements is not implemented");
+  /// Element erosion (element_erosion.hpp): deletes the elements that meet `criteria`
+  /// (erosion_criteria.hpp; at least one set). Called once, before the first step. A block that
+  /// cannot erode, or not by one of the criteria, refuses (NotImplementedError).
+  virtual void enable_erosion(const ErosionCriteria& criteria) {
+    (void)criteria;
+    throw NotImplementedError("part " + std::to_string(part_id()) + ": element erosion of " + kind() +
+                              " elements is not implemented");
   }
   /// The block's erosion bookkeeping; null for a block that cannot erode.
   virtual const ElementErosion* erosion() const { return nullptr; }

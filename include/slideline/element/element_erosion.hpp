@@ -17,20 +17,33 @@
 
 #include "slideline/core/parallel.hpp"
 #include "slideline/core/types.hpp"
+#include "slideline/element/erosion_criteria.hpp"
 
 namespace slideline {
 
 class ElementErosion {
  public:
-  /// True once enable() was called with a failure strain > 0.
-  bool active() const { return fail_ > 0.0; }
+  /// True once enable() was called with a criterion (erosion_criteria.hpp).
+  bool active() const { return active_; }
   /// The effective plastic strain (dimensionless) at which an element is deleted; 0: never.
   Real failure_strain() const { return fail_; }
+  /// What deletes an element.
+  const ErosionCriteria& criteria() const { return criteria_; }
+  /// The time deletions are stamped with (that of the force evaluation running).
+  Real time() const { return time_; }
 
   /// Enables erosion at the failure strain `fail` > 0 for `count` elements (`padded` >= count
   /// entries, for blocks that run whole batches of lanes).
   void enable(Real fail, Index count, Index padded) {
-    fail_ = fail;
+    ErosionCriteria c;
+    c.plastic_strain = fail;
+    enable(c, count, padded);
+  }
+  /// Enables erosion by `criteria` (at least one set) for `count` elements (`padded` >= count).
+  void enable(const ErosionCriteria& criteria, Index count, Index padded) {
+    criteria_ = criteria;
+    active_ = criteria.any();
+    fail_ = criteria.plastic_strain;
     count_ = count;
     deleted_at_.assign(static_cast<std::size_t>(padded), -1.0);
     held_internal_.assign(static_cast<std::size_t>(padded), 0.0);
@@ -62,9 +75,13 @@ class ElementErosion {
   /// Deletes it (stamping the time, booking what it held) when eps reaches the failure strain;
   /// else adds the step's work to what it holds.
   bool update(Index e, Index chunk, Real eps, Real internal, Real hourglass, Real dt) {
+    return update_failed(e, chunk, fail_ > 0.0 && eps >= fail_, internal, hourglass, dt);
+  }
+  /// update() with the verdict of the criteria given: `fails` deletes element e now.
+  bool update_failed(Index e, Index chunk, bool fails, Real internal, Real hourglass, Real dt) {
     const auto i = static_cast<std::size_t>(e);
     if (deleted_at_[i] >= 0.0) return true;
-    if (eps >= fail_) {
+    if (fails) {
       deleted_at_[i] = time_;
       chunk_internal_[static_cast<std::size_t>(chunk)] += held_internal_[i];
       chunk_hourglass_[static_cast<std::size_t>(chunk)] += held_hourglass_[i];
@@ -93,6 +110,8 @@ class ElementErosion {
   }
 
  private:
+  ErosionCriteria criteria_;
+  bool active_ = false;
   Real fail_ = 0.0;
   Real time_ = 0.0;
   Index count_ = 0;
@@ -105,7 +124,8 @@ class ElementErosion {
 /// One element of an element-by-element block (TetBlock, FullHexBlock) under erosion: a deleted
 /// element's corner forces are zeroed (`zero(e)`) and it adds nothing (R{}, step +max); a live one
 /// runs `forces(e)` (R: dt, visc, damp, power, failed), then is deleted when `strain(e)` (its
-/// plastic strain after the update) reaches the failure strain. Without erosion: `forces(e)`.
+/// plastic strain after the update) reaches the failure strain or its step r.dt falls below the
+/// criteria's min_step (TDEL). Without erosion: `forces(e)`.
 template <class R, class Forces, class Strain, class Zero>
 R eroding_element(ElementErosion& erosion, Index e, Real dt, Forces&& forces, Strain&& strain, Zero&& zero) {
   const auto deleted = [&] {
@@ -117,7 +137,10 @@ R eroding_element(ElementErosion& erosion, Index e, Real dt, Forces&& forces, St
   if (!erosion.active()) return forces(e);
   if (erosion.deleted(e)) return deleted();
   R r = forces(e);
-  if (!r.failed && erosion.update(e, e / kChunkSize, strain(e), r.power - r.visc - r.damp, 0.0, dt)) return deleted();
+  if (r.failed) return r;
+  const ErosionCriteria& k = erosion.criteria();
+  const bool fails = (k.plastic_strain > 0.0 && strain(e) >= k.plastic_strain) || (k.min_step > 0.0 && r.dt < k.min_step);
+  if (erosion.update_failed(e, e / kChunkSize, fails, r.power - r.visc - r.damp, 0.0, dt)) return deleted();
   return r;
 }
 

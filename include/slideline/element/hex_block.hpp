@@ -13,6 +13,7 @@
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
+#include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/element/hex_hourglass_stiffness.hpp"
 #include "slideline/material/solid_material.hpp"
@@ -79,10 +80,11 @@ class HexBlock final : public ElementBlock {
   std::span<const State> states() const { return state_; }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
-  /// ElementBlock::enable_erosion: the law's state must hold a plastic strain.
-  void enable_erosion(Real failure_strain) override {
-    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
-    erosion_.enable(failure_strain, element_count(), padded(element_count()));
+  /// ElementBlock::enable_erosion (refusals: solid_erosion::check).
+  void enable_erosion(const ErosionCriteria& criteria) override {
+    solid_erosion::check<State>(criteria, part_id_);
+    erosion_.enable(criteria, element_count(), padded(element_count()));
+    needs_stress_ = criteria.needs_stress();
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
 
@@ -245,7 +247,7 @@ class HexBlock final : public ElementBlock {
         gather_batch(nodes, e0, bt);
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
-        if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk);
+        if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk, kc.c);
         accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data(),
                            rescaling_.raw_steps());
         store_forces(f, e0, valid, out);
@@ -278,6 +280,7 @@ class HexBlock final : public ElementBlock {
   /// powers, the characteristic length and the viscous term of the step.
   struct BatchStress {
     Tensor3<Lanes> sigma;
+    Tensor3<Lanes> law;  ///< the law's stress alone: set only when an erosion criterion reads it
     Lanes visc, damp, qdt, len;
   };
 
@@ -338,13 +341,20 @@ class HexBlock final : public ElementBlock {
     }
   }
 
-  /// Erosion of a batch's elements after the law's update (element_erosion.hpp): a deleted
-  /// element's forces and powers are zeroed and its step is +inf (it votes none).
-  void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk) {
+  /// Erosion of a batch's elements after the law's update (solid_erosion::fails, the step as
+  /// accumulate() computes it with wave speed `c`): a deleted element's forces and powers are
+  /// zeroed and its step is +inf (it votes none).
+  void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
     const State& s = state_[e0 / kLanes];
+    const ErosionCriteria& crit = erosion_.criteria();
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
-      if (!erosion_.update(e0 + l, chunk, plastic_strain_of(s, l), internal, f.hg[l], dt)) continue;
+      const Real q = st.qdt[l];
+      Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c * c)) : 0.0;
+      if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
+      const SymTensor6 law = needs_stress_ ? sym6(st.law, l) : SymTensor6{};
+      const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e);
+      if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
       st.len[l] = std::numeric_limits<Real>::infinity();
@@ -377,6 +387,7 @@ class HexBlock final : public ElementBlock {
     const Tensor3<Lanes> d = hex8::rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
     BatchStress st;
     st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
+    if (needs_stress_) st.law = st.sigma;  // the law's stress, for *MAT_ADD_EROSION's thresholds
     Lanes trd = Lanes::Zero();
     for (int k = 0; k < 8; ++k) trd += bt.vx[k] * bt.bx[k] + bt.vy[k] * bt.by[k] + bt.vz[k] * bt.bz[k];
     st.len = bt.vol / hex8::max_face_area(bt.x, bt.y, bt.z);
@@ -572,6 +583,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;
   ElementErosion erosion_;  ///< inactive unless enable_erosion
+  bool needs_stress_ = false;  ///< an erosion criterion reads the law's stress (BatchStress::law)
   inline static const Lanes kLaneOffsets = Lanes::LinSpaced(kLanes, 0.0, kLanes - 1.0);
 
  public:

@@ -16,6 +16,7 @@
 #include "slideline/core/error.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/element_block.hpp"
+#include "slideline/element/shell_erosion.hpp"
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/shell_bt.hpp"
 #include "slideline/element/shell_c0tri.hpp"
@@ -91,12 +92,10 @@ class BasicShellBlock final : public ElementBlock {
   Real bulk_modulus() const override { return mat_.bulk_modulus(); }
   const StiffnessDamping& stiffness_damping() const { return damping_; }
 
-  /// ElementBlock::enable_erosion: quadrilaterals of a law with a plastic strain (erode()).
-  void enable_erosion(Real failure_strain) override {
-    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
-    if (nq_ < element_count())
-      throw NotImplementedError("part " + std::to_string(part_id_) + ": erosion of C0 triangles is not implemented");
-    erosion_.enable(failure_strain, element_count(), element_count());
+  /// ElementBlock::enable_erosion: quadrilaterals (erode(); refusals: shell_erosion::check).
+  void enable_erosion(const ErosionCriteria& criteria) override {
+    shell_erosion::check<State>(criteria, part_id_, nq_, element_count(), rule_.n);
+    erosion_.enable(criteria, element_count(), element_count());
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
@@ -255,14 +254,15 @@ class BasicShellBlock final : public ElementBlock {
     if (qhg_ > 0.0) out.p_hg = add_hourglass(e, gm, Xm, V, W, f, m);
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
+    out.dt = len / (qdt + std::sqrt(qdt * qdt + c * c));
+    if (!step_factor_.empty()) out.dt *= step_factor_[e];  // mass scaling (scale_element_masses)
     if (erosion_.active() && !out.bad &&
-        erode(e, chunk, out.p_all - out.p_visc - out.p_damp - out.p_hg, out.p_hg, dt)) {
+        erode(e, chunk, out.p_all - out.p_visc - out.p_damp - out.p_hg, out.p_hg, dt, out.dt)) {
       out.deleted = true;
+      out.dt = 0.0;
       store_element(e, shell_bt::NodeMat::Zero(), shell_bt::NodeMat::Zero(), corners);
       return out;
     }
-    out.dt = len / (qdt + std::sqrt(qdt * qdt + c * c));
-    if (!step_factor_.empty()) out.dt *= step_factor_[e];  // mass scaling (scale_element_masses)
     store_element(e, f, m, corners);
     return out;
   }
@@ -471,12 +471,11 @@ class BasicShellBlock final : public ElementBlock {
   }
 
   /// Erosion (element_erosion.hpp) of quadrilateral e after its update (`internal`, `hourglass`: its
-  /// powers): deleted when every through-thickness point's plastic strain reached the failure strain.
-  bool erode(Index e, Index chunk, Real internal, Real hourglass, Real dt) {
+  /// powers; `dt_e` its stable step); the verdict is shell_erosion::fails.
+  bool erode(Index e, Index chunk, Real internal, Real hourglass, Real dt, Real dt_e) {
     const State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
-    Real eps = plastic_strain_of(st[0]);
-    for (int ip = 1; ip < rule_.n; ++ip) eps = std::min(eps, plastic_strain_of(st[ip]));
-    return erosion_.update(e, chunk, eps, internal, hourglass, dt);
+    const bool gone = shell_erosion::fails(erosion_.criteria(), st, rule_.n, erosion_.time(), dt_e);
+    return erosion_.update_failed(e, chunk, gone, internal, hourglass, dt);
   }
 
   /// Writes element e's forces f and moments m (4 x 3, global) into its corner slots.

@@ -123,10 +123,17 @@ class TetBlock final : public ElementBlock {
     return chunks_.smallest_step_element(ids_);
   }
 
-  /// ElementBlock::enable_erosion: the law's state must hold a plastic strain (element_erosion.hpp).
-  void enable_erosion(Real failure_strain) override {
-    if constexpr (!requires(const State& s) { s.eps; }) ElementBlock::enable_erosion(failure_strain);
-    erosion_.enable(failure_strain, element_count(), element_count());
+  /// ElementBlock::enable_erosion: a failure strain needs a law whose state holds a plastic strain;
+  /// TDEL (the element's step) works with any law (element_erosion.hpp).
+  void enable_erosion(const ErosionCriteria& criteria) override {
+    if constexpr (!requires(const State& s) { s.eps; })
+      if (criteria.plastic_strain > 0.0)
+        throw NotImplementedError("part " + std::to_string(part_id()) + ": a failure strain needs a plastic law");
+    if (criteria.has_thresholds())
+      throw NotImplementedError("part " + std::to_string(part_id()) +
+                                ": the stress and time criteria of *MAT_ADD_EROSION on tetrahedra (ELFORM 10) are not implemented"
+                                " (one-point hexahedra and Belytschko-Tsay shells have them)");
+    erosion_.enable(criteria, element_count(), element_count());
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
 

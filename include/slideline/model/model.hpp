@@ -134,7 +134,8 @@ struct MatPlasticKinematic {
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY (type 24): J2 plasticity, isotropic hardening by the curve
 /// LCSS, the 8-point table EPS/ES or the tangent modulus ETAN; rate scaling by C/P or LCSR.
-/// FAIL > 0 erodes elements at that plastic strain; TDEL other than 0 is refused by the reader.
+/// FAIL > 0 erodes elements at that plastic strain; TDEL > 0 erodes elements whose stable step
+/// falls below it.
 struct MatPiecewiseLinearPlasticity {
   Id mid = 0;
   Real ro = 0.0;
@@ -148,6 +149,7 @@ struct MatPiecewiseLinearPlasticity {
   Id lcsr = 0;    ///< curve: yield-stress scale factor against strain rate
   Real vp = 0.0;  ///< 0: rate = total strain rate; 1: viscoplastic (rate = plastic strain rate)
   Real fail = 0.0;  ///< FAIL: failure strain, elements erode at this plastic strain (0: never)
+  Real tdel = 0.0;  ///< TDEL: elements whose stable step (time) falls below it erode (0: never)
   std::array<Real, 8> eps{};  ///< EPS1..EPS8 effective plastic strains of the table
   std::array<Real, 8> es{};   ///< ES1..ES8 yield stresses of the table
   std::string title;
@@ -165,6 +167,24 @@ struct MatNull {
   std::string title;
   Source src;
   bool operator==(const MatNull&) const = default;
+};
+
+/// *MAT_ADD_EROSION: failure criteria added to material MID (docs/keywords.md). Each threshold
+/// is empty when the deck excludes it (blank, 0 or EXCL); the reader refuses the criteria that are
+/// not built (the strain criteria, SIGTH / IMPULSE, curves, damage cards).
+struct MatAddErosion {
+  Id mid = 0;
+  std::optional<Real> mxpres;  ///< MXPRES: fails when the pressure (positive in compression) >= it
+  std::optional<Real> mnpres;  ///< MNPRES: fails when the pressure <= it
+  std::optional<Real> sigp1;   ///< SIGP1: fails when the largest principal stress >= it
+  std::optional<Real> sigvm;   ///< SIGVM: fails when the von Mises stress >= it
+  std::optional<Real> failtm;  ///< FAILTM: fails when the time >= it
+  Real numfip = 1.0;  ///< NUMFIP: failed points (> 0), a percentage of them (-100..0), |NUMFIP| - 100 points
+  int ncs = 1;        ///< NCS: thresholds that must hold at once
+  Real excl = 0.0;    ///< EXCL (kept for the writer)
+  std::string title;
+  Source src;
+  bool operator==(const MatAddErosion&) const = default;
 };
 
 using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid, MatPlasticKinematic,
@@ -557,6 +577,7 @@ struct Model {
   std::vector<SectionSolid> solid_sections;
   std::vector<SectionShell> shell_sections;
   std::vector<Material> materials;
+  std::vector<MatAddErosion> add_erosions;
   std::vector<Hourglass> hourglasses;
   ControlHourglass control_hourglass;
   ControlBulkViscosity bulk_viscosity;

@@ -22,6 +22,9 @@ struct MaterialLaws {
   /// *MAT_PIECEWISE_LINEAR_PLASTICITY; element/element_erosion.hpp); 0: never.
   Real failure_strain = 0.0;
   const char* failure_field = "";  ///< its field name, for messages: "FS"
+  /// TDEL of *MAT_PIECEWISE_LINEAR_PLASTICITY: elements whose stable step (time) falls below it
+  /// erode; 0: never.
+  Real min_step = 0.0;
 };
 
 /// The laws of `material`, its curves (*MAT_PIECEWISE_LINEAR_PLASTICITY's LCSS and LCSR) taken from

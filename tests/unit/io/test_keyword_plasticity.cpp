@@ -103,7 +103,17 @@ TEST(KeywordPlasticity, PiecewiseLinearTableCurveAndRefusals) {
                 .fail,
             0.2);
   EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,-1.0\n").find("field FAIL = -1.0"), std::string::npos);
-  EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,,1e-7\n").find("field TDEL"), std::string::npos);
+  // TDEL: the smallest element step kept (docs/solver.md, "Failure and erosion"); read, written
+  // back, handed to the laws; negative refused naming the field and value.
+  const auto tdel = read_keyword_string("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,,1e-7\n", "p.k", nullptr);
+  EXPECT_EQ(std::get<model::MatPiecewiseLinearPlasticity>(tdel.materials.at(0)).tdel, 1e-7);
+  EXPECT_EQ(material_laws(tdel.materials.at(0)).min_step, 1e-7);
+  EXPECT_EQ(std::get<model::MatPiecewiseLinearPlasticity>(
+                read_keyword_string(write_keyword_string(tdel), "w.k", nullptr).materials.at(0))
+                .tdel,
+            1e-7);
+  EXPECT_NE(thrown("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,0.0,,-1e-7\n").find("p.k:2: *MAT_024: card 1 field TDEL = -1e-7"),
+            std::string::npos);
   // LS-DYNA's default FAIL (1e21, as deck writers print it) and 0 both mean no failure: read as
   // the blank card.
   const auto blank = read_keyword_string("*MAT_024\n8,7.8e-9,2.0e+5,0.3,200.0,10.0\n", "p.k", nullptr);

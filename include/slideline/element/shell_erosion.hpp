@@ -1,0 +1,58 @@
+#pragma once
+/// Erosion of Belytschko-Tsay shells (element_erosion.hpp, erosion_criteria.hpp): the checks a
+/// shell block makes when erosion is enabled, and the verdict on one element from the laws'
+/// states at its through-thickness points. Kept apart from shell_block.hpp (its size).
+#include <array>
+#include <string>
+
+#include "slideline/core/error.hpp"
+#include "slideline/element/cell_output.hpp"
+#include "slideline/element/erosion_criteria.hpp"
+
+namespace slideline::shell_erosion {
+
+/// Refuses what a shell part (`part_id`, `quads` of `elements` quadrilaterals, `points`
+/// through-thickness points) cannot erode by: a failure strain without a plastic law, a stress
+/// threshold on a law without stress (*MAT_NULL), C0 triangles, NUMFIP beyond the points.
+template <class State>
+void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, int points) {
+  const std::string part = "part " + std::to_string(part_id);
+  if constexpr (!requires(const State& s) { s.eps; })
+    if (k.plastic_strain > 0.0) throw NotImplementedError(part + ": a failure strain needs a plastic law");
+  if constexpr (!requires(const State& s) { s.sigma; })
+    if (k.needs_stress())
+      throw NotImplementedError(part + ": its material carries no stress, so a stress criterion of"
+                                " *MAT_ADD_EROSION can never hold");
+  if (quads < elements) throw NotImplementedError(part + ": erosion of C0 triangles is not implemented");
+  if (k.has_thresholds() && k.points_needed(points) > points)
+    throw InputError(part + ": NUMFIP of *MAT_ADD_EROSION asks for " + std::to_string(k.points_needed(points)) +
+                     " failed through-thickness points, but its section has " + std::to_string(points));
+}
+
+/// Whether a quadrilateral goes, from the states `st` of its `points` through-thickness points
+/// after the update, at time `t` with stable step `dt_e`: every point's plastic strain reached
+/// the failure strain; or NUMFIP points meet NCS thresholds (each point's law stress in the
+/// element frame, sigma_zz = 0); or dt_e < TDEL.
+template <class State>
+bool fails(const ErosionCriteria& k, const State* st, int points, Real t, Real dt_e) {
+  if (k.plastic_strain > 0.0) {
+    Real eps = plastic_strain_of(st[0]);
+    for (int ip = 1; ip < points; ++ip) eps = std::min(eps, plastic_strain_of(st[ip]));
+    if (eps >= k.plastic_strain) return true;
+  }
+  if (k.has_thresholds()) {
+    int failed = 0;
+    for (int ip = 0; ip < points; ++ip) {
+      std::array<Real, 6> s{};
+      if constexpr (requires { st[ip].sigma; }) {
+        const auto& p = st[ip].sigma;  // local xx, yy, xy, yz, xz
+        s = {p[0], p[1], 0.0, p[2], p[3], p[4]};
+      }
+      failed += k.point_fails(s, t) ? 1 : 0;
+    }
+    if (failed >= k.points_needed(points)) return true;
+  }
+  return k.min_step > 0.0 && dt_e < k.min_step;
+}
+
+}  // namespace slideline::shell_erosion

@@ -1,0 +1,34 @@
+#pragma once
+/// Erosion of one-point hexahedra (element_erosion.hpp, erosion_criteria.hpp): the checks the
+/// block makes when erosion is enabled and the verdict on one element. Kept apart from
+/// hex_block.hpp (its size).
+#include <string>
+
+#include "slideline/core/error.hpp"
+#include "slideline/element/cell_output.hpp"
+#include "slideline/element/erosion_criteria.hpp"
+
+namespace slideline::solid_erosion {
+
+/// Refuses what a part (`part_id`) of one-point solids of law state `State` cannot erode by: a
+/// failure strain without a plastic law, NUMFIP asking for more than the one point.
+template <class State>
+void check(const ErosionCriteria& k, Id part_id) {
+  const std::string part = "part " + std::to_string(part_id);
+  if constexpr (!requires(const State& s) { s.eps; })
+    if (k.plastic_strain > 0.0) throw NotImplementedError(part + ": a failure strain needs a plastic law");
+  if (k.has_thresholds() && k.points_needed(1) > 1)
+    throw InputError(part + ": NUMFIP of *MAT_ADD_EROSION asks for " + std::to_string(k.points_needed(1)) +
+                     " failed points, but a one-point hexahedron has 1");
+}
+
+/// Whether an element goes, after the law's update, at time `t`: its plastic strain `eps` reached
+/// the failure strain; or NCS thresholds hold for its law stress `law`; or its stable step
+/// `dt_e` (read only when TDEL is set) is below TDEL.
+inline bool fails(const ErosionCriteria& k, Real eps, const SymTensor6& law, Real t, Real dt_e) {
+  if (k.plastic_strain > 0.0 && eps >= k.plastic_strain) return true;
+  if (k.has_thresholds() && k.point_fails(law, t)) return true;
+  return k.min_step > 0.0 && dt_e < k.min_step;
+}
+
+}  // namespace slideline::solid_erosion
