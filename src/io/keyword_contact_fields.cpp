@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 
+#include "field_rules.hpp"
 #include "keyword_card.hpp"
 #include "slideline/core/error.hpp"
 
@@ -15,24 +16,11 @@ namespace {
 
 using model::ContactType;
 using model::Enforcement;
-
-/// What happens to a field that is not at its default.
-enum class Use : std::uint8_t {
-  honoured,  ///< read into the model and acted on elsewhere: not checked here
-  refuse,    ///< changes the physics and is not implemented: NotImplementedError
-  output,    ///< only tunes output this code does not write: warning
-  speed,     ///< only tunes speed (search cadence, sorting): warning
-  inert,     ///< acts only on a feature this code refuses or lacks (says which): warning
-  unused,    ///< a field the manual leaves unused
-  step,      ///< only chooses the time step (the stable step is always respected): warning
-};
-
-struct Rule {
-  const char* name;
-  Real dflt;  ///< the manual's default (what 0 and blank mean)
-  Use use;
-  const char* what;
-};
+using detail::check_card;
+using detail::check_remaining;
+using detail::OptionalCard;
+using detail::Rule;
+using detail::Use;
 
 std::string num(Real v) {
   char buf[32];
@@ -63,19 +51,6 @@ void act(const Context& ctx, int line, std::string_view keyword, std::string_vie
     case Use::honoured:
     case Use::unused:
       return;
-  }
-}
-
-/// Applies `rules` (one per field, in column order) to card `l`.
-void check_card(const Context& ctx, const Line& l, std::string_view keyword, std::string_view card,
-                std::span<const Rule> rules) {
-  const Card k(ctx, l, keyword, kStandard);
-  for (std::size_t i = 0; i < rules.size(); ++i) {
-    const Rule& r = rules[i];
-    if (r.use == Use::honoured || r.use == Use::unused) continue;
-    Real v = r.dflt;
-    k.get_or_default(static_cast<int>(i), r.name, v);
-    if (v != r.dflt) act(ctx, l.number, keyword, card, r, v);
   }
 }
 
@@ -141,10 +116,6 @@ constexpr Rule kCardF[] = {
     {"TETFAC", 0, Use::inert, "tetrahedron volume factor (SOFT = 2 only, which is refused)"},
 };
 
-struct OptionalCard {
-  const char* name;
-  std::span<const Rule> rules;
-};
 constexpr OptionalCard kOptional[] = {{"optional card A", kCardA}, {"optional card B", kCardB},
                                       {"optional card C", kCardC}, {"optional card D", kCardD},
                                       {"optional card E", kCardE}, {"optional card F", kCardF}};
@@ -205,18 +176,6 @@ constexpr OptionalCard kControl[] = {{"card 2", kControl2}, {"card 3", kControl3
 
 /// Applies the rules of `cards` to the cards left in `b`, one rule set per card; a non-blank card
 /// beyond them is refused.
-void check_remaining(const Context& ctx, Block& b, std::span<const OptionalCard> cards) {
-  std::size_t k = 0;
-  while (const Line* l = b.take()) {
-    if (k < cards.size()) {
-      check_card(ctx, *l, b.keyword, cards[k].name, cards[k].rules);
-      ++k;
-    } else if (!trim(l->text).empty()) {
-      throw NotImplementedError(ctx.where(l->number) + b.keyword + ": a card after " +
-                                std::string(cards.back().name) + " is not read; remove it");
-    }
-  }
-}
 
 /// Refuses (or warns about) `name` = v on card `l` when v differs from `dflt`.
 void field(const Context& ctx, const Line* l, std::string_view kw, const char* card, Real v, const Rule& r) {
@@ -527,93 +486,33 @@ void read_control_contact_cards(const Context& ctx, Block& b, model::ControlCont
 
 }  // namespace slideline::keyword
 
-// The control cards whose fields change the physics (issue 21): *CONTROL_SHELL, *CONTROL_ACCURACY,
-// and *CONTROL_SOLID (*CONTROL_BULK_VISCOSITY: keyword_controls.cpp). Same rules as above: a field at
-// its manual default passes, one that would change the answer is refused, one that acts only on
-// what this code refuses or lacks warns. docs/keywords.md, "Control and output", is the table.
-namespace slideline::keyword {
-namespace {
+namespace slideline::keyword::detail {
 
-constexpr Rule kShell1[] = {
-    {"WRPANG", 20, Use::output, "shell warpage angle above which a warning is printed"},
-    {"ESORT", 0, Use::honoured, ""},  // stored (Model::shell_esort); 2 refused where triangles run
-    {"IRNXX", -1, Use::inert, "shell normal update of Hughes-Liu shells; the shells here are Belytschko-Tsay"},
-    {"ISTUPD", 0, Use::refuse, "shell thickness change with membrane strain"},
-    {"THEORY", 2, Use::refuse, "default shell formulation; 2 = Belytschko-Tsay is the one here"},
-    {"BWC", 2, Use::refuse, "warping stiffness of Belytschko-Tsay shells: 1 = Belytschko-Wong-Chiang"},
-    {"MITER", 1, Use::refuse, "plane-stress plasticity iteration"},
-    {"PROJ", 0, Use::refuse, "projection of the warping stiffness"},
-};
-constexpr Rule kShell2[] = {
-    {"ROTASCL", 1, Use::refuse, "rotary inertia scale factor of shells"},
-    {"INTGRD", 0, Use::refuse, "through-thickness rule: 1 = Lobatto (Gauss here)"},
-    {"LAMSHT", 0, Use::refuse, "laminated shell theory"},
-    {"CSTYP6", 1, Use::inert, "coordinate system of shell formulation 6, which is refused"},
-    {"TSHELL", 0, Use::inert, "thermal shell option; the run is not thermal"},
-};
-constexpr Rule kShell3[] = {
-    {"PSSTUPD", 0, Use::refuse, "part set of the shell thickness update"},
-    {"SIDT4TU", 0, Use::refuse, "part set of the type 4 thickness update"},
-    {"CNTCO", 0, Use::refuse, "contact reference surface from the shell offset"},
-    {"ITSFLG", 0, Use::refuse, "initial transverse shear stress"},
-    {"IRQUAD", 0, Use::refuse, "in-plane integration rule of quadratic shells"},
-    {"W-MODE", 0, Use::refuse, "failure by the W-mode"},
-    {"STRETCH", 0, Use::refuse, "failure by stretch"},
-    {"ICRQ", 0, Use::refuse, "continuous thickness and strain across elements"},
-};
-constexpr Rule kShell4[] = {
-    {"NFAIL1", 0, Use::refuse, "failure of badly shaped shells"},
-    {"NFAIL4", 0, Use::refuse, "failure of badly shaped shells"},
-    {"PSNFAIL", 0, Use::refuse, "part set of NFAIL1 / NFAIL4"},
-    {"KEEPCS", 0, Use::refuse, "keep the contact segments of failed shells"},
-    {"DELFR", 0, Use::refuse, "deletion of shells whose neighbours failed"},
-    {"DRCPSID", 0, Use::refuse, "part set of the drilling rotation constraint"},
-    {"DRCPRM", 1, Use::refuse, "drilling rotation constraint scale"},
-    {"INTPERR", 0, Use::refuse, "error on bad integration points"},
-};
-constexpr OptionalCard kShellCards[] = {{"card 1", kShell1}, {"card 2", kShell2}, {"card 3", kShell3},
-                                        {"card 4", kShell4}};
-
-constexpr Rule kAccuracy1[] = {
-    // OSU = 1 asks for objective (second-order) stress updates under large rotations; every update
-    // here is objective to all orders already (hyperelastic laws from F, J2 on the Green-Naghdi rate
-    // with R from the polar decomposition of F, shells in their co-rotational frame), for every part.
-    {"OSU", 0, Use::honoured, ""},
-    {"INN", 1, Use::refuse, "invariant node numbering of shells and solids"},
-    {"PIDOSU", 0, Use::honoured, ""},
-    {"IACC", 0, Use::refuse, "implicit accuracy option (also changes some explicit materials)"},
-    {"EXACC", 0, Use::refuse, "explicit accuracy parameter"},
-};
-constexpr OptionalCard kAccuracyCards[] = {{"card 1", kAccuracy1}};
-
-constexpr Rule kSolid1[] = {
-    {"ESORT", 0, Use::refuse,
-     "sorting of degenerate solids (LS-DYNA then runs pentahedra as ELFORM 15, not implemented; with ESORT 0 "
-     "they run as collapsed hexahedra)"},
-    {"FMATRX", 0, Use::refuse, "method of the deformation gradient"},
-    {"NIPTETS", 4, Use::inert, "integration points of tetrahedra, which are refused"},
-    {"SWLOCL", 1, Use::output, "output system of spot weld solids"},
-    {"PSFAIL", 0, Use::refuse, "part set of solid failure"},
-    {"T10JTOL", 0, Use::inert, "Jacobian tolerance of 10-node tetrahedra, which are refused"},
-    {"ICOH", 0, Use::refuse, "cohesive element deletion"},
-    {"TET13K", 0, Use::inert, "formulation 13 tetrahedra, which are refused"},
-};
-constexpr Rule kSolid2[] = {
-    {"PM1", 0, Use::refuse, "solid element permutation"}, {"PM2", 0, Use::refuse, "solid element permutation"},
-    {"PM3", 0, Use::refuse, "solid element permutation"}, {"PM4", 0, Use::refuse, "solid element permutation"},
-    {"PM5", 0, Use::refuse, "solid element permutation"}, {"PM6", 0, Use::refuse, "solid element permutation"},
-    {"PM7", 0, Use::refuse, "solid element permutation"}, {"PM8", 0, Use::refuse, "solid element permutation"},
-};
-constexpr OptionalCard kSolidCards[] = {{"card 1", kSolid1}, {"card 2", kSolid2}};
-
-}  // namespace
-
-void check_control_fields(const Context& ctx, Block& b) {
-  const std::string_view kw = b.keyword;
-  const std::span<const OptionalCard> cards = kw == "*CONTROL_SHELL"      ? std::span<const OptionalCard>(kShellCards)
-                                              : kw == "*CONTROL_ACCURACY" ? std::span<const OptionalCard>(kAccuracyCards)
-                                                                          : std::span<const OptionalCard>(kSolidCards);
-  check_remaining(ctx, b, cards);
+/// Applies `rules` (one per field, in column order) to card `l`.
+void check_card(const Context& ctx, const Line& l, std::string_view keyword, std::string_view card,
+                std::span<const Rule> rules) {
+  const Card k(ctx, l, keyword, kStandard);
+  for (std::size_t i = 0; i < rules.size(); ++i) {
+    const Rule& r = rules[i];
+    if (r.use == Use::honoured || r.use == Use::unused) continue;
+    Real v = r.dflt;
+    k.get_or_default(static_cast<int>(i), r.name, v);
+    if (v != r.dflt) act(ctx, l.number, keyword, card, r, v);
+  }
 }
 
-}  // namespace slideline::keyword
+
+void check_remaining(const Context& ctx, Block& b, std::span<const OptionalCard> cards) {
+  std::size_t k = 0;
+  while (const Line* l = b.take()) {
+    if (k < cards.size()) {
+      check_card(ctx, *l, b.keyword, cards[k].name, cards[k].rules);
+      ++k;
+    } else if (!trim(l->text).empty()) {
+      throw NotImplementedError(ctx.where(l->number) + b.keyword + ": a card after " +
+                                std::string(cards.back().name) + " is not read; remove it");
+    }
+  }
+}
+
+}  // namespace slideline::keyword::detail

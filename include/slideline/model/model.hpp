@@ -14,6 +14,7 @@
 
 #include "slideline/core/types.hpp"
 #include "slideline/model/initial_velocity.hpp"
+#include "slideline/model/materials.hpp"
 #include "slideline/model/source.hpp"
 
 namespace slideline::model {
@@ -75,120 +76,6 @@ struct SectionShell {
   Source src;
   bool operator==(const SectionShell&) const = default;
 };
-
-/// *MAT_ELASTIC (type 1)
-struct MatElastic {
-  Id mid = 0;
-  Real ro = 0.0;  ///< density
-  Real e = 0.0;   ///< Young's modulus
-  Real pr = 0.0;  ///< Poisson ratio
-  std::string title;
-  Source src;
-  bool operator==(const MatElastic&) const = default;
-};
-
-/// *MAT_MOONEY-RIVLIN_RUBBER (type 27): W = A(I1-3) + B(I2-3) + C(I3^-2 - 1) + D(I3-1)^2.
-struct MatMooneyRivlin {
-  Id mid = 0;
-  Real ro = 0.0;
-  Real pr = 0.0;
-  Real a = 0.0;
-  Real b = 0.0;
-  std::string title;
-  Source src;
-  bool operator==(const MatMooneyRivlin&) const = default;
-};
-
-/// *MAT_RIGID (type 20). E and PR are used only for contact stiffness and the time step.
-struct MatRigid {
-  Id mid = 0;
-  Real ro = 0.0;
-  Real e = 0.0;
-  Real pr = 0.0;
-  Real cmo = 0.0;  ///< 0 = no constraints; +1 = constrain the body's global translations/rotations
-  int con1 = 0;    ///< translational constraint code (with cmo = +1): 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 xyz
-  int con2 = 0;    ///< rotational constraint code (with cmo = +1), same coding
-  std::string title;
-  Source src;
-  bool operator==(const MatRigid&) const = default;
-};
-
-/// *MAT_PLASTIC_KINEMATIC (type 3): J2 plasticity, bilinear hardening mixed isotropic/kinematic by
-/// BETA, Cowper-Symonds rate scaling (SRC, SRP). FS (failure strain) and VP = 1 are refused by
-/// the reader.
-struct MatPlasticKinematic {
-  Id mid = 0;
-  Real ro = 0.0;
-  Real e = 0.0;
-  Real pr = 0.0;
-  Real sigy = 0.0;  ///< initial yield stress
-  Real etan = 0.0;  ///< tangent modulus
-  Real beta = 0.0;  ///< 0 kinematic, 1 isotropic hardening
-  Real src_c = 0.0;  ///< SRC: Cowper-Symonds C (0: no rate effect)
-  Real srp = 0.0;    ///< SRP: Cowper-Symonds P
-  Real fs = 0.0;     ///< FS: failure strain, elements erode at this plastic strain (0: never)
-  std::string title;
-  Source src;
-  bool operator==(const MatPlasticKinematic&) const = default;
-};
-
-/// *MAT_PIECEWISE_LINEAR_PLASTICITY (type 24): J2 plasticity, isotropic hardening by the curve
-/// LCSS, the 8-point table EPS/ES or the tangent modulus ETAN; rate scaling by C/P or LCSR.
-/// FAIL > 0 erodes elements at that plastic strain; TDEL > 0 erodes elements whose stable step
-/// falls below it.
-struct MatPiecewiseLinearPlasticity {
-  Id mid = 0;
-  Real ro = 0.0;
-  Real e = 0.0;
-  Real pr = 0.0;
-  Real sigy = 0.0;
-  Real etan = 0.0;
-  Real c = 0.0;   ///< Cowper-Symonds C (0: no Cowper-Symonds scaling)
-  Real p = 0.0;   ///< Cowper-Symonds P
-  Id lcss = 0;    ///< curve: yield stress against effective plastic strain (0: table or ETAN)
-  Id lcsr = 0;    ///< curve: yield-stress scale factor against strain rate
-  Real vp = 0.0;  ///< 0: rate = total strain rate; 1: viscoplastic (rate = plastic strain rate)
-  Real fail = 0.0;  ///< FAIL: failure strain, elements erode at this plastic strain (0: never)
-  Real tdel = 0.0;  ///< TDEL: elements whose stable step (time) falls below it erode (0: never)
-  std::array<Real, 8> eps{};  ///< EPS1..EPS8 effective plastic strains of the table
-  std::array<Real, 8> es{};   ///< ES1..ES8 yield stresses of the table
-  std::string title;
-  Source src;
-  bool operator==(const MatPiecewiseLinearPlasticity&) const = default;
-};
-
-/// *MAT_NULL (type 9): no deviatoric stiffness; on shells a surface with mass only. YM and PR set
-/// the contact stiffness and time step of such shells.
-struct MatNull {
-  Id mid = 0;
-  Real ro = 0.0;
-  Real ym = 0.0;
-  Real pr = 0.0;
-  std::string title;
-  Source src;
-  bool operator==(const MatNull&) const = default;
-};
-
-/// *MAT_ADD_EROSION: failure criteria added to material MID (docs/keywords.md). Each threshold
-/// is empty when the deck excludes it (blank, 0 or EXCL); the reader refuses the criteria that are
-/// not built (the strain criteria, SIGTH / IMPULSE, curves, damage cards).
-struct MatAddErosion {
-  Id mid = 0;
-  std::optional<Real> mxpres;  ///< MXPRES: fails when the pressure (positive in compression) >= it
-  std::optional<Real> mnpres;  ///< MNPRES: fails when the pressure <= it
-  std::optional<Real> sigp1;   ///< SIGP1: fails when the largest principal stress >= it
-  std::optional<Real> sigvm;   ///< SIGVM: fails when the von Mises stress >= it
-  std::optional<Real> failtm;  ///< FAILTM: fails when the time >= it
-  Real numfip = 1.0;  ///< NUMFIP: failed points (> 0), a percentage of them (-100..0), |NUMFIP| - 100 points
-  int ncs = 1;        ///< NCS: thresholds that must hold at once
-  Real excl = 0.0;    ///< EXCL (kept for the writer)
-  std::string title;
-  Source src;
-  bool operator==(const MatAddErosion&) const = default;
-};
-
-using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid, MatPlasticKinematic,
-                              MatPiecewiseLinearPlasticity, MatNull>;
 
 /// *HOURGLASS
 struct Hourglass {
