@@ -170,6 +170,24 @@ std::vector<KeyRef> sorted_by_key(const std::vector<Candidate>& cand) {
   return order;
 }
 
+/// Per candidate, 1 when it is a solid face whose nodes another solid face among the candidates
+/// also has (an interior face of the solids), else 0.
+std::vector<char> interior_solid_faces(const std::vector<Candidate>& cand) {
+  std::vector<char> interior(cand.size(), 0);
+  const std::vector<KeyRef> order = sorted_by_key(cand);
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    int solids = 0;
+    for (; j < order.size() && order[j].key == order[i].key; ++j)
+      solids += cand[order[j].i].kind == SegmentKind::solid_face;
+    if (solids > 1)
+      for (std::size_t k = i; k < j; ++k)
+        if (cand[order[k].i].kind == SegmentKind::solid_face) interior[order[k].i] = 1;
+    i = j;
+  }
+  return interior;
+}
+
 }  // namespace
 
 Surface build_surface_from_parts(MeshBlocks blocks, const NodalFields& nodes,
@@ -187,24 +205,12 @@ Surface build_surface_from_parts(MeshBlocks blocks, const NodalFields& nodes,
       collect(blocks, nodes, context, true,
               [&](const MeshBlock& b) { return wanted.count(b.part_id()) != 0; });
 
-  // A solid face is interior when another solid face of these parts has its nodes.
-  // Shells are never interior: a shell on a solid's face is a surface of its own.
-  std::vector<char> keep(cand.size(), 1);
-  const std::vector<KeyRef> order = sorted_by_key(cand);
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i;
-    int solids = 0;
-    for (; j < order.size() && order[j].key == order[i].key; ++j)
-      solids += cand[order[j].i].kind == SegmentKind::solid_face;
-    if (solids > 1)
-      for (std::size_t k = i; k < j; ++k)
-        if (cand[order[k].i].kind == SegmentKind::solid_face) keep[order[k].i] = 0;
-    i = j;
-  }
-
+  // The exterior: every candidate but the interior solid faces (shells are never interior: a
+  // shell on a solid's face is a surface of its own).
+  const std::vector<char> interior = interior_solid_faces(cand);
   Surface surf;
   for (std::size_t i = 0; i < cand.size(); ++i)
-    if (keep[i]) push_segment(surf, blocks, cand[i], cand[i].conn);
+    if (!interior[i]) push_segment(surf, blocks, cand[i], cand[i].conn);
   if (surf.segment_count() == 0)
     throw InputError(context + ": the parts have no exterior face or shell");
   build_surface_adjacency(surf);
@@ -218,21 +224,10 @@ Surface interior_faces_of_parts(MeshBlocks blocks, const NodalFields& nodes, std
       collect(blocks, nodes, context, true, [&](const MeshBlock& b) { return wanted.count(b.part_id()) != 0; });
   // The complement of build_surface_from_parts' rule: the solid faces another solid face of
   // these parts shares, each kept with its own element and orientation.
-  std::vector<char> keep(cand.size(), 0);
-  const std::vector<KeyRef> order = sorted_by_key(cand);
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i;
-    int solids = 0;
-    for (; j < order.size() && order[j].key == order[i].key; ++j)
-      solids += cand[order[j].i].kind == SegmentKind::solid_face;
-    if (solids > 1)
-      for (std::size_t k = i; k < j; ++k)
-        if (cand[order[k].i].kind == SegmentKind::solid_face) keep[order[k].i] = 1;
-    i = j;
-  }
+  const std::vector<char> interior = interior_solid_faces(cand);
   Surface surf;
   for (std::size_t i = 0; i < cand.size(); ++i)
-    if (keep[i]) push_segment(surf, blocks, cand[i], cand[i].conn);
+    if (interior[i]) push_segment(surf, blocks, cand[i], cand[i].conn);
   return surf;
 }
 
