@@ -81,6 +81,7 @@ void Simulation::initialize() {
   const Real dt_stable = votes_.stable();
   if (!(dt_stable > 0.0) || !std::isfinite(dt_stable))
     throw InputError("simulation: no stable time step (is there at least one element?)");
+  last_vote_ = dt_stable;
   initialized_ = true;
 }
 
@@ -336,6 +337,12 @@ bool Simulation::step() {
   }
   advance(plan);
   votes_ = assemble_forces();  // the forces at t^{n+1}: the next cycle's loads and stable step
+  // Once every element has eroded (and no interface votes) nothing bounds the step: the last
+  // vote is kept, so the nodes left flying (with their loads and damping) are integrated as they
+  // were, not in one step to the next output time (docs/solver.md, "Failure and erosion").
+  // (A vote of the largest finite number, or infinity, is no vote: exchange.hpp.)
+  if (votes_.stable() < std::numeric_limits<Real>::max()) last_vote_ = votes_.stable();
+  else votes_.elements = last_vote_;
   if (rescaling_.active()) check_added_mass_in_run();  // ENDMAS, as the masses change
   return true;
 }

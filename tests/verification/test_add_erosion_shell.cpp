@@ -182,3 +182,55 @@ TEST(AddErosionShell, NumfipCountsThroughThicknessPoints) {
 }
 
 }  // namespace slideline
+
+namespace slideline {
+
+// Once the only element has eroded nothing votes a step: the last vote is held (before the fix
+// the next step ran to the end time, the free tip nodes' damped spin-up was integrated in one step
+// of 0.87 and the balance error reached 8.8 % of the external work). One elastic shell clamped at
+// x = 0 (5 points, t = 0.05), end moment about y of 0.01 ramped over 0.25 on the tip nodes, mass
+// damping alpha = 20, SIGVM = 10 (met in bending at M = 10 b t^2 / (6 0.9062) ~ 0.0046). After the
+// deletion each tip node spins up under its moment M/2 against the damping torque alpha I omega:
+// omega_y -> M / (2 alpha I) (the velocity update's fixed point, exact for any step), reached to
+// e^{-alpha (t - t_d)} ~ 1e-7 by the end.
+TEST(AddErosionShell, FreedNodesKeepTheLastStepAndTheBalance) {
+  const char* deck =
+      "*KEYWORD\n*CONTROL_TERMINATION\n2.0\n*SECTION_SHELL\n1,2,1.0,5\n0.05,0.05,0.05,0.05\n*MAT_ELASTIC\n"
+      "1,1.0,1.0e4,0.0\n*MAT_ADD_EROSION\n1\n,,10.0\n*PART\nplate\n1,1,1\n*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n"
+      "4,0,1,0\n*ELEMENT_SHELL\n1,1,1,2,3,4\n*BOUNDARY_SPC_NODE\n1,0,1,1,1,1,1,1\n4,0,1,1,1,1,1,1\n"
+      "*DEFINE_CURVE\n1\n0,0\n0.25,0.01\n1.0,0.01\n*LOAD_NODE_POINT\n2,6,1,0.5\n3,6,1,0.5\n*DAMPING_GLOBAL\n"
+      "0,20.0\n*END\n";
+  auto sim = build_simulation(read_keyword_string(deck, "freed.k"));
+  Real dt_before = 0.0, dt_max_after = 0.0, dt_min_after = 1e30, t_prev = 0.0;
+  bool more = true;
+  while (more) {
+    more = sim->step();
+    const Real dt = sim->time() - t_prev;
+    t_prev = sim->time();
+    const ElementErosion* er = std::as_const(*sim->blocks().at(0)).erosion();
+    if (er->deletion_times()[0] < 0.0 || sim->time() <= er->deletion_times()[0]) {
+      if (dt > 0.0) dt_before = dt;
+    } else if (more && dt > 0.0) {
+      dt_max_after = std::max(dt_max_after, dt);
+      dt_min_after = std::min(dt_min_after, dt);
+    }
+  }
+  const ElementErosion* er = std::as_const(*sim->blocks().at(0)).erosion();
+  const Real td = er->deletion_times()[0];
+  ASSERT_GT(td, 0.25);
+  ASSERT_LT(td, 1.9);
+  std::printf("deleted at %.5f; step before %.4g, after %.4g..%.4g\n", td, dt_before, dt_min_after, dt_max_after);
+  EXPECT_LE(dt_max_after, dt_before * 1.001);  // no step runs to the end time (the element vote moves by ~1e-4 a step)
+  EXPECT_GT(dt_min_after, 0.5 * dt_before);           // (the last step before an output may be shorter)
+  const NodalFields& n = sim->nodes();
+  for (Index i : {Index{1}, Index{2}}) {
+    const Real w = 0.005 / (20.0 * n.rot_inertia[i]);
+    std::printf("node %d: omega_y %.9g, closed form %.9g\n", int(i + 1), n.omega.y[i], w);
+    EXPECT_NEAR(n.omega.y[i], w, 1e-5 * std::abs(w));
+  }
+  const EnergyReport& e = sim->energy();
+  std::printf("balance error %.3g of the external work %.4g\n", e.balance_error(), e.external);
+  EXPECT_LT(std::abs(e.balance_error()), 1e-6 * e.external);
+}
+
+}  // namespace slideline

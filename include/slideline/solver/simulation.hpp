@@ -208,6 +208,7 @@ class Simulation {
   Vec3Field m_total_;
   std::vector<NodalEnergySums> chunk_e_;  // energy partial sums per chunk
   StepVotes votes_;  // the stable step the forces at t_ vote for
+  Real last_vote_ = 0.0;  // the last finite stable vote (held once every element has eroded)
   Real t_ = 0.0;
   Real dt_ = 0.0;    // last step t^{n} - t^{n-1}
   Real dt_initial_ = 0.0;  // TSSFAC x the elements' stable step at t = 0 (StepTimes::dt_initial)
