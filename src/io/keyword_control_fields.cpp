@@ -26,7 +26,7 @@ constexpr Rule kShell1[] = {
 };
 constexpr Rule kShell2[] = {
     {"ROTASCL", 1, Use::refuse, "rotary inertia scale factor of shells"},
-    {"INTGRD", 0, Use::refuse, "through-thickness rule: 1 = Lobatto (Gauss here)"},
+    {"INTGRD", 0, Use::honoured, ""},  // stored (Model::shell_intgrd): 0 Gauss, 1 Lobatto
     {"LAMSHT", 0, Use::refuse, "laminated shell theory"},
     {"CSTYP6", 1, Use::inert, "coordinate system of shell formulation 6, which is refused"},
     {"TSHELL", 0, Use::inert, "thermal shell option; the run is not thermal"},

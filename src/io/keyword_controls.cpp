@@ -46,6 +46,15 @@ void read_control_fields(const Context& ctx, Block& b, Model& m) {
       throw InputError(ctx.where(l.number) + "*CONTROL_SHELL card 1: field ESORT = " + std::to_string(m.shell_esort) +
                        " must be 0, 1 or 2");
     m.shell_esort_src = ctx.source(l.number);
+    // Card 2, field 2: INTGRD, the through-thickness rule (0 Gauss, 1 Lobatto).
+    if (b.next + 1 < b.cards.size()) {
+      const Line& l2 = b.cards[b.next + 1];
+      const Card k2(ctx, l2, b.keyword, kStandard);
+      k2.get(1, "INTGRD", m.shell_intgrd);
+      if (m.shell_intgrd != 0 && m.shell_intgrd != 1)
+        throw InputError(ctx.where(l2.number) + "*CONTROL_SHELL card 2: field INTGRD = " +
+                         std::to_string(m.shell_intgrd) + " must be 0 (Gauss) or 1 (Lobatto)");
+    }
   }
   check_control_fields(ctx, b);
 }

@@ -230,7 +230,9 @@ struct Builder {
     ShellSection ss;
     ss.thickness = sec.t[0];
     ss.nip = shell_nip(sec);
-    ss.rule = shell_bt::ThicknessRuleKind::gauss;
+    // *CONTROL_SHELL INTGRD = 1: Gauss-Lobatto; one point is the mid surface in either rule.
+    ss.rule = m.shell_intgrd == 1 && ss.nip > 1 ? shell_bt::ThicknessRuleKind::lobatto
+                                                    : shell_bt::ThicknessRuleKind::gauss;
     ss.shear_factor = sec.shrf == 0.0 ? 1.0 : sec.shrf;
     ss.hourglass_coefficient = qm;
     ss.bulk = bv;

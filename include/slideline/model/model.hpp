@@ -488,6 +488,10 @@ struct Model {
   /// where it was given.
   int shell_esort = 0;
   Source shell_esort_src;
+  /// *CONTROL_SHELL INTGRD (card 2): the through-thickness rule of every shell section, 0 (blank)
+  /// Gauss-Legendre, 1 Gauss-Lobatto (the two surfaces are integration points); other values are
+  /// refused by the reader.
+  int shell_intgrd = 0;
   ControlTimestep timestep;
   ControlContact control_contact;
   DatabaseControl database;

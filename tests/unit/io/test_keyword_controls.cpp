@@ -3,10 +3,13 @@
 // would change the answer is refused naming file, line and field, never warned about as tuning.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slideline/core/error.hpp"
+#include "slideline/element/shell_block.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
 
@@ -46,7 +49,7 @@ TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"*CONTROL_SHELL\n0,0,0,1\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = 1 (shell thickness change"},
       {"*CONTROL_SHELL\n0,0,0,0,16\n", "c.k:3: *CONTROL_SHELL card 1: field THEORY = 16"},
-      {"*CONTROL_SHELL\n\n0,1\n", "c.k:4: *CONTROL_SHELL card 2: field INTGRD = 1"},
+      {"*CONTROL_SHELL\n\n0,0,1\n", "c.k:4: *CONTROL_SHELL card 2: field LAMSHT = 1"},
       {"*CONTROL_ACCURACY\n0,2\n", "c.k:3: *CONTROL_ACCURACY card 1: field INN = 2 (invariant node numbering"},
       {"*CONTROL_SOLID\n0,1\n", "c.k:3: *CONTROL_SOLID card 1: field FMATRX = 1"},
       {"*CONTROL_SOLID\n1\n", "c.k:3: *CONTROL_SOLID card 1: field ESORT = 1"},
@@ -124,6 +127,50 @@ TEST(KeywordControls, ShellEsortTwoIsRefusedWhereTrianglesRun) {
     FAIL() << "ESORT 3 read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("c.k:5: *CONTROL_SHELL card 1: field ESORT = 3 must be 0, 1 or 2"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// *CONTROL_SHELL INTGRD (card 2, field 2) picks every shell section's through-thickness rule:
+// blank and 0 Gauss-Legendre, 1 Gauss-Lobatto (with NIP = 3 the points are the two surfaces and the
+// mid surface, weights 1/3, 4/3, 1/3; NIP = 1 is the mid surface in either rule); 2 is refused.
+// (The Lobatto rule's collapse moments: tests/verification/test_shell_plasticity.cpp.)
+TEST(KeywordControls, ShellIntgrdPicksTheThroughThicknessRule) {
+  const auto deck = [](const std::string& intgrd, int nip) {
+    return std::string("*KEYWORD\n*CONTROL_TERMINATION\n1.0\n*CONTROL_SHELL\n\n0,") + intgrd +
+           "\n*SECTION_SHELL\n1,2,,," + std::to_string(nip) +
+           "\n0.1\n*MAT_ELASTIC\n1,1.0,1000.0,0.3\n*PART\nplate\n1,1,1\n*NODE\n1,0,0,0\n2,1,0,0\n"
+           "3,1,1,0\n4,0,1,0\n*ELEMENT_SHELL\n7,1,1,2,3,4\n*END\n";
+  };
+  const auto rule_of = [&](const std::string& intgrd, int nip) {
+    const auto m = read_keyword_string(deck(intgrd, nip), "c.k");
+    auto sim = build_simulation(m);
+    const auto* shells = dynamic_cast<const ShellBlock*>(sim->blocks().at(0).get());
+    EXPECT_NE(shells, nullptr);
+    return std::pair{m.shell_intgrd, shells != nullptr ? shells->thickness_rule() : shell_bt::ThicknessRule{}};
+  };
+  const auto [g, gauss] = rule_of("", 3);
+  EXPECT_EQ(g, 0);
+  EXPECT_NEAR(gauss.xi[2], std::sqrt(0.6), 1e-15);
+  const auto [l, lobatto] = rule_of("1", 3);
+  EXPECT_EQ(l, 1);
+  ASSERT_EQ(lobatto.n, 3);
+  EXPECT_EQ(lobatto.xi[0], -1.0);
+  EXPECT_EQ(lobatto.xi[1], 0.0);
+  EXPECT_EQ(lobatto.xi[2], 1.0);
+  EXPECT_NEAR(lobatto.w[0], 1.0 / 3, 1e-15);
+  EXPECT_NEAR(lobatto.w[1], 4.0 / 3, 1e-15);
+  const auto [l1, one] = rule_of("1", 1);
+  EXPECT_EQ(l1, 1);
+  ASSERT_EQ(one.n, 1);
+  EXPECT_EQ(one.xi[0], 0.0);
+  EXPECT_EQ(one.w[0], 2.0);
+  try {
+    read_keyword_string(deck("2", 3), "c.k");
+    FAIL() << "INTGRD 2 read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("c.k:6: *CONTROL_SHELL card 2: field INTGRD = 2 must be 0 (Gauss) or 1 (Lobatto)"),
               std::string::npos)
         << e.what();
   }
