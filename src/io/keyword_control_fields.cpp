@@ -59,7 +59,7 @@ constexpr Rule kAccuracy1[] = {
     // here is objective to all orders already (hyperelastic laws from F, J2 on the Green-Naghdi rate
     // with R from the polar decomposition of F, shells in their co-rotational frame), for every part.
     {"OSU", 0, Use::honoured, ""},
-    {"INN", 1, Use::refuse, "invariant node numbering of shells and solids"},
+    {"INN", 1, Use::honoured, ""},  // stored (Model::accuracy_inn)
     {"PIDOSU", 0, Use::honoured, ""},
     {"IACC", 0, Use::refuse, "implicit accuracy option (also changes some explicit materials)"},
     {"EXACC", 0, Use::refuse, "explicit accuracy parameter"},

@@ -56,6 +56,17 @@ void read_control_fields(const Context& ctx, Block& b, Model& m) {
                          std::to_string(m.shell_intgrd) + " must be 0 (Gauss) or 1 (Lobatto)");
     }
   }
+  // *CONTROL_ACCURACY INN (card 1, field 2) is stored: invariant node numbering of shells and solids.
+  if (b.keyword == "*CONTROL_ACCURACY" && !b.done()) {
+    const Line& l = b.cards[b.next];
+    const Card k(ctx, l, b.keyword, kStandard);
+    k.get(1, "INN", m.accuracy_inn);
+    if (m.accuracy_inn == 0) m.accuracy_inn = 1;  // blank and 0: the default, off
+    if (m.accuracy_inn < -4 || m.accuracy_inn > 4 || m.accuracy_inn == -1 || m.accuracy_inn == -3)
+      throw InputError(ctx.where(l.number) + "*CONTROL_ACCURACY card 1: field INN = " + std::to_string(m.accuracy_inn) +
+                       " must be 1 (off), 2 or -2 (shells), 3 (solids), 4 or -4 (both)");
+    m.accuracy_inn_src = ctx.source(l.number);
+  }
   check_control_fields(ctx, b);
 }
 

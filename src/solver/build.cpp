@@ -234,6 +234,8 @@ struct Builder {
     ss.rule = m.shell_intgrd == 1 && ss.nip > 1 ? shell_bt::ThicknessRuleKind::lobatto
                                                     : shell_bt::ThicknessRuleKind::gauss;
     ss.shear_factor = sec.shrf == 0.0 ? 1.0 : sec.shrf;
+    // *CONTROL_ACCURACY INN = +-2, +-4: the quadrilaterals' frame invariant under renumbering.
+    ss.invariant_frame = m.accuracy_inn == 2 || m.accuracy_inn == 4 || m.accuracy_inn == -2 || m.accuracy_inn == -4;
     ss.hourglass_coefficient = qm;
     ss.bulk = bv;
     setup.blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),

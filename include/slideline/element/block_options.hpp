@@ -52,6 +52,9 @@ struct ShellSection {
   int nip = 5;           ///< through-thickness points (Gauss 1..10, Lobatto 2..10)
   shell_bt::ThicknessRuleKind rule = shell_bt::ThicknessRuleKind::gauss;
   Real shear_factor = 5.0 / 6.0;  ///< SHRF: scales the transverse shear modulus
+  /// The quadrilaterals' co-rotational frame: false, e1 along side 1-2 (LS-DYNA's default); true,
+  /// invariant under a renumbering of the nodes (*CONTROL_ACCURACY INN; shell_bt::local_geometry).
+  bool invariant_frame = false;
   /// Viscous hourglass coefficient: fraction of the critical damping of each hourglass mode
   /// (LS-DYNA QM); 0 = none.
   Real hourglass_coefficient = 0.1;

@@ -109,7 +109,7 @@ class BasicShellBlock final : public ElementBlock {
     const Real t = sec_.thickness;
     for (Index e = nq_; e < ne; ++e) initialize_triangle(nodes, e);  // rho A t / 3 per node
     for (Index e = 0; e < nq_; ++e) {
-      const shell_bt::LocalGeometry g = shell_bt::local_geometry(gather(nodes.x0, e));
+      const shell_bt::LocalGeometry g = shell_bt::local_geometry(gather(nodes.x0, e), sec_.invariant_frame);
       if (!(g.area > 0.0))
         throw InputError("shell element " + std::to_string(ids_[e]) + " of part " +
                          std::to_string(part_id_) + " has non-positive area " +
@@ -230,9 +230,10 @@ class BasicShellBlock final : public ElementBlock {
     const shell_bt::NodeMat X = gather(nodes.x, e);
     const shell_bt::NodeMat V = gather(nodes.v, e);
     const shell_bt::NodeMat W = gather(nodes.omega, e);
-    const shell_bt::LocalGeometry g = shell_bt::local_geometry(X);
+    const shell_bt::LocalGeometry g = shell_bt::local_geometry(X, sec_.invariant_frame);
     const shell_bt::NodeMat Xm = dt > 0.0 ? shell_bt::NodeMat(X - 0.5 * dt * V) : X;
-    const shell_bt::LocalGeometry gm = dt > 0.0 && g.area > 0.0 ? shell_bt::local_geometry(Xm) : g;
+    const bool inv = sec_.invariant_frame;
+    const shell_bt::LocalGeometry gm = dt > 0.0 && g.area > 0.0 ? shell_bt::local_geometry(Xm, inv) : g;
     if (!(g.area > 0.0) || !(gm.area > 0.0)) {
       out.bad = true;
       return out;
@@ -548,7 +549,7 @@ class BasicShellBlock final : public ElementBlock {
     if constexpr (PlasticState<State>) {
       const int n = rule_.n;
       for (Index e = 0; e < element_count(); ++e) {
-        const Real area = e < nq_ ? shell_bt::local_geometry(gather(nodes.x, e)).area
+        const Real area = e < nq_ ? shell_bt::local_geometry(gather(nodes.x, e), sec_.invariant_frame).area
                                   : shell_c0tri::local_geometry(gather_triangle(nodes.x, e)).area;
         const State* st = state_.data() + static_cast<std::size_t>(e) * n;
         for (int ip = 0; ip < n; ++ip) {
@@ -581,7 +582,8 @@ class BasicShellBlock final : public ElementBlock {
   }
   /// Element e's co-rotational frame (columns e1, e2, e3) at the coordinates `x`.
   Mat3 frame(const Vec3Field& x, Index e) const {
-    return e < nq_ ? shell_bt::local_geometry(gather(x, e)).e : shell_c0tri::local_geometry(gather_triangle(x, e)).e;
+    return e < nq_ ? shell_bt::local_geometry(gather(x, e), sec_.invariant_frame).e
+                   : shell_c0tri::local_geometry(gather_triangle(x, e)).e;
   }
 
   Id part_id_;

@@ -6,8 +6,9 @@
 /// Theory Manual, section "Belytschko-Tsay shell".
 ///
 /// Everything here works on one element in its co-rotational frame: the normal e3 is the cross
-/// product of the diagonals, e1 is side 1-2 projected onto the plane, e2 = e3 x e1. The element is
-/// a flat Mindlin plate in that frame with one in-plane integration point (the centroid).
+/// product of the diagonals, e1 is side 1-2 projected onto the plane (or, with invariant node
+/// numbering, from the lines joining opposite mid-sides: local_geometry), e2 = e3 x e1. The element
+/// is a flat Mindlin plate in that frame with one in-plane integration point (the centroid).
 #include <array>
 #include <algorithm>
 #include <cmath>
@@ -36,9 +37,30 @@ struct LocalGeometry {
   Real area = 0.0; ///< projected area (length^2); <= 0 for a degenerate or inverted element
 };
 
+/// The in-plane direction e1 of the invariant frame (LS-DYNA *CONTROL_ACCURACY INN = 2): a and b,
+/// the unit vectors along the lines joining the mid-sides 4-1 -> 2-3 and 1-2 -> 3-4 (projected
+/// onto the plane of normal e3), c their bisector and d = e3 x c; e1 = (c - d) / sqrt 2 lies 45
+/// degrees from c on a's side (and e2 = e3 x e1 = (c + d) / sqrt 2 on b's). Renumbering the nodes
+/// 1234 -> 2341 maps (a, b) to (b, -a), so the frame turns by exactly 90 degrees with the numbering
+/// and an isotropic element gives the same answer; on a rectangle e1 is side 1-2. A zero vector
+/// when a + b vanishes (a degenerate element).
+inline Vec3 invariant_e1(const NodeMat& x, const Vec3& e3) {
+  Vec3 a = (x.row(1) + x.row(2) - x.row(0) - x.row(3)).transpose();
+  Vec3 b = (x.row(2) + x.row(3) - x.row(0) - x.row(1)).transpose();
+  a -= a.dot(e3) * e3;
+  b -= b.dot(e3) * e3;
+  const Real na = a.norm(), nb = b.norm();
+  if (!(na > 0.0) || !(nb > 0.0)) return Vec3::Zero();
+  const Vec3 s = a / na + b / nb;
+  const Real ns = s.norm();
+  if (!(ns > 0.0)) return Vec3::Zero();
+  const Vec3 c = s / ns;
+  return (c - e3.cross(c)) * std::sqrt(0.5);
+}
+
 /// Builds the co-rotational frame, the centroid B matrix and the hourglass vector of the quad
-/// with node coordinates `x` (4 x 3, global).
-inline LocalGeometry local_geometry(const NodeMat& x) {
+/// with node coordinates `x` (4 x 3, global); `invariant`: e1 from invariant_e1, else side 1-2.
+inline LocalGeometry local_geometry(const NodeMat& x, bool invariant = false) {
   LocalGeometry g;
   const Vec3 r31 = (x.row(2) - x.row(0)).transpose();
   const Vec3 r42 = (x.row(3) - x.row(1)).transpose();
@@ -46,7 +68,7 @@ inline LocalGeometry local_geometry(const NodeMat& x) {
   const Real n3 = e3.norm();
   if (!(n3 > 0.0)) return g;  // area stays 0: the caller reports the element
   e3 /= n3;
-  Vec3 s1 = (x.row(1) - x.row(0)).transpose();
+  Vec3 s1 = invariant ? invariant_e1(x, e3) : Vec3((x.row(1) - x.row(0)).transpose());
   s1 -= s1.dot(e3) * e3;
   const Real n1 = s1.norm();
   if (!(n1 > 0.0)) return g;

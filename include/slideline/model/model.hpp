@@ -492,6 +492,13 @@ struct Model {
   /// Gauss-Legendre, 1 Gauss-Lobatto (the two surfaces are integration points); other values are
   /// refused by the reader.
   int shell_intgrd = 0;
+  /// *CONTROL_ACCURACY INN, invariant node numbering: 1 (blank, 0) off; 2 and -2 shells (the
+  /// quadrilaterals' co-rotational frame from the lines joining opposite mid-sides, invariant under
+  /// a renumbering of the nodes; 2 would also ask it of triangles, refused where triangles run);
+  /// 3 solids (nothing to do: every solid law here is isotropic and the solid kernels have no
+  /// element frame); 4 and -4 both. `accuracy_inn_src`: where it was given.
+  int accuracy_inn = 1;
+  Source accuracy_inn_src;
   ControlTimestep timestep;
   ControlContact control_contact;
   DatabaseControl database;

@@ -50,7 +50,7 @@ TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
       {"*CONTROL_SHELL\n0,0,0,1\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = 1 (shell thickness change"},
       {"*CONTROL_SHELL\n0,0,0,0,16\n", "c.k:3: *CONTROL_SHELL card 1: field THEORY = 16"},
       {"*CONTROL_SHELL\n\n0,0,1\n", "c.k:4: *CONTROL_SHELL card 2: field LAMSHT = 1"},
-      {"*CONTROL_ACCURACY\n0,2\n", "c.k:3: *CONTROL_ACCURACY card 1: field INN = 2 (invariant node numbering"},
+      {"*CONTROL_ACCURACY\n0,1,0,1\n", "c.k:3: *CONTROL_ACCURACY card 1: field IACC = 1"},
       {"*CONTROL_SOLID\n0,1\n", "c.k:3: *CONTROL_SOLID card 1: field FMATRX = 1"},
       {"*CONTROL_SOLID\n1\n", "c.k:3: *CONTROL_SOLID card 1: field ESORT = 1"},
       {"*CONTROL_BULK_VISCOSITY\n1.5,0.06,2\n", "c.k:3: *CONTROL_BULK_VISCOSITY card 1: field TYPE = 2"},
@@ -139,7 +139,7 @@ TEST(KeywordControls, ShellEsortTwoIsRefusedWhereTrianglesRun) {
 TEST(KeywordControls, ShellIntgrdPicksTheThroughThicknessRule) {
   const auto deck = [](const std::string& intgrd, int nip) {
     return std::string("*KEYWORD\n*CONTROL_TERMINATION\n1.0\n*CONTROL_SHELL\n\n0,") + intgrd +
-           "\n*SECTION_SHELL\n1,2,,," + std::to_string(nip) +
+           "\n*SECTION_SHELL\n1,2,," + std::to_string(nip) +
            "\n0.1\n*MAT_ELASTIC\n1,1.0,1000.0,0.3\n*PART\nplate\n1,1,1\n*NODE\n1,0,0,0\n2,1,0,0\n"
            "3,1,1,0\n4,0,1,0\n*ELEMENT_SHELL\n7,1,1,2,3,4\n*END\n";
   };
