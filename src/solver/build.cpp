@@ -234,8 +234,10 @@ struct Builder {
     ss.rule = m.shell_intgrd == 1 && ss.nip > 1 ? shell_bt::ThicknessRuleKind::lobatto
                                                     : shell_bt::ThicknessRuleKind::gauss;
     ss.shear_factor = sec.shrf == 0.0 ? 1.0 : sec.shrf;
-    // *CONTROL_ACCURACY INN = +-2, +-4: the quadrilaterals' frame invariant under renumbering.
+    // *CONTROL_ACCURACY INN = +-2, +-4: the quadrilaterals' frame invariant under renumbering;
+    // 2 and 4 the triangles' too (LS-DYNA's negative values leave triangles with side 1-2).
     ss.invariant_frame = m.accuracy_inn == 2 || m.accuracy_inn == 4 || m.accuracy_inn == -2 || m.accuracy_inn == -4;
+    ss.invariant_triangles = m.accuracy_inn == 2 || m.accuracy_inn == 4;
     ss.hourglass_coefficient = qm;
     ss.bulk = bv;
     setup.blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),

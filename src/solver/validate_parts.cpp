@@ -264,12 +264,6 @@ void check_parts(const model::Model& m, Problems& p) {
         p.todo(describe(m.shell_esort_src) + ": field ESORT of *CONTROL_SHELL: 2 (DKT triangular shells) is not "
                                              "implemented, and part " + std::to_string(pid) + " has triangles (*ELEMENT_SHELL " +
                std::to_string(use.triangle->id) + ", N3 = N4): they run as C0 triangles (ESORT 1); give 0 or 1");
-      if (use.triangle && (m.accuracy_inn == 2 || m.accuracy_inn == 4))
-        p.todo(describe(m.accuracy_inn_src) + ": field INN of *CONTROL_ACCURACY: " + std::to_string(m.accuracy_inn) +
-               " asks for invariant node numbering of triangular shells too, which is not implemented, and part " +
-               std::to_string(pid) + " has triangles (*ELEMENT_SHELL " + std::to_string(use.triangle->id) +
-               ", N3 = N4); give " + std::to_string(-m.accuracy_inn) +
-               " (invariant quadrilaterals, triangles framed by side 1-2, as LS-DYNA does for negative INN)");
     } else {
       check_solid_part(*part, find(ssec, part->secid), laws, ihq, p);
     }

@@ -55,6 +55,9 @@ struct ShellSection {
   /// The quadrilaterals' co-rotational frame: false, e1 along side 1-2 (LS-DYNA's default); true,
   /// invariant under a renumbering of the nodes (*CONTROL_ACCURACY INN; shell_bt::local_geometry).
   bool invariant_frame = false;
+  /// The same for the triangles (N3 = N4): the reference side 1-2 carried by the polar rotation of
+  /// the in-plane deformation (INN = 2, 4; shell_c0tri::invariant_e1); false, side 1-2.
+  bool invariant_triangles = false;
   /// Viscous hourglass coefficient: fraction of the critical damping of each hourglass mode
   /// (LS-DYNA QM); 0 = none.
   Real hourglass_coefficient = 0.1;

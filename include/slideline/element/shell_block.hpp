@@ -294,9 +294,11 @@ class BasicShellBlock final : public ElementBlock {
     const shell_c0tri::NodeMat X = gather_triangle(nodes.x, e);
     const shell_c0tri::NodeMat V = gather_triangle(nodes.v, e);
     const shell_c0tri::NodeMat W = gather_triangle(nodes.omega, e);
-    const shell_c0tri::LocalGeometry g = shell_c0tri::local_geometry(X);
+    const shell_c0tri::NodeMat X0 = sec_.invariant_triangles ? gather_triangle(nodes.x0, e) : X;
+    const shell_c0tri::NodeMat* ref = sec_.invariant_triangles ? &X0 : nullptr;  // INN = 2, 4
+    const shell_c0tri::LocalGeometry g = shell_c0tri::local_geometry(X, ref);
     const shell_c0tri::NodeMat Xm = dt > 0.0 ? shell_c0tri::NodeMat(X - 0.5 * dt * V) : X;
-    const shell_c0tri::LocalGeometry gm = dt > 0.0 ? shell_c0tri::local_geometry(Xm) : g;
+    const shell_c0tri::LocalGeometry gm = dt > 0.0 ? shell_c0tri::local_geometry(Xm, ref) : g;
     if (!(g.area > 0.0) || !(gm.area > 0.0)) {
       out.bad = true;
       return out;
@@ -523,7 +525,7 @@ class BasicShellBlock final : public ElementBlock {
     const int n = rule_.n;
     const int lo = (n - 1) / 2, hi = n / 2;  // the middle point(s)
     for (Index e = 0; e < element_count(); ++e) {
-      const Mat3 ge = frame(nodes.x, e);
+      const Mat3 ge = frame(nodes, e);
       const State* st = state_.data() + static_cast<std::size_t>(e) * n;
       CellOutput& c = out[static_cast<std::size_t>(e)];
       c.stress_bottom = global_stress(ge, stress(e, 0));
@@ -580,10 +582,11 @@ class BasicShellBlock final : public ElementBlock {
   shell_c0tri::NodeMat gather_triangle(const Vec3Field& f, Index e) const {
     return gather_rows<3>(f, triangle_nodes(e));
   }
-  /// Element e's co-rotational frame (columns e1, e2, e3) at the coordinates `x`.
-  Mat3 frame(const Vec3Field& x, Index e) const {
-    return e < nq_ ? shell_bt::local_geometry(gather(x, e), sec_.invariant_frame).e
-                   : shell_c0tri::local_geometry(gather_triangle(x, e)).e;
+  /// Element e's co-rotational frame (columns e1, e2, e3) at the current coordinates.
+  Mat3 frame(const NodalFields& nodes, Index e) const {
+    if (e < nq_) return shell_bt::local_geometry(gather(nodes.x, e), sec_.invariant_frame).e;
+    const shell_c0tri::NodeMat X0 = gather_triangle(nodes.x0, e);
+    return shell_c0tri::local_geometry(gather_triangle(nodes.x, e), sec_.invariant_triangles ? &X0 : nullptr).e;
   }
 
   Id part_id_;

@@ -47,8 +47,31 @@ struct LocalGeometry {
   Real area = 0.0;    ///< area (length^2); <= 0 for a degenerate element
 };
 
-/// The frame, B matrix and assumed-shear map of the triangle with node coordinates `x`.
-inline LocalGeometry local_geometry(const NodeMat& x) {
+/// The in-plane direction e1 of the invariant frame of a triangle (*CONTROL_ACCURACY INN = 2, 4;
+/// LS-DYNA documents its construction for quadrilaterals only, this one is ours): the reference
+/// side 1-2 direction carried by the rotation R of the polar decomposition F = R U of the
+/// triangle's in-plane deformation gradient (current sides against reference sides, each in its
+/// plane's basis p1 = side 1-2, p2 = e3 x p1). R does not depend on the numbering, and listing the
+/// nodes from another corner turns the reference direction by a constant angle, so the frame
+/// turns by that constant angle and an isotropic element gives the same answer. `x0`: the
+/// reference coordinates; `e3`, `p1`: the current normal and side 1-2 direction (unit).
+inline Vec3 invariant_e1(const NodeMat& x, const NodeMat& x0, const Vec3& e3, const Vec3& p1) {
+  const Vec3 p2 = e3.cross(p1);
+  const Vec3 s1 = (x.row(1) - x.row(0)).transpose(), s2 = (x.row(2) - x.row(0)).transpose();
+  const Vec3 r1 = (x0.row(1) - x0.row(0)).transpose(), r2 = (x0.row(2) - x0.row(0)).transpose();
+  const Vec3 q1 = r1.normalized();
+  const Vec3 q2 = r1.cross(r2).normalized().cross(q1);
+  Eigen::Matrix<Real, 2, 2> cur, ref;  // columns: the sides 1-2 and 1-3 in their plane's basis
+  cur << s1.dot(p1), s2.dot(p1), s1.dot(p2), s2.dot(p2);
+  ref << r1.dot(q1), r2.dot(q1), r1.dot(q2), r2.dot(q2);
+  const Eigen::Matrix<Real, 2, 2> f = cur * ref.inverse();
+  const Real phi = std::atan2(f(1, 0) - f(0, 1), f(0, 0) + f(1, 1));  // R of F = R U (det F > 0)
+  return std::cos(phi) * p1 + std::sin(phi) * p2;
+}
+
+/// The frame, B matrix and assumed-shear map of the triangle with node coordinates `x`; with the
+/// reference coordinates `x0` given, the invariant frame (invariant_e1), else e1 along side 1-2.
+inline LocalGeometry local_geometry(const NodeMat& x, const NodeMat* x0 = nullptr) {
   LocalGeometry g;
   const Vec3 s1 = (x.row(1) - x.row(0)).transpose();
   const Vec3 s2 = (x.row(2) - x.row(0)).transpose();
@@ -57,7 +80,7 @@ inline LocalGeometry local_geometry(const NodeMat& x) {
   const Real n1 = s1.norm();
   if (!(n3 > 0.0) || !(n1 > 0.0)) return g;  // area stays 0: the caller reports the element
   e3 /= n3;
-  const Vec3 e1 = s1 / n1;
+  const Vec3 e1 = x0 != nullptr ? invariant_e1(x, *x0, e3, s1 / n1) : Vec3(s1 / n1);
   g.e.col(0) = e1;
   g.e.col(1) = e3.cross(e1);
   g.e.col(2) = e3;
