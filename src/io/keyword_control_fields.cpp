@@ -36,7 +36,7 @@ constexpr Rule kShell3[] = {
     {"SIDT4TU", 0, Use::refuse, "part set of the type 4 thickness update"},
     {"CNTCO", 0, Use::refuse, "contact reference surface from the shell offset"},
     {"ITSFLG", 0, Use::refuse, "initial transverse shear stress"},
-    {"IRQUAD", 0, Use::refuse, "in-plane integration rule of quadratic shells"},
+    {"IRQUAD", 0, Use::inert, "in-plane integration rule of quadratic shells (ELFORM 23, 24), which are refused"},
     {"W-MODE", 0, Use::refuse, "failure by the W-mode"},
     {"STRETCH", 0, Use::refuse, "failure by stretch"},
     {"ICRQ", 0, Use::refuse, "continuous thickness and strain across elements"},
@@ -67,9 +67,7 @@ constexpr Rule kAccuracy1[] = {
 constexpr OptionalCard kAccuracyCards[] = {{"card 1", kAccuracy1}};
 
 constexpr Rule kSolid1[] = {
-    {"ESORT", 0, Use::refuse,
-     "sorting of degenerate solids (LS-DYNA then runs pentahedra as ELFORM 15, not implemented; with ESORT 0 "
-     "they run as collapsed hexahedra)"},
+    {"ESORT", 0, Use::honoured, ""},  // stored (Model::solid_esort); 1 refused where it would sort
     {"FMATRX", 0, Use::refuse, "method of the deformation gradient"},
     {"NIPTETS", 4, Use::inert, "integration points of tetrahedra, which are refused"},
     {"SWLOCL", 1, Use::output, "output system of spot weld solids"},

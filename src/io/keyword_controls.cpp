@@ -67,6 +67,16 @@ void read_control_fields(const Context& ctx, Block& b, Model& m) {
                        " must be 1 (off), 2 or -2 (shells), 3 (solids), 4 or -4 (both)");
     m.accuracy_inn_src = ctx.source(l.number);
   }
+  // *CONTROL_SOLID ESORT (card 1, field 1) is stored: the part checks refuse 1 where it would sort.
+  if (b.keyword == "*CONTROL_SOLID" && !b.done()) {
+    const Line& l = b.cards[b.next];
+    const Card k(ctx, l, b.keyword, kStandard);
+    k.get(0, "ESORT", m.solid_esort);
+    if (m.solid_esort != 0 && m.solid_esort != 1)
+      throw NotImplementedError(ctx.where(l.number) + "*CONTROL_SOLID card 1: field ESORT = " +
+                                std::to_string(m.solid_esort) + " is not implemented; give 0 or 1");
+    m.solid_esort_src = ctx.source(l.number);
+  }
   check_control_fields(ctx, b);
 }
 

@@ -20,6 +20,7 @@ struct PartUse {
   bool solids = false, shells = false;
   const model::ShellElement* triangle = nullptr;  ///< the part's first triangular shell (N3 = N4)
   bool quads = false;                             ///< the part has quadrilateral shells
+  const model::SolidElement* degenerate = nullptr;  ///< the part's first solid with repeated nodes
 };
 
 std::vector<std::pair<Id, PartUse>> parts_in_use(const model::Model& m) {
@@ -30,7 +31,15 @@ std::vector<std::pair<Id, PartUse>> parts_in_use(const model::Model& m) {
     if (fresh) out.push_back({pid, {}});
     return out[it->second].second;
   };
-  for (const auto& e : m.solids) use(e.pid).solids = true;
+  for (const auto& e : m.solids) {
+    PartUse& u = use(e.pid);
+    u.solids = true;
+    if (!u.degenerate) {
+      std::array<Id, 8> n = e.n;
+      std::sort(n.begin(), n.end());
+      if (std::unique(n.begin(), n.end()) != n.end()) u.degenerate = &e;
+    }
+  }
   for (const auto& e : m.shells) {
     PartUse& u = use(e.pid);
     u.shells = true;
@@ -265,7 +274,15 @@ void check_parts(const model::Model& m, Problems& p) {
                                              "implemented, and part " + std::to_string(pid) + " has triangles (*ELEMENT_SHELL " +
                std::to_string(use.triangle->id) + ", N3 = N4): they run as C0 triangles (ESORT 1); give 0 or 1");
     } else {
-      check_solid_part(*part, find(ssec, part->secid), laws, ihq, p);
+      const model::SectionSolid* sec = find(ssec, part->secid);
+      check_solid_part(*part, sec, laws, ihq, p);
+      if (use.degenerate && m.solid_esort == 1 && sec && (sec->elform == 0 || sec->elform == 1 || sec->elform == 2))
+        p.todo(describe(m.solid_esort_src) + ": field ESORT of *CONTROL_SOLID: 1 sorts degenerate solids into "
+                                             "ELFORM 10 tetrahedra and ELFORM 15 pentahedra, which is not implemented "
+                                             "for the solids of an ELFORM " + std::to_string(sec->elform == 0 ? 1 : sec->elform) +
+               " section, and part " + std::to_string(pid) + " has one (*ELEMENT_SOLID " +
+               std::to_string(use.degenerate->id) + ", repeated nodes); give 0 (collapsed hexahedra) or the "
+               "tetrahedra an ELFORM 10 section");
     }
   }
   check_rigid_motions(m, in_use, rigid, unresolved, p);

@@ -499,6 +499,11 @@ struct Model {
   /// element frame); 4 and -4 both. `accuracy_inn_src`: where it was given.
   int accuracy_inn = 1;
   Source accuracy_inn_src;
+  /// *CONTROL_SOLID ESORT: 0 (blank) runs degenerate solids of ELFORM 1 / 2 sections as collapsed
+  /// hexahedra; 1 would sort them into ELFORM 10 tetrahedra and 15 pentahedra: accepted where no
+  /// such section holds a degenerate solid (nothing to sort), refused where one does.
+  int solid_esort = 0;
+  Source solid_esort_src;
   ControlTimestep timestep;
   ControlContact control_contact;
   DatabaseControl database;

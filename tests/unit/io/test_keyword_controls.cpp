@@ -52,7 +52,7 @@ TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
       {"*CONTROL_SHELL\n\n0,0,1\n", "c.k:4: *CONTROL_SHELL card 2: field LAMSHT = 1"},
       {"*CONTROL_ACCURACY\n0,1,0,1\n", "c.k:3: *CONTROL_ACCURACY card 1: field IACC = 1"},
       {"*CONTROL_SOLID\n0,1\n", "c.k:3: *CONTROL_SOLID card 1: field FMATRX = 1"},
-      {"*CONTROL_SOLID\n1\n", "c.k:3: *CONTROL_SOLID card 1: field ESORT = 1"},
+      {"*CONTROL_SOLID\n2\n", "c.k:3: *CONTROL_SOLID card 1: field ESORT = 2 is not implemented"},
       {"*CONTROL_BULK_VISCOSITY\n1.5,0.06,2\n", "c.k:3: *CONTROL_BULK_VISCOSITY card 1: field TYPE = 2"},
       {"*CONTROL_ACCURACY\n0\n1\n", "c.k:4: *CONTROL_ACCURACY: a card after card 1 is not read"},
   };
@@ -173,6 +173,33 @@ TEST(KeywordControls, ShellIntgrdPicksTheThroughThicknessRule) {
     EXPECT_NE(std::string(e.what()).find("c.k:6: *CONTROL_SHELL card 2: field INTGRD = 2 must be 0 (Gauss) or 1 (Lobatto)"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// *CONTROL_SOLID ESORT = 1 sorts degenerate solids of ELFORM 1 / 2 sections into ELFORM 10
+// tetrahedra and 15 pentahedra: with no degenerate solid there is nothing to sort and the deck
+// runs; a tetrahedron (N4 repeated) in an ELFORM 1 section is refused naming the card's line, the
+// part and the element; in an ELFORM 10 section it is a tetrahedron already and runs.
+TEST(KeywordControls, SolidEsortOneRunsWhereThereIsNothingToSort) {
+  const auto deck = [](int elform, bool tet) {
+    return std::string("*KEYWORD\n*CONTROL_TERMINATION\n1.0\n*CONTROL_SOLID\n1\n*SECTION_SOLID\n1,") +
+           std::to_string(elform) + "\n*MAT_ELASTIC\n1,1.0,1000.0,0.3\n*PART\nblock\n1,1,1\n*NODE\n1,0,0,0\n2,1,0,0\n"
+           "3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n*ELEMENT_SOLID\n" +
+           (tet ? "9,1,1,2,4,5,5,5,5,5\n" : "9,1,1,2,3,4,5,6,7,8\n") + "*END\n";
+  };
+  EXPECT_EQ(read_keyword_string(deck(1, false), "c.k").solid_esort, 1);
+  EXPECT_NO_THROW(build_simulation(read_keyword_string(deck(1, false), "c.k")));
+  EXPECT_NO_THROW(build_simulation(read_keyword_string(deck(10, true), "c.k")));
+  try {
+    build_simulation(read_keyword_string(deck(1, true), "c.k"));
+    FAIL() << "ESORT 1 with a tetrahedron in an ELFORM 1 section ran";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("c.k:5: field ESORT of *CONTROL_SOLID: 1 sorts degenerate solids into ELFORM 10 tetrahedra and "
+                        "ELFORM 15 pentahedra, which is not implemented for the solids of an ELFORM 1 section, and "
+                        "part 1 has one (*ELEMENT_SOLID 9, repeated nodes)"),
+              std::string::npos)
+        << what;
   }
 }
 
