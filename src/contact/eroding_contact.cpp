@@ -3,6 +3,9 @@
 // contact_erosion.hpp says which are active when); the others refuse an eroding part.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +15,7 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/element_erosion.hpp"
 #include "slideline/mesh/surface_builder.hpp"
+#include "slideline/solver/boundary.hpp"
 
 namespace slideline {
 
@@ -67,9 +71,58 @@ void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const
   side.nodes = s.nodes;
 }
 
+/// ISYM = 1: leaves out of side.surface the solid faces on a symmetry plane: faces whose unit
+/// normal (reference geometry) is a global axis to 1e-6 and whose nodes are all held in that
+/// direction by a support without a curve acting for the whole run (*BOUNDARY_SPC_..., *NODE TC).
+/// Such faces are exterior only because the model is cut there; as contact segments they would
+/// catch the other half's nodes that do not exist.
+void drop_symmetry_faces(ContactSide& side, const ContactBuildContext& ctx) {
+  Surface& s = side.surface;
+  if (!ctx.supports || s.segment_count() == 0) return;
+  std::vector<std::uint8_t> held(ctx.nodes.size(), 0);
+  for (const SupportGroup& g : *ctx.supports)
+    for (const Support& sp : g.supports)
+      if (!sp.rotational && !sp.has_curve && sp.birth <= 0.0 && sp.death == std::numeric_limits<Real>::infinity())
+        for (Index n : sp.nodes) held[static_cast<std::size_t>(n)] |= std::uint8_t(1u << static_cast<int>(sp.axis));
+  Surface kept;
+  for (Index k = 0; k < s.segment_count(); ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    const Index* c = &s.conn[4 * u];
+    bool on_plane = false;
+    if (s.kind[u] == SegmentKind::solid_face) {
+      const Vec3 n = (ctx.nodes.x0.get(c[2]) - ctx.nodes.x0.get(c[0])).cross(ctx.nodes.x0.get(c[3]) - ctx.nodes.x0.get(c[1]));
+      const Real len = n.norm();
+      for (int a = 0; a < 3 && len > 0.0; ++a) {
+        if (std::abs(n[a]) < (1.0 - 1e-6) * len) continue;
+        on_plane = true;
+        for (int j = 0; j < 4; ++j) on_plane = on_plane && (held[static_cast<std::size_t>(c[j])] >> a & 1u);
+      }
+    }
+    if (on_plane) continue;
+    kept.conn.insert(kept.conn.end(), c, c + 4);
+    kept.block.push_back(s.block[u]);
+    kept.element.push_back(s.element[u]);
+    kept.part.push_back(s.part[u]);
+    kept.kind.push_back(s.kind[u]);
+    kept.thickness.push_back(s.thickness[u]);
+  }
+  if (kept.segment_count() == s.segment_count()) return;
+  s = std::move(kept);
+  build_surface_adjacency(s);
+  side.nodes = s.nodes;
+}
+
 }  // namespace
 
 void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx, const std::vector<Id>& eroding_part) {
+  if (spec.symmetry_faces_out) {
+    // ISYM = 1, eroding parts or not: the exterior faces now, the interior ones as they are added.
+    drop_symmetry_faces(spec.slave, ctx);
+    if (spec.single_surface)
+      spec.master = spec.slave;
+    else
+      drop_symmetry_faces(spec.master, ctx);
+  }
   if (eroding_part.empty()) return;
   Id pid = 0;
   const ContactSide* on = nullptr;
@@ -100,10 +153,13 @@ void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx
                                   "select the slave side by part (SSTYP 2 or 3)");
   if (spec.interior_faces) {
     add_interior_faces(spec.slave, ctx, spec.where + ": SSID");
-    if (spec.single_surface)
+    if (spec.symmetry_faces_out) drop_symmetry_faces(spec.slave, ctx);
+    if (spec.single_surface) {
       spec.master = spec.slave;
-    else
+    } else {
       add_interior_faces(spec.master, ctx, spec.where + ": MSID");
+      if (spec.symmetry_faces_out) drop_symmetry_faces(spec.master, ctx);
+    }
   }
   spec.eroding = true;
 }

@@ -228,6 +228,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   spec.transmitted_output = card.type == T::automatic && card.form == model::ContactForm::dyna3d;
   spec.eroding_card = card.eroding;
   spec.interior_faces = !card.eroding || card.erosop == 1;
+  spec.symmetry_faces_out = card.eroding && card.isym == 1;
   return spec;
 }
 

@@ -17,9 +17,9 @@ void read_eroding_card4(const Context& ctx, Block& b, model::Contact& c) {
   k.get(1, "EROSOP", c.erosop);
   k.get(2, "IADJ", c.iadj);
   const std::string at = ctx.where(l->number) + c.keyword + " card 4: field ";
-  if (c.isym != 0)
-    throw NotImplementedError(at + "ISYM = " + std::to_string(c.isym) +
-                              " (faces on symmetry planes left out of the contact) is not implemented; give 0");
+  if (c.isym != 0 && c.isym != 1)
+    throw InputError(at + "ISYM must be 0 or 1 (faces on symmetry planes left out of the contact; got " +
+                     std::to_string(c.isym) + ")");
   if (c.erosop != 0 && c.erosop != 1)
     throw InputError(at + "EROSOP must be 0 or 1 (got " + std::to_string(c.erosop) + ")");
   if (c.iadj != 0)

@@ -517,7 +517,7 @@ struct Builder {
   }
 
   void build_contacts() {
-    const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets};
+    const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets, &setup.supports};
     const std::vector<Id> eroding = eroding_part_of_nodes();
     // Force transducers last: they read the contact forces every other interface has added.
     for (const bool transducers : {false, true})

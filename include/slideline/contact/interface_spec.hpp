@@ -19,6 +19,8 @@
 
 namespace slideline {
 
+struct SupportGroup;  // solver/boundary.hpp
+
 class ElementBlock;
 
 /// What resolution may use: the card, the deck's contact controls, and the built mesh (element
@@ -29,6 +31,9 @@ struct ContactBuildContext {
   const std::vector<std::unique_ptr<ElementBlock>>& blocks;
   const NodalFields& nodes;
   const MeshSets& sets;
+  /// The model's supports (for ISYM = 1 of the eroding cards: faces on symmetry planes); null when
+  /// the caller has none to give.
+  const std::vector<SupportGroup>* supports = nullptr;
 };
 
 /// One side of an interface as the card's SSID/SSTYP (or MSID/MSTYP) select it.
@@ -112,6 +117,9 @@ struct InterfaceSpec {
   /// eroding part (the factories then attach a ContactErosion to the pass).
   bool eroding_card = false;
   bool interior_faces = true;
+  /// ISYM = 1 of the eroding cards: the solid faces on a symmetry plane (every node held in the
+  /// direction of the face's normal) are left out of both sides (prepare_eroding_contact).
+  bool symmetry_faces_out = false;
   bool eroding = false;
 };
 

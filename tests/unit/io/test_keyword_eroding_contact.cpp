@@ -89,8 +89,11 @@ TEST(ErodingContactCards, Card4FieldsOutsideWhatRunsAreRefusedByName) {
   for (const Row& row : kRows) {
     SCOPED_TRACE(row.keyword);
     const std::string at = std::string("c.k:6: ") + row.keyword + " card 4: field ";
-    std::string w = refusal<NotImplementedError>(deck(row.keyword, "1,1,0\n"));
-    EXPECT_NE(w.find(at + "ISYM = 1"), std::string::npos) << w;
+    std::string w = refusal<InputError>(deck(row.keyword, "2,1,0\n"));
+    EXPECT_NE(w.find(at + "ISYM must be 0 or 1 (faces on symmetry planes left out of the contact; got 2)"),
+              std::string::npos)
+        << w;
+    EXPECT_EQ(read_keyword_string(deck(row.keyword, "1,1,0\n"), "c.k").contacts.at(0).isym, 1);
     w = refusal<NotImplementedError>(deck(row.keyword, "0,1,1\n"));
     EXPECT_NE(w.find(at + "IADJ = 1"), std::string::npos) << w;
     w = refusal<InputError>(deck(row.keyword, "0,2,0\n"));
