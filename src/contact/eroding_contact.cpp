@@ -59,13 +59,7 @@ void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const
   Surface& s = side.surface;
   for (Index k = 0; k < inner.segment_count(); ++k) {
     const auto u = static_cast<std::size_t>(k);
-    if (!keep[u]) continue;
-    s.conn.insert(s.conn.end(), &inner.conn[4 * u], &inner.conn[4 * u] + 4);
-    s.block.push_back(inner.block[u]);
-    s.element.push_back(inner.element[u]);
-    s.part.push_back(inner.part[u]);
-    s.kind.push_back(inner.kind[u]);
-    s.thickness.push_back(inner.thickness[u]);
+    if (keep[u]) s.append_segment(inner, k);
   }
   build_surface_adjacency(s);
   side.nodes = s.nodes;
@@ -90,7 +84,8 @@ void drop_symmetry_faces(ContactSide& side, const ContactBuildContext& ctx) {
     const Index* c = &s.conn[4 * u];
     bool on_plane = false;
     if (s.kind[u] == SegmentKind::solid_face) {
-      const Vec3 n = (ctx.nodes.x0.get(c[2]) - ctx.nodes.x0.get(c[0])).cross(ctx.nodes.x0.get(c[3]) - ctx.nodes.x0.get(c[1]));
+      const Vec3Field& x0 = ctx.nodes.x0;
+      const Vec3 n = (x0.get(c[2]) - x0.get(c[0])).cross(x0.get(c[3]) - x0.get(c[1]));
       const Real len = n.norm();
       for (int a = 0; a < 3 && len > 0.0; ++a) {
         if (std::abs(n[a]) < (1.0 - 1e-6) * len) continue;
@@ -98,13 +93,7 @@ void drop_symmetry_faces(ContactSide& side, const ContactBuildContext& ctx) {
         for (int j = 0; j < 4; ++j) on_plane = on_plane && (held[static_cast<std::size_t>(c[j])] >> a & 1u);
       }
     }
-    if (on_plane) continue;
-    kept.conn.insert(kept.conn.end(), c, c + 4);
-    kept.block.push_back(s.block[u]);
-    kept.element.push_back(s.element[u]);
-    kept.part.push_back(s.part[u]);
-    kept.kind.push_back(s.kind[u]);
-    kept.thickness.push_back(s.thickness[u]);
+    if (!on_plane) kept.append_segment(s, k);
   }
   if (kept.segment_count() == s.segment_count()) return;
   s = std::move(kept);

@@ -52,13 +52,7 @@ Surface segments_in_box(const Surface& surf, const model::Box& box, const NodalF
     const int n = surf.is_triangle(s) ? 3 : 4;
     Vec3 centroid = Vec3::Zero();
     for (int a = 0; a < n; ++a) centroid += nodes.x0.get(c[a]);
-    if (!inside(box, centroid / n)) continue;
-    out.conn.insert(out.conn.end(), c, c + 4);
-    out.block.push_back(surf.block[s]);
-    out.element.push_back(surf.element[s]);
-    out.part.push_back(surf.part[s]);
-    out.kind.push_back(surf.kind[s]);
-    out.thickness.push_back(surf.thickness[s]);
+    if (inside(box, centroid / n)) out.append_segment(surf, s);
   }
   build_surface_adjacency(out);
   return out;

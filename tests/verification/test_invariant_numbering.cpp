@@ -41,7 +41,8 @@ std::string shell_deck(int inn, int shift, bool mixed, bool triangles = false) {
   std::ostringstream o;
   o.precision(17);
   o << "*KEYWORD\n*CONTROL_TERMINATION\n0.05\n*CONTROL_ACCURACY\n0," << inn
-    << "\n*SECTION_SHELL\n1,2,1.0,3\n0.05,0.05,0.05,0.05\n*MAT_ELASTIC\n1,1.0e-3,1000.0,0.3\n*PART\nplate\n1,1,1\n*NODE\n";
+    << "\n*SECTION_SHELL\n1,2,1.0,3\n0.05,0.05,0.05,0.05\n*MAT_ELASTIC\n1,1.0e-3,1000.0,0.3\n"
+    << "*PART\nplate\n1,1,1\n*NODE\n";
   const double xs[9][2] = {{0, 0},    {1.1, 0.0},  {2, 0},    {0, 0.45}, {1.18, 0.62},
                            {2, 0.55}, {0, 1},      {0.9, 1.0}, {2, 1}};
   for (int i = 0; i < 9; ++i) o << i + 1 << "," << xs[i][0] << "," << xs[i][1] << ",0\n";

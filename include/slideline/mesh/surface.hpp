@@ -11,6 +11,7 @@
 ///   connectivity); both sides of a shell are usable, and `thickness[s]` > 0 tells a contact
 ///   algorithm to offset the surface by half the thickness on the side it is approached from.
 /// - `thickness[s]` is 0 for a hexahedron face.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -49,6 +50,19 @@ struct Surface {
   Index segment_count() const { return static_cast<Index>(block.size()); }
   Index node_count() const { return static_cast<Index>(nodes.size()); }
   bool is_triangle(Index s) const { return conn[4 * s + 2] == conn[4 * s + 3]; }
+
+  /// Appends segment s of `from` (its nodes and owner); the adjacency is the caller's to rebuild
+  /// (build_surface_adjacency) once every segment is in.
+  void append_segment(const Surface& from, Index s) {
+    const auto u = static_cast<std::size_t>(s);
+    conn.insert(conn.end(), from.conn.begin() + 4 * static_cast<std::ptrdiff_t>(s),
+                from.conn.begin() + 4 * static_cast<std::ptrdiff_t>(s) + 4);
+    block.push_back(from.block[u]);
+    element.push_back(from.element[u]);
+    part.push_back(from.part[u]);
+    kind.push_back(from.kind[u]);
+    thickness.push_back(from.thickness[u]);
+  }
 };
 
 }  // namespace slideline
