@@ -89,7 +89,10 @@ void read_mat_add_erosion(const Context& ctx, Block& b, Model& m, bool titled) {
   for (auto [i, name, what] : {std::tuple{5, "SIGTH", "Tuler-Butcher threshold stress"},
                                std::tuple{6, "IMPULSE", "Tuler-Butcher stress impulse"}})
     if (value(c2, i, name, false)) refuse(c2, i, name, what);
-  add.failtm = value(c2, 7, "FAILTM", false);
+  // FAILTM = 0 (or blank) is not a criterion whatever EXCL: a failure time 0 would delete every
+  // element at the start. LS-DYNA's own example birdball.k leaves FAILTM blank with EXCL = 888 and
+  // erodes by MXEPS.
+  add.failtm = value(c2, 7, "FAILTM", true);
   // FAILTM < 0: |FAILTM|, inactive during dynamic relaxation, which no run here has.
   if (add.failtm) add.failtm = std::abs(*add.failtm);
 

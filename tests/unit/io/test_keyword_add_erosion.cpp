@@ -90,8 +90,10 @@ TEST(KeywordAddErosion, ReadsTheCriteriaBuilt) {
   EXPECT_FALSE(e.add_erosions[0].mxeps);
   EXPECT_FALSE(e.add_erosions[0].epssh);
   // EXCL 9: a blank MXEPS or EPSSH is 0, not 9: a threshold (met at rest); MNEPS, EFFEPS, VOLEPS
-  // (and MXPRES) at 0 are excluded whatever EXCL.
-  const auto z = read_keyword_string(kMat + "*MAT_ADD_EROSION\n1,9,9,,,\n9,9,20,,,9,9,9\n", "p.k", nullptr);
+  // (and MXPRES) at 0 are excluded whatever EXCL, and so is FAILTM (birdball.k's card 2 leaves it
+  // blank with EXCL 888).
+  const auto z = read_keyword_string(kMat + "*MAT_ADD_EROSION\n1,9,9,,,\n9,9,20,,,9,9\n", "p.k", nullptr);
+  EXPECT_FALSE(z.add_erosions[0].failtm);
   EXPECT_EQ(z.add_erosions[0].mxeps, 0.0);
   EXPECT_EQ(z.add_erosions[0].epssh, 0.0);
   EXPECT_FALSE(z.add_erosions[0].mneps);
