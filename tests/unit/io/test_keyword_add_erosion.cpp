@@ -126,6 +126,16 @@ TEST(KeywordAddErosion, RefusesWhatIsNotBuilt) {
   refused("1\n", "p.k:4: *MAT_ADD_EROSION: card 2");
 }
 
+// ERODE of *CONTROL_TIMESTEP: 1 is read and written back; another value is refused naming file,
+// line, field and value.
+TEST(KeywordAddErosion, ErodeFlagOfControlTimestep) {
+  const auto m = read_keyword_string("*CONTROL_TIMESTEP\n,,,,,,1\n", "p.k", nullptr);
+  EXPECT_EQ(m.timestep.erode, 1);
+  EXPECT_EQ(read_keyword_string(write_keyword_string(m), "w.k", nullptr).timestep.erode, 1);
+  const std::string what = thrown("*CONTROL_TIMESTEP\n,,,,,,2\n");
+  EXPECT_NE(what.find("p.k:2: *CONTROL_TIMESTEP card 1: field ERODE = 2 must be 0 or 1"), std::string::npos) << what;
+}
+
 // At the build: a MID that the deck does not define or that is rigid, a second card for one MID,
 // NUMFIP beyond a shell's points, the stress criteria on tetrahedra; the card's file and line named.
 TEST(KeywordAddErosion, RefusedAtTheBuild) {
