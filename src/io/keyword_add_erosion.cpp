@@ -1,7 +1,8 @@
 // *MAT_ADD_EROSION (docs/keywords.md): failure criteria added to a material. Field order and
 // meanings follow the LS-DYNA keyword manual (vol. II, *MAT_ADD_EROSION). Built: MXPRES, MNPRES,
-// SIGP1, SIGVM, FAILTM, NCS, NUMFIP, EXCL; every other criterion is refused unless excluded, and
-// the optional damage / regularisation cards only when they hold their defaults.
+// SIGP1, SIGVM, MNEPS, EFFEPS, VOLEPS, MXEPS, EPSSH, FAILTM, NCS, NUMFIP, EXCL; SIGTH and IMPULSE
+// are refused unless excluded, and the optional damage / regularisation cards only when they hold
+// their defaults.
 #include <cmath>
 #include <optional>
 #include <span>
@@ -51,10 +52,18 @@ void read_mat_add_erosion(const Context& ctx, Block& b, Model& m, bool titled) {
                               ") to exclude it");
   };
   add.mxpres = value(c1, 2, "MXPRES", true);
-  for (auto [i, name, what] : {std::tuple{3, "MNEPS", "minimum principal strain"},
-                               std::tuple{4, "EFFEPS", "effective strain"},
-                               std::tuple{5, "VOLEPS", "volumetric strain"}})
-    if (value(c1, i, name, true)) refuse(c1, i, name, what);
+  add.mneps = value(c1, 3, "MNEPS", true);
+  add.effeps = value(c1, 4, "EFFEPS", true);
+  add.voleps = value(c1, 5, "VOLEPS", true);
+  // A strain that is never negative (the effective and the tensorial shear strain) against a
+  // negative threshold would delete every element at once: refused (later manuals also give a
+  // negative EFFEPS another meaning, the effective plastic strain, which is not built).
+  const auto positive = [&](const Card& c, int i, const char* name, const std::optional<Real>& v) {
+    if (v && *v < 0.0)
+      throw InputError(ctx.where(c.line()) + b.keyword + ": card " + (&c == &c1 ? "1" : "2") + " field " + name +
+                       " = " + std::string(c.raw(i)) + " must be positive (a strain that is never negative)");
+  };
+  positive(c1, 4, "EFFEPS", add.effeps);
   Real numfip = 0.0, ncs = 0.0;
   c1.get(6, "NUMFIP", numfip);
   c1.get(7, "NCS", ncs);
@@ -72,17 +81,25 @@ void read_mat_add_erosion(const Context& ctx, Block& b, Model& m, bool titled) {
   add.sigvm = value(c2, 2, "SIGVM", false);
   if (add.sigp1 && *add.sigp1 < 0.0) refuse(c2, 1, "SIGP1", "a curve of the failure stress against the strain rate");
   if (add.sigvm && *add.sigvm < 0.0) refuse(c2, 2, "SIGVM", "a curve of the failure stress against the strain rate");
-  for (auto [i, name, what] : {std::tuple{3, "MXEPS", "maximum principal strain"},
-                               std::tuple{4, "EPSSH", "tensorial shear strain"},
-                               std::tuple{5, "SIGTH", "Tuler-Butcher threshold stress"},
+  add.mxeps = value(c2, 3, "MXEPS", false);
+  add.epssh = value(c2, 4, "EPSSH", false);
+  if (add.mxeps && *add.mxeps < 0.0)
+    refuse(c2, 3, "MXEPS", "a curve of the failure strain against the strain rate");
+  positive(c2, 4, "EPSSH", add.epssh);
+  for (auto [i, name, what] : {std::tuple{5, "SIGTH", "Tuler-Butcher threshold stress"},
                                std::tuple{6, "IMPULSE", "Tuler-Butcher stress impulse"}})
     if (value(c2, i, name, false)) refuse(c2, i, name, what);
-  add.failtm = value(c2, 7, "FAILTM", false);
+  // FAILTM = 0 (or blank) is not a criterion whatever EXCL: a failure time 0 would delete every
+  // element at the start. LS-DYNA's own example birdball.k leaves FAILTM blank with EXCL = 888 and
+  // erodes by MXEPS.
+  add.failtm = value(c2, 7, "FAILTM", true);
   // FAILTM < 0: |FAILTM|, inactive during dynamic relaxation, which no run here has.
   if (add.failtm) add.failtm = std::abs(*add.failtm);
 
-  const int active = (add.mxpres ? 1 : 0) + (add.mnpres ? 1 : 0) + (add.sigp1 ? 1 : 0) + (add.sigvm ? 1 : 0) +
-                     (add.failtm ? 1 : 0);
+  int active = 0;
+  for (const auto* v : {&add.mxpres, &add.mnpres, &add.sigp1, &add.sigvm, &add.failtm, &add.mneps, &add.effeps,
+                        &add.voleps, &add.mxeps, &add.epssh})
+    active += v->has_value() ? 1 : 0;
   if (active == 0)
     throw InputError(ctx.where(l1.number) + b.keyword + ": no criterion is set (every one is blank, 0 or EXCL)");
   if (add.ncs > active)

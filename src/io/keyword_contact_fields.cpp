@@ -325,7 +325,7 @@ constexpr Rule kControlTermination[] = {
 constexpr Rule kControlTimestep1[] = {
     {"DTINIT", 0, Use::honoured, ""}, {"TSSFAC", 0.9, Use::honoured, ""}, {"ISDO", 0, Use::honoured, ""},
     {"TSLIMT", 0, Use::honoured, ""}, {"DT2MS", 0, Use::honoured, ""},   {"LCTM", 0, Use::honoured, ""},
-    {"ERODE", 0, Use::refuse, "erosion of elements whose step falls below DTMIN"},
+    {"ERODE", 0, Use::honoured, ""},  // read_control_timestep: 0 or 1
     {"MS1ST", 0, Use::honoured, ""},
 };
 constexpr Rule kControlTimestep2[] = {

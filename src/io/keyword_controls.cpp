@@ -106,6 +106,7 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
     k.get(3, "TSLIMT", t.tslimt);
     k.get(4, "DT2MS", t.dt2ms);
     k.get(5, "LCTM", t.lctm);
+    k.get(6, "ERODE", t.erode);
     k.get(7, "MS1ST", t.ms1st);
     // Read (the writer keeps them) but not honoured by the solver: say so. These only choose the
     // step (the stable step is always respected); DT2MS (mass scaling, once with MS1ST = 1, every
@@ -124,6 +125,9 @@ void read_control_timestep(const Context& ctx, Block& b, Model& m) {
                                 std::string(k.raw(3)) + " (shell minimum time step: lowers the moduli of shells whose "
                                 "step falls below it) is not implemented; running without it would be a different "
                                 "model (leave it blank or give its default 0)");
+    if (t.erode != 0 && t.erode != 1)
+      throw InputError(ctx.where(l.number) + "*CONTROL_TIMESTEP card 1: field ERODE = " + std::string(k.raw(6)) +
+                       " must be 0 or 1");
     if (t.ms1st != 0 && t.ms1st != 1)
       throw InputError(ctx.where(l.number) + "*CONTROL_TIMESTEP card 1: field MS1ST = " + std::to_string(t.ms1st) +
                        " must be 0 or 1");

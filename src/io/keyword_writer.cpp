@@ -177,9 +177,9 @@ void write_materials(const model::Model& m, std::string& o) {
     o += a.title.empty() ? "*MAT_ADD_EROSION\n" : "*MAT_ADD_EROSION_TITLE\n" + heading(a.title);
     const auto th = [&](const std::optional<Real>& v) { return v ? *v : a.excl; };
     o += "$#     MID      EXCL    MXPRES     MNEPS    EFFEPS    VOLEPS    NUMFIP       NCS\n";
-    o += CardOut().i(a.mid).r(a.excl).r(th(a.mxpres)).r(a.excl).r(a.excl).r(a.excl).r(a.numfip).i(a.ncs).str();
+    o += CardOut().i(a.mid).r(a.excl).r(th(a.mxpres)).r(th(a.mneps)).r(th(a.effeps)).r(th(a.voleps)).r(a.numfip).i(a.ncs).str();
     o += "$#  MNPRES     SIGP1     SIGVM     MXEPS     EPSSH     SIGTH   IMPULSE    FAILTM\n";
-    o += CardOut().r(th(a.mnpres)).r(th(a.sigp1)).r(th(a.sigvm)).r(a.excl).r(a.excl).r(a.excl).r(a.excl)
+    o += CardOut().r(th(a.mnpres)).r(th(a.sigp1)).r(th(a.sigvm)).r(th(a.mxeps)).r(th(a.epssh)).r(a.excl).r(a.excl)
              .r(th(a.failtm)).str();
   }
 }
@@ -270,9 +270,9 @@ void write_controls(const model::Model& m, std::string& o) {
     o += CardOut().r(m.termination.endtim).i(m.termination.endcyc).str();
   }
   const auto& ts = m.timestep;
-  if (ts.ms1st != 0) {
+  if (ts.ms1st != 0 || ts.erode != 0) {
     o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM     ERODE     MS1ST\n";
-    o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).i(0).i(ts.ms1st).str();
+    o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).i(ts.erode).i(ts.ms1st).str();
   } else {
     o += "*CONTROL_TIMESTEP\n$#  DTINIT    TSSFAC      ISDO    TSLIMT     DT2MS      LCTM\n";
     o += CardOut().r(ts.dtinit).r(ts.tssfac).i(ts.isdo).r(ts.tslimt).r(ts.dt2ms).i(ts.lctm).str();

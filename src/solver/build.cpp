@@ -142,7 +142,7 @@ struct Builder {
       for (std::size_t b = first_block; b < setup.blocks.size(); ++b) setup.blocks[b]->set_material_id(part.mid);
       const auto ait = add_erosions.find(part.mid);
       const model::MatAddErosion* add = ait == add_erosions.end() ? nullptr : ait->second;
-      if (!laws.rigid) enable_erosion(part, laws, add, first_block);
+      if (!laws.rigid) enable_erosion(part, laws, add, first_block, g.quad_ids.empty() && m.timestep.erode == 1);
     }
   }
 
@@ -150,8 +150,9 @@ struct Builder {
   /// its material or a *MAT_ADD_EROSION of it sets a criterion (erosion_setup.hpp); a block that
   /// cannot erode so refuses, named by the part and what sets the criterion.
   void enable_erosion(const model::Part& part, const MaterialLaws& laws, const model::MatAddErosion* add,
-                      std::size_t first_block) {
-    const ErosionCriteria k = erosion_criteria(laws, add);
+                      std::size_t first_block, bool erode_below_tsmin) {
+    ErosionCriteria k = erosion_criteria(laws, add);
+    k.erode_below_tsmin = erode_below_tsmin;
     if (!k.any()) return;
     for (std::size_t b = first_block; b < setup.blocks.size(); ++b) {
       try {
@@ -494,6 +495,7 @@ struct Builder {
     c.end_time = opt.end_time > 0.0 ? opt.end_time : m.termination.endtim;
     c.max_cycles = m.termination.endcyc;
     c.dt_min_fraction = m.termination.dtmin > 0.0 ? m.termination.dtmin : 1e-4;
+    c.erode_below_dt_min = m.timestep.erode == 1;
     if (m.termination.endeng > 0.0) {
       c.energy_error_limit = m.termination.endeng / 100.0;
       c.energy_error_warning = std::min(0.01, 0.2 * c.energy_error_limit);

@@ -40,6 +40,11 @@ ErosionCriteria erosion_criteria(const MaterialLaws& laws, const model::MatAddEr
   set(k.sigp1, add->sigp1);
   set(k.sigvm, add->sigvm);
   set(k.failtm, add->failtm);
+  set(k.mneps, add->mneps);
+  set(k.effeps, add->effeps);
+  set(k.voleps, add->voleps);
+  set(k.mxeps, add->mxeps);
+  set(k.epssh, add->epssh);
   k.ncs = add->ncs;
   k.numfip = add->numfip;
   return k;

@@ -318,6 +318,11 @@ bool Simulation::step() {
   // assemble_forces(), or initialize()'s for t = 0.
   const StepPlan plan = plan_step();
   monitor_.check_step(plan, votes_, t_, cycle_, controls_, contacts_);
+  // ERODE: once the first step is known, solids below TSMIN = DTMIN x it are deleted (the
+  // element's own step is compared before the scale factor).
+  if (cycle_ == 0 && controls_.erode_below_dt_min)
+    for (auto& b : blocks_)
+      if (ElementErosion* er = b->erosion()) er->set_step_floor(controls_.dt_min_fraction * plan.dt_next / controls_.dt_scale);
   form_accelerations(nodes_, has_contact(), has_rotations_);
   apply_constraints(plan);
   update_damping_coefficients();

@@ -83,8 +83,12 @@ void StabilityMonitor::check_step(const StepPlan& plan, const StepVotes& votes, 
     throw InstabilityError("time step collapsed to " + std::to_string(plan.dt_next) + at(t, cycle) + set_by(), t,
                            cycle);
   if (cycle == 0) dt_first_ = plan.dt_next;
-  if (controls.dt_min_fraction > 0.0 && !plan.at_end && plan.dt_next < controls.dt_min_fraction * dt_first_ &&
-      plan.t_next < controls.end_time)
+  // With ERODE the elements' own steps are judged (the solids below TSMIN have just been deleted
+  // by the same floor, Simulation::step), not a step shortened to land on an output time.
+  const bool below = controls.erode_below_dt_min
+                         ? votes.stable() < controls.dt_min_fraction * dt_first_ / controls.dt_scale
+                         : plan.dt_next < controls.dt_min_fraction * dt_first_;
+  if (controls.dt_min_fraction > 0.0 && !plan.at_end && below && plan.t_next < controls.end_time)
     throw InstabilityError("time step " + std::to_string(plan.dt_next) + " fell below " +
                                std::to_string(controls.dt_min_fraction) + " x the first step (" +
                                std::to_string(dt_first_) + ")" + at(t, cycle) + set_by(),

@@ -1,4 +1,4 @@
-// *MAT_ADD_EROSION (stress, pressure and time thresholds, NCS, EXCL, NUMFIP) and TDEL of
+// *MAT_ADD_EROSION (stress, pressure, strain and time thresholds, NCS, EXCL, NUMFIP) and TDEL of
 // *MAT_PIECEWISE_LINEAR_PLASTICITY (element/erosion_criteria.hpp; docs/solver.md, "Failure and
 // erosion"), against closed forms.
 //
@@ -213,6 +213,42 @@ TEST(AddErosion, ExclusionNumber) {
   EXPECT_EQ(r.deleted_at, 0.0);
 }
 
+// The strain criteria (principal logarithmic strains, erosion_criteria.hpp) on the nu = 0 cube,
+// whose F is diag(L, 1, 1): strains (ln L, 0, 0). MXEPS is met at ln L = MXEPS; EFFEPS at
+// (2/3) ln L = EFFEPS (the uniaxial (2/3)(1 + nu) eps, nu = 0); VOLEPS > 0 at ln J = ln L = VOLEPS,
+// VOLEPS < 0 pushed at ln L = VOLEPS; MNEPS pushed at ln L = MNEPS; EPSSH at (e1 - e3)/2 = |ln L|/2
+// pulled and pushed. Pushed, the bulk viscosity q = rho h (Q1 h trD^2 + Q2 c |trD|) (h = L the
+// characteristic length, trD = v / L, LS-DYNA's Q1 = 1.5, Q2 = 0.06) is a pressure that stretches
+// the free lateral faces by q / E (nu = 0; 6e-7 here, seen in the nodes), so ln J = ln L + 2 q / E
+// and (e1 - e3)/2 = (q / E - ln L)/2: the closed forms for VOLEPS < 0 and EPSSH pushed include it
+// (0.15 and 0.04 steps). A threshold of the other sign never holds on the way. MXEPS's run also
+// books the strain energy at L as eroded and closes the balance.
+TEST(AddErosion, StrainThresholds) {
+  const Pull pull{0.1, 0.05}, push{-0.1, 0.05};
+  const auto at = [](const Pull& p, Real ln_l) { return p.time_of(std::exp(ln_l) - 1.0); };
+  const CubeRun r = expect_deleted_at(add_erosion("1", ",,,0.02"), pull, at(pull, 0.02), "MXEPS 0.02");
+  const Real w = svk_energy(std::exp(0.02));
+  std::printf("eroded %.7g, closed form %.7g (rel %.2e); balance error %.3g\n", r.energy.eroded(), w,
+              r.energy.eroded() / w - 1.0, r.energy.balance_error());
+  EXPECT_NEAR(r.energy.eroded(), w, 0.01 * w);
+  EXPECT_LT(std::abs(r.energy.balance_error()), 1e-3 * w);
+  expect_deleted_at(add_erosion("1,,,,0.02", ""), pull, at(pull, 0.03), "EFFEPS 0.02");
+  expect_deleted_at(add_erosion("1,,,,,0.025", ""), pull, at(pull, 0.025), "VOLEPS 0.025");
+  // The lateral strain q / E of the pushed cube at ln L (after the ramp, |v| = 0.1).
+  const auto lateral = [](Real ln_l) {
+    const Real h = std::exp(ln_l), trd = 0.1 / h, c = std::sqrt(kE / kRho);
+    return kRho * h * (1.5 * h * trd * trd + 0.06 * c * trd) / kE;
+  };
+  expect_deleted_at(add_erosion("1,,,,,-0.025", ""), push, at(push, -0.025 - 2.0 * lateral(-0.025)), "VOLEPS -0.025");
+  expect_deleted_at(add_erosion("1,,,-0.02", ""), push, at(push, -0.02), "MNEPS -0.02");
+  expect_deleted_at(add_erosion("1", ",,,,0.01"), pull, at(pull, 0.02), "EPSSH 0.01 pulled");
+  expect_deleted_at(add_erosion("1", ",,,,0.01"), push, at(push, -0.02 + lateral(-0.02)), "EPSSH 0.01 pushed");
+  const Real t_end = at(pull, 0.03) + 0.02;
+  EXPECT_LT(run(cube(elastic(), add_erosion("1", ",,,0.02"), push, t_end), "spc_1").deleted_at, 0.0);
+  EXPECT_LT(run(cube(elastic(), add_erosion("1,,,,,0.025", ""), push, t_end), "spc_1").deleted_at, 0.0);
+  EXPECT_LT(run(cube(elastic(), add_erosion("1,,,-0.02", ""), pull, t_end), "spc_1").deleted_at, 0.0);
+}
+
 // TDEL of *MAT_PIECEWISE_LINEAR_PLASTICITY (SIGY far above the stress: elastic) on the cube
 // crushed in uniaxial strain at the speed v: its step is h / (q + sqrt(q^2 + c^2)) with h = 1 - u
 // its height (volume over largest face), c = sqrt(E/rho) (nu = 0) and the bulk viscosity term
@@ -233,6 +269,43 @@ TEST(AddErosion, TdelDeletesACrushedCube) {
   EXPECT_NEAR(r.deleted_at, t_expected, dt);
   for (std::size_t j = r.first_step_after(r.deleted_at); j < r.t.size(); ++j) ASSERT_EQ(r.reaction[j], 0.0);
   EXPECT_LT(std::abs(r.energy.balance_error()), 1e-3 * r.energy.eroded());
+}
+
+// ERODE = 1 of *CONTROL_TIMESTEP with DTMIN of *CONTROL_TERMINATION: the elastic cube crushed in
+// uniaxial strain as above (its step h / (q + sqrt(q^2 + c^2)), q = 0.06 c + 1.5 v) is deleted when
+// TSSFAC (0.9) times its step falls below TSMIN = DTMIN x the first step dt0 (the cube at rest, q =
+// 0), i.e. at h = DTMIN dt0 / 0.9 (q + sqrt(q^2 + c^2)); the run goes on to its end time, the
+// reaction is 0 from then on and the balance closes. Without ERODE the same deck stops there.
+TEST(AddErosion, ErodeDeletesASolidBelowTsmin) {
+  const Pull push{-2.0, 0.01};
+  const Real c = std::sqrt(kE / kRho), q = 0.06 * c + 1.5 * 2.0;
+  const Real dtmin = 0.7 * c / (q + std::sqrt(q * q + c * c));  // h near 0.7 for dt0 = 0.9 / c
+  const Real t_end = push.time_of(-0.3) + 0.01;
+  const auto deck = [&](int erode) {
+    std::string d = cube(elastic(), "", push, t_end, true);
+    std::ostringstream o;
+    o << std::setprecision(17) << ",0," << dtmin << "\n*CONTROL_TIMESTEP\n,,,,,," << erode << "\n*SECTION_SOLID";
+    const std::size_t at = d.find(",\n*SECTION_SOLID");
+    return d.replace(at, std::string(",\n*SECTION_SOLID").size(), o.str());
+  };
+  const CubeRun r = run(deck(1), "spc_1");
+  const Real h = dtmin * r.dt[0] / 0.9 * (q + std::sqrt(q * q + c * c));
+  const Real t_expected = push.time_of(h - 1.0);
+  const Real dt = r.judging_step(t_expected);
+  std::printf("ERODE: first step %.6g (0.9/c = %.6g); deleted at t = %.7f, closed form %.7f (h = %.4f; %.2f steps of "
+              "%.3g); run ended at %.4f of %.4f\n",
+              r.dt[0], 0.9 / c, r.deleted_at, t_expected, h, (r.deleted_at - t_expected) / dt, dt, r.t.back(), t_end);
+  EXPECT_NEAR(r.deleted_at, t_expected, dt);
+  EXPECT_NEAR(r.t.back(), t_end, 1e-9);
+  for (std::size_t j = r.first_step_after(r.deleted_at); j < r.t.size(); ++j) ASSERT_EQ(r.reaction[j], 0.0);
+  EXPECT_LT(std::abs(r.energy.balance_error()), 1e-3 * r.energy.eroded());
+  // ERODE = 0: the run stops when the step falls below TSMIN.
+  try {
+    run(deck(0), "spc_1");
+    ADD_FAILURE() << "ERODE 0: the run did not stop";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("fell below"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace slideline

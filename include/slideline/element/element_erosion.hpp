@@ -11,6 +11,7 @@
 /// Everything is sized by enable() (no allocation in a step); each element is written only by the
 /// chunk that holds it and the chunk sums are reduced in chunk order, so the deletions and the
 /// eroded energies do not depend on the thread count.
+#include <algorithm>
 #include <limits>
 #include <span>
 #include <vector>
@@ -44,6 +45,7 @@ class ElementErosion {
     criteria_ = criteria;
     active_ = criteria.any();
     fail_ = criteria.plastic_strain;
+    tdel_ = criteria.min_step;
     count_ = count;
     deleted_at_.assign(static_cast<std::size_t>(padded), -1.0);
     held_internal_.assign(static_cast<std::size_t>(padded), 0.0);
@@ -52,6 +54,13 @@ class ElementErosion {
     chunk_internal_.assign(nc, 0.0);
     chunk_hourglass_.assign(nc, 0.0);
     chunk_deleted_.assign(nc, 0);
+  }
+
+  /// ERODE (criteria().erode_below_tsmin): from now on an element whose stable step (before the
+  /// run's scale factor) is below `floor` (time: TSMIN / TSSFAC) is deleted, as by TDEL (the larger
+  /// of the two applies). No effect without erode_below_tsmin.
+  void set_step_floor(Real floor) {
+    if (criteria_.erode_below_tsmin) criteria_.min_step = std::max(tdel_, floor);
   }
 
   /// The time (of the force evaluation about to run) that deletions are stamped with.
@@ -113,6 +122,7 @@ class ElementErosion {
   ErosionCriteria criteria_;
   bool active_ = false;
   Real fail_ = 0.0;
+  Real tdel_ = 0.0;  ///< the criteria's own min_step (TDEL), under a step floor
   Real time_ = 0.0;
   Index count_ = 0;
   std::vector<Real> deleted_at_;                     ///< per element: deletion time, -1 alive

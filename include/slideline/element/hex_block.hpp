@@ -247,7 +247,7 @@ class HexBlock final : public ElementBlock {
         gather_batch(nodes, e0, bt);
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
-        if (erosion_.active()) erode_batch(st, f, e0, valid, dt_law, chunk, kc.c);
+        if (erosion_.active()) erode_batch(bt, st, f, e0, valid, dt_law, chunk, kc.c);
         accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data(),
                            rescaling_.raw_steps());
         store_forces(f, e0, valid, out);
@@ -343,17 +343,20 @@ class HexBlock final : public ElementBlock {
 
   /// Erosion of a batch's elements after the law's update (solid_erosion::fails, the step as
   /// accumulate() computes it with wave speed `c`): a deleted element's forces and powers are
-  /// zeroed and its step is +inf (it votes none).
-  void erode_batch(BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
+  /// zeroed and its step is +inf (it votes none). The strains: of F at x^n (solid_erosion.hpp).
+  void erode_batch(const Batch& bt, BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
     const State& s = state_[e0 / kLanes];
     const ErosionCriteria& crit = erosion_.criteria();
+    Tensor3<Lanes> F;
+    if (crit.needs_strain()) F = inverse(inverse_deformation_gradient(bt));
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
       const Real q = st.qdt[l];
       Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c * c)) : 0.0;
       if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
       const SymTensor6 law = needs_stress_ ? sym6(st.law, l) : SymTensor6{};
-      const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e);
+      const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e,
+                                              crit.needs_strain() ? solid_erosion::log_strains(F, l) : std::array<Real, 3>{});
       if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;

@@ -13,7 +13,8 @@ namespace slideline::shell_erosion {
 
 /// Refuses what a shell part (`part_id`, `quads` of `elements` quadrilaterals, `points`
 /// through-thickness points) cannot erode by: a failure strain without a plastic law, a stress
-/// threshold on a law without stress (*MAT_NULL), C0 triangles, NUMFIP beyond the points.
+/// threshold on a law without stress (*MAT_NULL), a strain threshold, C0 triangles, NUMFIP beyond
+/// the points.
 template <class State>
 void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, int points) {
   const std::string part = "part " + std::to_string(part_id);
@@ -23,6 +24,9 @@ void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, in
     if (k.needs_stress())
       throw NotImplementedError(part + ": its material carries no stress, so a stress criterion of"
                                 " *MAT_ADD_EROSION can never hold");
+  if (k.needs_strain())
+    throw NotImplementedError(part + ": the strain criteria of *MAT_ADD_EROSION (MNEPS, EFFEPS, VOLEPS, MXEPS,"
+                              " EPSSH) on shells are not implemented (one-point hexahedra have them)");
   if (quads < elements) throw NotImplementedError(part + ": erosion of C0 triangles is not implemented");
   if (k.has_thresholds() && k.points_needed(points) > points)
     throw InputError(part + ": NUMFIP of *MAT_ADD_EROSION asks for " + std::to_string(k.points_needed(points)) +

@@ -2,9 +2,11 @@
 /// Erosion of one-point hexahedra (element_erosion.hpp, erosion_criteria.hpp): the checks the
 /// block makes when erosion is enabled and the verdict on one element. Kept apart from
 /// hex_block.hpp (its size).
+#include <array>
 #include <string>
 
 #include "slideline/core/error.hpp"
+#include "slideline/core/tensor3.hpp"
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/erosion_criteria.hpp"
 
@@ -22,12 +24,38 @@ void check(const ErosionCriteria& k, Id part_id) {
                      " failed points, but a one-point hexahedron has 1");
 }
 
+/// Refuses what a part (`part_id`) of element-by-element solids (`form`: "fully integrated
+/// hexahedra (ELFORM 2)", "tetrahedra (ELFORM 10)") of law state `State` cannot erode by: a
+/// failure strain without a plastic law, and the *MAT_ADD_EROSION thresholds (built on one-point
+/// hexahedra and Belytschko-Tsay shells only). TDEL (the element's step) works with any law.
+template <class State>
+void check_element_by_element(const ErosionCriteria& k, Id part_id, const char* form) {
+  const std::string part = "part " + std::to_string(part_id);
+  if constexpr (!requires(const State& s) { s.eps; })
+    if (k.plastic_strain > 0.0) throw NotImplementedError(part + ": a failure strain needs a plastic law");
+  if (k.has_thresholds())
+    throw NotImplementedError(part + ": the criteria of *MAT_ADD_EROSION on " + form +
+                              " are not implemented (one-point hexahedra and Belytschko-Tsay shells have them)");
+}
+
+/// The principal logarithmic strains (erosion_criteria.hpp) of lane `l` of a batch's deformation
+/// gradients `F` (at the element's centre, the one point: exact for the element's mean motion).
+template <class Lanes>
+std::array<Real, 3> log_strains(const Tensor3<Lanes>& F, int l) {
+  Mat3 f;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) f(i, j) = F[i][j][l];
+  return ErosionCriteria::principal_log_strains(f);
+}
+
 /// Whether an element goes, after the law's update, at time `t`: its plastic strain `eps` reached
-/// the failure strain; or NCS thresholds hold for its law stress `law`; or its stable step
-/// `dt_e` (read only when TDEL is set) is below TDEL.
-inline bool fails(const ErosionCriteria& k, Real eps, const SymTensor6& law, Real t, Real dt_e) {
+/// the failure strain; or NCS thresholds hold for its law stress `law` and principal logarithmic
+/// strains `e` (erosion_criteria.hpp; read only when a strain criterion is set); or its stable
+/// step `dt_e` (read only when TDEL is set) is below TDEL.
+inline bool fails(const ErosionCriteria& k, Real eps, const SymTensor6& law, Real t, Real dt_e,
+                  const std::array<Real, 3>& e = {}) {
   if (k.plastic_strain > 0.0 && eps >= k.plastic_strain) return true;
-  if (k.has_thresholds() && k.point_fails(law, t)) return true;
+  if (k.has_thresholds() && k.point_fails(law, t, e)) return true;
   return k.min_step > 0.0 && dt_e < k.min_step;
 }
 

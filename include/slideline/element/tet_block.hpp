@@ -19,6 +19,7 @@
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/element_chunks.hpp"
+#include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/solid_point_terms.hpp"
 #include "slideline/material/solid_material.hpp"
 #include "slideline/mesh/element_topology.hpp"
@@ -123,16 +124,9 @@ class TetBlock final : public ElementBlock {
     return chunks_.smallest_step_element(ids_);
   }
 
-  /// ElementBlock::enable_erosion: a failure strain needs a law whose state holds a plastic strain;
-  /// TDEL (the element's step) works with any law (element_erosion.hpp).
+  /// ElementBlock::enable_erosion (refusals: solid_erosion::check_element_by_element).
   void enable_erosion(const ErosionCriteria& criteria) override {
-    if constexpr (!requires(const State& s) { s.eps; })
-      if (criteria.plastic_strain > 0.0)
-        throw NotImplementedError("part " + std::to_string(part_id()) + ": a failure strain needs a plastic law");
-    if (criteria.has_thresholds())
-      throw NotImplementedError("part " + std::to_string(part_id()) +
-                                ": the stress and time criteria of *MAT_ADD_EROSION on tetrahedra (ELFORM 10) are not implemented"
-                                " (one-point hexahedra and Belytschko-Tsay shells have them)");
+    solid_erosion::check_element_by_element<State>(criteria, part_id(), "tetrahedra (ELFORM 10)");
     erosion_.enable(criteria, element_count(), element_count());
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }

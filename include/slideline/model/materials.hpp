@@ -108,7 +108,7 @@ struct MatNull {
 
 /// *MAT_ADD_EROSION: failure criteria added to material MID (docs/keywords.md). Each threshold
 /// is empty when the deck excludes it (blank, 0 or EXCL); the reader refuses the criteria that are
-/// not built (the strain criteria, SIGTH / IMPULSE, curves, damage cards).
+/// not built (SIGTH / IMPULSE, curves, damage cards). Strains: principal logarithmic strains.
 struct MatAddErosion {
   Id mid = 0;
   std::optional<Real> mxpres;  ///< MXPRES: fails when the pressure (positive in compression) >= it
@@ -116,6 +116,11 @@ struct MatAddErosion {
   std::optional<Real> sigp1;   ///< SIGP1: fails when the largest principal stress >= it
   std::optional<Real> sigvm;   ///< SIGVM: fails when the von Mises stress >= it
   std::optional<Real> failtm;  ///< FAILTM: fails when the time >= it
+  std::optional<Real> mneps;   ///< MNEPS: fails when the smallest principal strain <= it
+  std::optional<Real> effeps;  ///< EFFEPS: fails when the effective strain >= it (> 0)
+  std::optional<Real> voleps;  ///< VOLEPS: fails when the volumetric strain >= it (> 0) or <= it (< 0)
+  std::optional<Real> mxeps;   ///< MXEPS: fails when the largest principal strain >= it (> 0)
+  std::optional<Real> epssh;   ///< EPSSH: fails when the tensorial shear strain >= it (> 0)
   Real numfip = 1.0;  ///< NUMFIP: failed points (> 0), a percentage of them (-100..0), |NUMFIP| - 100 points
   int ncs = 1;        ///< NCS: thresholds that must hold at once
   Real excl = 0.0;    ///< EXCL (kept for the writer)

@@ -294,6 +294,9 @@ struct ControlTimestep {
   /// MS1ST: 1 mass scaling at the first step only; 0 (LS-DYNA's default, blank) re-evaluates it
   /// every cycle from the elements' current steps (solver/mass_rescaling.hpp; docs/solver.md).
   int ms1st = 0;
+  /// ERODE: 1 deletes the solids whose step falls below TSMIN = DTMIN (of *CONTROL_TERMINATION)
+  /// x the first step instead of stopping the run (docs/solver.md, "Failure and erosion").
+  int erode = 0;
   Source src;
   bool operator==(const ControlTimestep&) const = default;
 };

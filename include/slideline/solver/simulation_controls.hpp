@@ -25,6 +25,10 @@ struct SimulationControls {
   /// Stop when the step falls below this fraction of the first step (LS-DYNA's DTMIN of
   /// *CONTROL_TERMINATION; 0 = never), naming the part whose elements control the step.
   Real dt_min_fraction = 1e-4;
+  /// ERODE of *CONTROL_TIMESTEP: the solid elements whose step (times dt_scale) falls below
+  /// dt_min_fraction x the first step are deleted (their blocks' ErosionCriteria::erode_below_tsmin)
+  /// instead of the run stopping.
+  bool erode_below_dt_min = false;
   /// Mass scaling (LS-DYNA's DT2MS of *CONTROL_TIMESTEP; 0 = none), applied once at initialize()
   /// (solver/mass_scaling.hpp): < 0 elements whose stable step is below |dt2ms| get mass to make
   /// it |dt2ms|; > 0 every deformable element's mass is scaled to make its step dt2ms.

@@ -1,8 +1,8 @@
 // *MAT_ADD_EROSION (src/io/keyword_add_erosion.cpp, src/solver/erosion_setup.cpp): the fields
-// built are read and written back; every criterion not built, when not excluded, is refused with
-// the file, line, card, field and value; a MID that is not a deformable material of the deck, a
-// second card for one MID, NUMFIP beyond a shell's points and the stress criteria on tetrahedra
-// are refused when the model is built.
+// built are read and written back; every criterion not built, when not excluded, and a negative
+// EFFEPS / EPSSH / MXEPS is refused with the file, line, card, field and value; a MID that is not a
+// deformable material of the deck, a second card for one MID, NUMFIP beyond a shell's points, the
+// criteria on tetrahedra and the strain criteria on shells are refused when the model is built.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -51,7 +51,8 @@ std::string deck(const std::string& extra, int elform = 1, bool shell = false) {
 // EXCL blank, equal to EXCL, MXPRES at 0 always), NUMFIP and NCS (blank: 1), FAILTM < 0 as
 // |FAILTM|; the optional cards at their defaults; written and read back the same.
 TEST(KeywordAddErosion, ReadsTheCriteriaBuilt) {
-  const auto m = read_keyword_string(kMat + "*MAT_ADD_EROSION_TITLE\nbrittle\n1,,5.0,,,,-40,2\n-3.0,15.0,20.0,,,,,-0.5\n"
+  const auto m = read_keyword_string(kMat + "*MAT_ADD_EROSION_TITLE\nbrittle\n1,,5.0,-0.2,0.3,-0.1,-40,2\n"
+                                            "-3.0,15.0,20.0,0.25,0.12,,,-0.5\n"
                                             "0,,,,1.0,,1.0\n,10\n,0.5\n",
                                      "p.k", nullptr);
   ASSERT_EQ(m.add_erosions.size(), 1u);
@@ -63,6 +64,11 @@ TEST(KeywordAddErosion, ReadsTheCriteriaBuilt) {
   EXPECT_EQ(a.sigp1, 15.0);
   EXPECT_EQ(a.sigvm, 20.0);
   EXPECT_EQ(a.failtm, 0.5);
+  EXPECT_EQ(a.mneps, -0.2);
+  EXPECT_EQ(a.effeps, 0.3);
+  EXPECT_EQ(a.voleps, -0.1);
+  EXPECT_EQ(a.mxeps, 0.25);
+  EXPECT_EQ(a.epssh, 0.12);
   EXPECT_EQ(a.numfip, -40.0);
   EXPECT_EQ(a.ncs, 2);
   const auto back = read_keyword_string(write_keyword_string(m), "w.k", nullptr);
@@ -78,6 +84,21 @@ TEST(KeywordAddErosion, ReadsTheCriteriaBuilt) {
   EXPECT_EQ(e.add_erosions[0].mnpres, 0.0);
   EXPECT_FALSE(e.add_erosions[0].sigvm);
   EXPECT_FALSE(e.add_erosions[0].failtm);
+  EXPECT_FALSE(e.add_erosions[0].mneps);
+  EXPECT_FALSE(e.add_erosions[0].effeps);
+  EXPECT_FALSE(e.add_erosions[0].voleps);
+  EXPECT_FALSE(e.add_erosions[0].mxeps);
+  EXPECT_FALSE(e.add_erosions[0].epssh);
+  // EXCL 9: a blank MXEPS or EPSSH is 0, not 9: a threshold (met at rest); MNEPS, EFFEPS, VOLEPS
+  // (and MXPRES) at 0 are excluded whatever EXCL, and so is FAILTM (birdball.k's card 2 leaves it
+  // blank with EXCL 888).
+  const auto z = read_keyword_string(kMat + "*MAT_ADD_EROSION\n1,9,9,,,\n9,9,20,,,9,9\n", "p.k", nullptr);
+  EXPECT_FALSE(z.add_erosions[0].failtm);
+  EXPECT_EQ(z.add_erosions[0].mxeps, 0.0);
+  EXPECT_EQ(z.add_erosions[0].epssh, 0.0);
+  EXPECT_FALSE(z.add_erosions[0].mneps);
+  EXPECT_FALSE(z.add_erosions[0].effeps);
+  EXPECT_FALSE(z.add_erosions[0].voleps);
 }
 
 // Each criterion not built, when not excluded, is refused naming file, line, card, field and value.
@@ -86,18 +107,15 @@ TEST(KeywordAddErosion, RefusesWhatIsNotBuilt) {
     const std::string what = thrown(kMat + "*MAT_ADD_EROSION\n" + cards);
     EXPECT_NE(what.find(expected), std::string::npos) << what << "\n  expected: " << expected;
   };
-  refused("1,,,0.1\n,,20\n", "p.k:4: *MAT_ADD_EROSION: card 1 field MNEPS = 0.1");
-  refused("1,,,,0.2\n,,20\n", "p.k:4: *MAT_ADD_EROSION: card 1 field EFFEPS = 0.2");
-  refused("1,,,,,-0.3\n,,20\n", "p.k:4: *MAT_ADD_EROSION: card 1 field VOLEPS = -0.3");
-  refused("1\n,,20,0.4\n", "p.k:5: *MAT_ADD_EROSION: card 2 field MXEPS = 0.4");
-  refused("1\n,,20,,0.5\n", "p.k:5: *MAT_ADD_EROSION: card 2 field EPSSH = 0.5");
+  refused("1,,,,-0.2\n,,20\n", "p.k:4: *MAT_ADD_EROSION: card 1 field EFFEPS = -0.2 must be positive");
+  refused("1\n,,20,-4\n", "p.k:5: *MAT_ADD_EROSION: card 2 field MXEPS = -4 (a curve of the failure strain");
+  refused("1\n,,20,,-0.5\n", "p.k:5: *MAT_ADD_EROSION: card 2 field EPSSH = -0.5 must be positive");
   refused("1\n,,20,,,100\n", "p.k:5: *MAT_ADD_EROSION: card 2 field SIGTH = 100");
   refused("1\n,,20,,,,3\n", "p.k:5: *MAT_ADD_EROSION: card 2 field IMPULSE = 3");
   refused("1\n,-7\n", "p.k:5: *MAT_ADD_EROSION: card 2 field SIGP1 = -7");
   refused("1\n,,-8\n", "p.k:5: *MAT_ADD_EROSION: card 2 field SIGVM = -8");
-  // EXCL 9: a blank MXEPS is 0, not 9: a criterion, refused (MNEPS, EFFEPS, VOLEPS and MXPRES at 0
-  // are excluded whatever EXCL).
-  refused("1,9,9,,9,9\n9,9,20,,9,9,9,9\n", "p.k:5: *MAT_ADD_EROSION: card 2 field MXEPS = 0 (blank)");
+  // EXCL 9: a blank SIGTH is 0, not 9: a criterion, refused.
+  refused("1,9,9,9,9,9\n9,9,20,9,9,,9,9\n", "p.k:5: *MAT_ADD_EROSION: card 2 field SIGTH = 0 (blank)");
   refused("1\n,,20\n-1\n", "p.k:6: *MAT_ADD_EROSION: card 3 field IDAM = -1");
   refused("1\n,,20\n\n5\n", "p.k:7: *MAT_ADD_EROSION: card 4 field LCFLD = 5");
   refused("1\n,,20\n\n\n,,,1e-6\n", "p.k:8: *MAT_ADD_EROSION: card 5 field DTMIN = 1e-6");
@@ -106,6 +124,16 @@ TEST(KeywordAddErosion, RefusesWhatIsNotBuilt) {
   refused("1,,,,,,1.5\n,,20\n", "p.k:4: *MAT_ADD_EROSION: card 1 field NUMFIP = 1.5");
   refused("1\n\n", "p.k:4: *MAT_ADD_EROSION: no criterion is set");
   refused("1\n", "p.k:4: *MAT_ADD_EROSION: card 2");
+}
+
+// ERODE of *CONTROL_TIMESTEP: 1 is read and written back; another value is refused naming file,
+// line, field and value.
+TEST(KeywordAddErosion, ErodeFlagOfControlTimestep) {
+  const auto m = read_keyword_string("*CONTROL_TIMESTEP\n,,,,,,1\n", "p.k", nullptr);
+  EXPECT_EQ(m.timestep.erode, 1);
+  EXPECT_EQ(read_keyword_string(write_keyword_string(m), "w.k", nullptr).timestep.erode, 1);
+  const std::string what = thrown("*CONTROL_TIMESTEP\n,,,,,,2\n");
+  EXPECT_NE(what.find("p.k:2: *CONTROL_TIMESTEP card 1: field ERODE = 2 must be 0 or 1"), std::string::npos) << what;
 }
 
 // At the build: a MID that the deck does not define or that is rigid, a second card for one MID,
@@ -133,6 +161,12 @@ TEST(KeywordAddErosion, RefusedAtTheBuild) {
             std::string::npos)
       << what;
   EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1,,,,,,-50\n,,20\n"), true), "(no error)");  // 50% of one point
+  EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1,,,-0.1,0.2,0.1\n,,,0.3,0.2\n"), true), "(no error)");
+  what = thrown(deck("*MAT_ADD_EROSION\n1\n,,20,0.3\n", 1, true), true);
+  EXPECT_NE(what.find("the strain criteria of *MAT_ADD_EROSION (MNEPS, EFFEPS, VOLEPS, MXEPS, EPSSH) on shells are not"
+                      " implemented"),
+            std::string::npos)
+      << what;
   what = thrown(deck("*MAT_ADD_EROSION\n1\n,,20\n", 10), true);
   EXPECT_NE(what.find("*MAT_ADD_EROSION on tetrahedra (ELFORM 10) are not implemented"), std::string::npos) << what;
 }

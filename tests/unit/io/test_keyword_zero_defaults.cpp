@@ -198,7 +198,6 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       // Fields of the other cards that the model does not store (they were read and dropped).
       {"*PART\n\n" + card({"1", "1", "1", "", "", "", "1"}, ""), "u.k:3: *PART card 2: field ADPOPT = 1"},
       {"*CONTROL_TERMINATION\n" + card({"1", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_TERMINATION card 1: field NOSOL = 1"},
-      {"*CONTROL_TIMESTEP\n" + card({"", "", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_TIMESTEP card 1: field ERODE = 1"},
       {"*CONTROL_TIMESTEP\n" + card({}, "") + card({"", "", "1"}, ""), "u.k:3: *CONTROL_TIMESTEP card 2: field IMSCL = 1"},
       {"*CONTROL_TIMESTEP\n" + card({}, "") + card({"0.5"}, ""), "u.k:3: *CONTROL_TIMESTEP card 2: field DT2MSF = 0.5"},
       {"*CONTROL_BULK_VISCOSITY\n" + card({"", "", "2"}, ""), "u.k:2: *CONTROL_BULK_VISCOSITY card 1: field TYPE = 2"},
