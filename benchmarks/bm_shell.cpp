@@ -16,7 +16,8 @@ using namespace slideline;
 namespace {
 
 /// A warped n x n plate of shells, loaded and moving so that every kernel term is active.
-std::unique_ptr<Simulation> make_plate(int n) {
+/// `dt2ms` != 0: mass scaling, every cycle when `every_cycle` (MS1ST = 0), else once (MS1ST = 1).
+std::unique_ptr<Simulation> make_plate(int n, Real dt2ms = 0.0, bool every_cycle = false) {
   SimulationSetup setup;
   const int np = n + 1;
   setup.nodes.resize(static_cast<std::size_t>(np) * np);
@@ -49,6 +50,8 @@ std::unique_ptr<Simulation> make_plate(int n) {
   d.alpha = 15.0;
   setup.damping.push_back(d);
   setup.controls.end_time = 1e30;
+  setup.controls.dt2ms = dt2ms;
+  setup.controls.mass_scaling_every_cycle = every_cycle;
   auto sim = std::make_unique<Simulation>(std::move(setup));
   return sim;
 }
@@ -87,6 +90,19 @@ void BM_ShellSimulationStep(benchmark::State& state) {
   set_rate(state, sim->element_count());
 }
 
+/// The full step with mass scaling, DT2MS = -2 x the elements' step at rest (len = A / diagonal =
+/// 1 / (sqrt 2 n), c = sqrt(E / (rho (1 - nu^2)))): every shell scaled x 4, mass and rotary inertia.
+/// Argument 2: MS1ST (1 scaled once, 0 re-evaluated every cycle).
+void BM_ShellStepMassScaling(benchmark::State& state) {
+  set_threads(static_cast<int>(state.range(1)));
+  const int n = side(state.range(0));
+  const Real c = std::sqrt(1000.0 / (0.1 * (1.0 - 0.3 * 0.3)));
+  auto sim = make_plate(n, -2.0 / (std::sqrt(2.0) * n * c), state.range(2) == 0);
+  sim->initialize();
+  for (auto _ : state) benchmark::DoNotOptimize(sim->step());
+  set_rate(state, sim->element_count());
+}
+
 // Elements x threads. 10^6 runs only a few iterations (MinTime keeps it short).
 void sizes(benchmark::internal::Benchmark* b) {
   for (std::int64_t n : {1000, 10000, 100000, 1000000})
@@ -101,3 +117,9 @@ void sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_ShellInternalForces)->Apply(sizes);
 BENCHMARK(BM_ShellSimulationStep)->Apply(sizes);
+BENCHMARK(BM_ShellStepMassScaling)
+    ->ArgsProduct({{10000, 100000}, {1}, {1, 0}})
+    ->ArgNames({"elements", "threads", "ms1st"})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.2)
+    ->UseRealTime();

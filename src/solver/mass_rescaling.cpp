@@ -8,7 +8,8 @@
 namespace slideline {
 
 void MassRescaling::initialize(ElementBlocks& blocks, NodalFields& nodes, const NodeSlots& slots, Index corner_count,
-                               Real dt2ms, std::vector<PartAddedMass>& parts) {
+                               const NodeSlots& moment_slots, Index moment_count, Real dt2ms,
+                               std::vector<PartAddedMass>& parts) {
   active_ = true;
   dt2ms_ = dt2ms;
   blocks_.clear();
@@ -23,6 +24,14 @@ void MassRescaling::initialize(ElementBlocks& blocks, NodalFields& nodes, const 
   scaled_nodes_.erase(std::unique(scaled_nodes_.begin(), scaled_nodes_.end()), scaled_nodes_.end());
   base_mass_ = nodes.mass;
   corner_added_.assign(static_cast<std::size_t>(corner_count), 0.0);
+  base_inertia_.clear();
+  corner_inertia_.clear();
+  moment_slots_ = nullptr;
+  if (moment_count > 0) {
+    base_inertia_ = nodes.rot_inertia;
+    corner_inertia_.assign(static_cast<std::size_t>(moment_count), 0.0);
+    moment_slots_ = &moment_slots;
+  }
   chunk_dk_.assign(static_cast<std::size_t>(chunk_count(static_cast<Index>(nodes.size()))), 0.0);
   rescale(blocks, nodes, slots, true, parts);
 }
@@ -35,7 +44,11 @@ MassRescaling::Result MassRescaling::rescale(ElementBlocks& blocks, NodalFields&
     ElementBlock& b = *blocks[k];
     const auto own = std::span<Real>(corner_added_).subspan(static_cast<std::size_t>(b.force_slot_base()),
                                                              b.connectivity().size());
-    const RescaledBlock rb = b.rescale_element_masses(dt2ms_, at_reference, nodes, own);
+    const auto own_inertia = b.has_moments() && !corner_inertia_.empty()
+                                 ? std::span<Real>(corner_inertia_).subspan(static_cast<std::size_t>(b.moment_slot_base()),
+                                                                            b.connectivity().size())
+                                 : std::span<Real>();
+    const RescaledBlock rb = b.rescale_element_masses(dt2ms_, at_reference, nodes, own, own_inertia);
     PartAddedMass& p = parts[k];
     p.added = rb.added;
     p.scaled = rb.scaled;
@@ -57,6 +70,15 @@ MassRescaling::Result MassRescaling::rescale(ElementBlocks& blocks, NodalFields&
       const Real dm = m - nodes.mass[i];
       if (dm != 0.0) dk += 0.5 * dm * nodes.v.get(i).squaredNorm();
       nodes.mass[i] = m;
+      if (moment_slots_) {  // shells: the rotary inertia, scaled with the mass
+        const NodeSlots& ms = *moment_slots_;
+        Real j = base_inertia_[static_cast<std::size_t>(i)];
+        for (Index s = ms.offset[i]; s < ms.offset[i + 1]; ++s)
+          j += corner_inertia_[static_cast<std::size_t>(ms.slot[s])];
+        const Real dj = j - nodes.rot_inertia[i];
+        if (dj != 0.0 && nodes.has_rotation[i]) dk += 0.5 * dj * nodes.omega.get(i).squaredNorm();
+        nodes.rot_inertia[i] = j;
+      }
     }
     chunk_dk_[static_cast<std::size_t>(chunk)] = dk;
   });

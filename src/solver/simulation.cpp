@@ -124,7 +124,8 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
   has_rotations_ = std::any_of(nodes_.has_rotation.begin(), nodes_.has_rotation.end(),
                                [](std::uint8_t r) { return r != 0; });
   if (controls_.dt2ms != 0.0 && controls_.mass_scaling_every_cycle)
-    rescaling_.initialize(blocks_, nodes_, corners_.force_slots, fbase, controls_.dt2ms, added_mass_);
+    rescaling_.initialize(blocks_, nodes_, corners_.force_slots, fbase, corners_.moment_slots, mbase, controls_.dt2ms,
+                          added_mass_);
   check_added_mass();
   return block_mass;
 }

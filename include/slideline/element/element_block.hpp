@@ -148,10 +148,13 @@ class ElementBlock : public MeshBlock {
   /// MS1ST = 0: re-evaluates every element's factor mass_scale_factor(dt_e, dt2ms) from its step
   /// dt_e at the last compute_forces (`at_reference`: from reference_steps instead, at the start),
   /// writes the mass each element adds to each of its corners (its physical mass / corners x
-  /// (factor - 1)) into `corner_added` (the block's own corner slots, from 0), and multiplies the
-  /// step it votes from the next compute_forces on by sqrt(factor). Allocates nothing.
+  /// (factor - 1)) into `corner_added` (the block's own corner slots, from 0) and, for a block with
+  /// moments, the rotary inertia it adds (its lumped rotary inertia per corner x (factor - 1)) into
+  /// `corner_inertia` (its own moment slots, from 0; empty for a block without moments), and
+  /// multiplies the step it votes from the next compute_forces on by sqrt(factor). Allocates
+  /// nothing.
   virtual RescaledBlock rescale_element_masses(Real /*dt2ms*/, bool /*at_reference*/, const NodalFields& /*nodes*/,
-                                               std::span<Real> /*corner_added*/) {
+                                               std::span<Real> /*corner_added*/, std::span<Real> /*corner_inertia*/) {
     throw NotImplementedError("part " + std::to_string(part_id()) + ": mass scaling every cycle is not implemented");
   }
 

@@ -28,6 +28,16 @@ inline Real mass_scale_factor(Real dt_e, Real dt2ms) {
   return r * r;
 }
 
+/// An element loop's step with mass scaling (element-by-element blocks: TetBlock, FullHexBlock):
+/// keeps r.dt, the step before any factor, in raw[e] (mass scaling every cycle; null: off) and
+/// returns r with its step times factor[e] (null: no factor).
+template <class R>
+R with_step_factor(R r, Index e, Real* raw, const Real* factor) {
+  if (raw) raw[e] = r.dt;
+  if (factor) r.dt *= factor[e];
+  return r;
+}
+
 /// What one re-evaluation did to a block.
 struct RescaledBlock {
   Real added = 0.0;  ///< mass the block's elements add now (negative: removed, DT2MS > 0)
@@ -61,6 +71,28 @@ class ElementMassScaling {
   template <class ElementMass>
   RescaledBlock rescale(Index elements, int corners, Real dt2ms, ElementMass&& element_mass, Real* step_factor,
                         std::span<Real> corner_added) {
+    return rescale_corners(
+        elements, dt2ms,
+        [&](Index e) { return CornerShare{element_mass(e) / corners, 0.0, corners * e, corners}; }, step_factor,
+        corner_added, {});
+  }
+
+  /// One element's lumped share per corner: its physical mass and rotary inertia per corner, its
+  /// first corner slot (in the block's own slots, from 0) and its number of corners.
+  struct CornerShare {
+    Real mass = 0.0;
+    Real inertia = 0.0;
+    Index first = 0;
+    int corners = 0;
+  };
+
+  /// The general form, for blocks whose elements differ in corners (shells with triangles) or
+  /// carry rotary inertia: `share(e)` gives element e's CornerShare; each of its corners gets
+  /// share.mass (f_e - 1) in `corner_added` and, when `corner_inertia` is not empty (the block's
+  /// moment slots, laid out as its force slots), share.inertia (f_e - 1) in `corner_inertia`.
+  template <class Share>
+  RescaledBlock rescale_corners(Index elements, Real dt2ms, Share&& share, Real* step_factor,
+                                std::span<Real> corner_added, std::span<Real> corner_inertia) {
     parallel_for_chunks(elements, [&](Index b, Index end, Index chunk) {
       Real added = 0.0, step = std::numeric_limits<Real>::max(), raw = std::numeric_limits<Real>::max();
       Index scaled = 0;
@@ -69,9 +101,14 @@ class ElementMassScaling {
         const Real f = mass_scale_factor(dt, dt2ms);
         const Real s = std::sqrt(f);
         step_factor[e] = s;
-        const Real dm = element_mass(e) / corners * (f - 1.0);
-        for (int k = 0; k < corners; ++k) corner_added[static_cast<std::size_t>(corners * e + k)] = dm;
-        added += corners * dm;
+        const CornerShare c = share(e);
+        const Real dm = c.mass * (f - 1.0);
+        for (int k = 0; k < c.corners; ++k) corner_added[static_cast<std::size_t>(c.first + k)] = dm;
+        if (!corner_inertia.empty()) {
+          const Real dj = c.inertia * (f - 1.0);
+          for (int k = 0; k < c.corners; ++k) corner_inertia[static_cast<std::size_t>(c.first + k)] = dj;
+        }
+        added += c.corners * dm;
         raw = std::min(raw, dt);
         step = std::min(step, dt * s);
         if (f != 1.0) ++scaled;

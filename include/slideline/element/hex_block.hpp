@@ -191,7 +191,7 @@ class HexBlock final : public ElementBlock {
   }
   /// ElementBlock::rescale_element_masses: element e's physical mass rho V0 over its 8 corners.
   RescaledBlock rescale_element_masses(Real dt2ms, bool at_reference, const NodalFields& nodes,
-                                       std::span<Real> corner_added) override {
+                                       std::span<Real> corner_added, std::span<Real> /*corner_inertia*/) override {
     if (at_reference) reference_steps(nodes, rescaling_.raw_steps_span(element_count()));
     const Real rho = mat_.density();
     return rescaling_.rescale(element_count(), 8, dt2ms, [&](Index e) { return rho * volume0_[e]; },

@@ -20,6 +20,7 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/shell_bt.hpp"
 #include "slideline/element/shell_c0tri.hpp"
+#include "slideline/element/shell_thickness.hpp"
 #include "slideline/material/elastic_shell.hpp"
 #include "slideline/material/shell_material.hpp"
 
@@ -127,36 +128,60 @@ class BasicShellBlock final : public ElementBlock {
   }
 
   /// ElementBlock::reference_steps: len / (q + sqrt(q^2 + c^2)) at the reference geometry, q the
-  /// stiffness-damping term only (no bulk viscosity at rest).
+  /// stiffness-damping term only (no bulk viscosity at rest); a triangle's len as its element loop
+  /// takes it (the smaller of its membrane length and its bending / shear bound).
   void reference_steps(const NodalFields& nodes, std::span<Real> out) const override {
     const Real c = mat_.wave_speed();
     for (Index e = 0; e < element_count(); ++e) {
-      const shell_bt::NodeMat X0 = gather(nodes.x0, e);
-      const Real len = shell_bt::characteristic_length(X0, area0_[e]);
+      const Real len = e < nq_ ? shell_bt::characteristic_length(gather(nodes.x0, e), area0_[e])
+                               : triangle_step_length(shell_c0tri::local_geometry(gather_triangle(nodes.x0, e)), e);
       const Real q = damping_.beta * c * c / len;
       out[static_cast<std::size_t>(e)] = len / (q + std::sqrt(q * q + c * c));
     }
   }
 
-  /// ElementBlock::scale_element_masses: element e's mass rho A0 t / 4 and rotary inertia per
-  /// corner times factor[e].
+  /// Element e's lumped share per corner (LS-DYNA's rule, as initialize() lumps it): mass rho A0 t /
+  /// 4 (a triangle: / 3) and rotary inertia that mass x max(t^2, A0) / 12; with its corner slots.
+  ElementMassScaling::CornerShare corner_share(Index e) const {
+    const Real t = sec_.thickness;
+    const bool quad = e < nq_;
+    const Real m = mat_.density() * area0_[e] * t / (quad ? 4.0 : 3.0);
+    return {m, m * std::max(t * t, area0_[e]) / 12.0, quad ? 4 * e : 4 * nq_ + 3 * (e - nq_), quad ? 4 : 3};
+  }
+
+  /// ElementBlock::scale_element_masses: element e's mass and rotary inertia per corner
+  /// (corner_share) times factor[e]: the rotary inertia is scaled with the mass, as LS-DYNA's
+  /// lumping keeps it proportional to the mass.
   Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
     const Index ne = element_count();
-    const Real t = sec_.thickness;
     step_factor_.assign(ne, 1.0);
     Real added = 0.0;
     for (Index e = 0; e < ne; ++e) {
       const Real f = factor[static_cast<std::size_t>(e)];
-      const Real m = mat_.density() * area0_[e] * t / 4.0;
-      const Real dm = m * (f - 1.0), dj = m * std::max(t * t, area0_[e]) / 12.0 * (f - 1.0);
-      for (int k = 0; k < 4; ++k) {
-        nodes.mass[conn_[4 * e + k]] += dm;
-        nodes.rot_inertia[conn_[4 * e + k]] += dj;
+      const ElementMassScaling::CornerShare c = corner_share(e);
+      const Real dm = c.mass * (f - 1.0), dj = c.inertia * (f - 1.0);
+      for (int k = 0; k < c.corners; ++k) {
+        nodes.mass[conn_[c.first + k]] += dm;
+        nodes.rot_inertia[conn_[c.first + k]] += dj;
       }
-      added += 4.0 * dm;
+      added += c.corners * dm;
       step_factor_[e] = std::sqrt(f);
     }
     return added;
+  }
+
+  /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.
+  void enable_mass_rescaling() override {
+    rescaling_.enable(element_count(), element_count());
+    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
+  }
+  /// ElementBlock::rescale_element_masses: each corner gets corner_share's mass and rotary inertia
+  /// times (f_e - 1) (the moment slots are laid out as the force slots).
+  RescaledBlock rescale_element_masses(Real dt2ms, bool at_reference, const NodalFields& nodes,
+                                       std::span<Real> corner_added, std::span<Real> corner_inertia) override {
+    if (at_reference) reference_steps(nodes, rescaling_.raw_steps_span(element_count()));
+    return rescaling_.rescale_corners(element_count(), dt2ms, [&](Index e) { return corner_share(e); },
+                                      step_factor_.data(), corner_added, corner_inertia);
   }
 
   /// Forces and moments at x^n with velocities and angular velocities at t^{n-1/2}: the stress
@@ -188,6 +213,7 @@ class BasicShellBlock final : public ElementBlock {
       for (Index e = b; e < end; ++e) {
         if (erosion_.active() && erosion_.deleted(e)) {  // no forces, no step; its nodes may be anywhere
           store_element(e, shell_bt::NodeMat::Zero(), shell_bt::NodeMat::Zero(), corners);
+          if (Real* raw = rescaling_.raw_steps()) raw[e] = std::numeric_limits<Real>::max();  // adds no mass
           continue;
         }
         const ElementResult r = e >= nq_ ? triangle_forces<damped>(nodes, dt, e, corners)
@@ -240,7 +266,8 @@ class BasicShellBlock final : public ElementBlock {
     }
     const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
     shell_bt::Resultants r;
-    [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr, dt, r, sec_.shear_factor);
+    [[maybe_unused]] const Real damp = shell_thickness::integrate<damped>(mat_, rule_, sec_.thickness, damping_.beta,
+        state_.data() + static_cast<std::size_t>(e) * rule_.n, sr, dt, r, sec_.shear_factor);
     // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
     const Real len = shell_bt::characteristic_length(X, g.area);
     Real qdt = bulk_viscosity(sr, len, g.area, r, out.p_visc);
@@ -256,11 +283,14 @@ class BasicShellBlock final : public ElementBlock {
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
     out.dt = len / (qdt + std::sqrt(qdt * qdt + c * c));
+    Real* raw = rescaling_.raw_steps();
+    if (raw) raw[e] = out.dt;  // mass scaling every cycle (enable_mass_rescaling)
     if (!step_factor_.empty()) out.dt *= step_factor_[e];  // mass scaling (scale_element_masses)
     if (erosion_.active() && !out.bad &&
         erode(e, chunk, out.p_all - out.p_visc - out.p_damp - out.p_hg, out.p_hg, dt, out.dt)) {
       out.deleted = true;
       out.dt = 0.0;
+      if (raw) raw[e] = std::numeric_limits<Real>::max();  // deleted: adds no mass from now on
       store_element(e, shell_bt::NodeMat::Zero(), shell_bt::NodeMat::Zero(), corners);
       return out;
     }
@@ -306,7 +336,8 @@ class BasicShellBlock final : public ElementBlock {
     const shell_c0tri::StrainRates sr = shell_c0tri::strain_rates(gm, V * gm.e, W * gm.e);
     shell_bt::Resultants r;
     const Real kappa = shell_c0tri::stabilised_shear_factor(gm, sec_.shear_factor, sec_.thickness);
-    [[maybe_unused]] const Real damp = integrate_thickness<damped>(e, sr.s, dt, r, kappa);
+    [[maybe_unused]] const Real damp = shell_thickness::integrate<damped>(mat_, rule_, sec_.thickness, damping_.beta,
+        state_.data() + static_cast<std::size_t>(e) * rule_.n, sr.s, dt, r, kappa);
     // The shear's rotational part: elastic, kappa G t I_p / A per unit area (shell_c0tri.hpp).
     const Real kc = kappa * mat_.shear_modulus() * sec_.thickness * gm.polar;
     Real& c_int = tri_c_[static_cast<std::size_t>(e - nq_)];
@@ -315,12 +346,7 @@ class BasicShellBlock final : public ElementBlock {
     const Real c = mat_.wave_speed();
     const PlaneStressStiffness cs = mat_.stiffness();
     const Real len = shell_c0tri::characteristic_length(g, cs.c11, cs.g);
-    // The bending / shear modes' bound, as a length for the same formula (2 c / omega).
-    const Real t = sec_.thickness;
-    const Real m_node = mat_.density() * area0_[e] * t / 3.0;
-    const Real w2 = shell_c0tri::bending_omega2_bound(g, cs.c11, cs.g, kappa, t, m_node,
-                                                      m_node * std::max(t * t, area0_[e]) / 12.0);
-    const Real len_dt = std::min(len, 2.0 * c / std::sqrt(w2));
+    const Real len_dt = triangle_step_length(g, e, kappa, len);
     Real qdt = bulk_viscosity(sr.s, len, g.area, r, out.p_visc);
     if constexpr (damped) {
       const Real dc = damping_.beta * kc * sr.shear_c;
@@ -335,6 +361,8 @@ class BasicShellBlock final : public ElementBlock {
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
     out.dt = len_dt / (qdt + std::sqrt(qdt * qdt + c * c));
+    if (Real* raw = rescaling_.raw_steps()) raw[e] = out.dt;  // mass scaling every cycle
+    if (!step_factor_.empty()) out.dt *= step_factor_[e];  // mass scaling (scale_element_masses)
     const Index s0 = force_slot_base() + 4 * nq_ + 3 * (e - nq_);
     const Index m0 = moment_slot_base() + 4 * nq_ + 3 * (e - nq_);
     for (int k = 0; k < 3; ++k) {
@@ -346,6 +374,23 @@ class BasicShellBlock final : public ElementBlock {
       corners.moment.z[m0 + k] = m(k, 2);
     }
     return out;
+  }
+
+  /// The length triangle e's step formula takes at geometry `g`: the smaller of its membrane
+  /// length `len` and its bending / shear modes' bound 2 c / omega (shear factor `kappa`).
+  Real triangle_step_length(const shell_c0tri::LocalGeometry& g, Index e, Real kappa, Real len) const {
+    const PlaneStressStiffness cs = mat_.stiffness();
+    const Real t = sec_.thickness;
+    const Real m_node = mat_.density() * area0_[e] * t / 3.0;
+    const Real w2 = shell_c0tri::bending_omega2_bound(g, cs.c11, cs.g, kappa, t, m_node,
+                                                      m_node * std::max(t * t, area0_[e]) / 12.0);
+    return std::min(len, 2.0 * mat_.wave_speed() / std::sqrt(w2));
+  }
+  /// The same at rest (the reference step): the shear factor and membrane length of `g` itself.
+  Real triangle_step_length(const shell_c0tri::LocalGeometry& g, Index e) const {
+    const PlaneStressStiffness cs = mat_.stiffness();
+    return triangle_step_length(g, e, shell_c0tri::stabilised_shear_factor(g, sec_.shear_factor, sec_.thickness),
+                                shell_c0tri::characteristic_length(g, cs.c11, cs.g));
   }
 
   /// Triangle e's lumped mass rho A t / 3 per node and the quad's rotary inertia scaling.
@@ -384,54 +429,6 @@ class BasicShellBlock final : public ElementBlock {
     conn_ = std::move(conn);
     ids_ = std::move(ids);
     tri_c_.assign(tri_ids.size(), 0.0);
-  }
-
-  /// Advances the law's state at every through-thickness point of element e with the strain rates
-  /// `sr` over dt and integrates the stresses into the resultants `r` (which start at zero). When
-  /// damped, adds the Rayleigh stiffness-damping stress beta (C : strain rate) to the resultants
-  /// only, and returns its power per unit area.
-  template <bool damped>
-  Real integrate_thickness(Index e, const shell_bt::StrainRates& sr, Real dt, shell_bt::Resultants& r,
-                           Real kappa) {
-    const Real half_t = 0.5 * sec_.thickness;
-    [[maybe_unused]] const Real beta = damping_.beta;
-    [[maybe_unused]] const PlaneStressStiffness cs = mat_.stiffness();
-    [[maybe_unused]] const Real gs = kappa * cs.g;
-    Real damp = 0.0;
-    State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
-    for (int ip = 0; ip < rule_.n; ++ip) {
-      const Real z = rule_.xi[ip] * half_t;
-      const Real wz = rule_.w[ip] * half_t;  // dz weight
-      const ShellRate rate{sr.membrane[0] + z * sr.curvature[0], sr.membrane[1] + z * sr.curvature[1],
-                           sr.membrane[2] + z * sr.curvature[2], sr.shear[0], sr.shear[1]};
-      const ShellStress s = mat_.update(st[ip], rate, dt, kappa);
-      r.n[0] += wz * s[0];
-      r.n[1] += wz * s[1];
-      r.n[2] += wz * s[2];
-      r.m[0] += wz * z * s[0];
-      r.m[1] += wz * z * s[1];
-      r.m[2] += wz * z * s[2];
-      r.q[0] += wz * s[3];
-      r.q[1] += wz * s[4];
-      if constexpr (damped) {
-        const Real rxx = rate.xx, ryy = rate.yy, rxy = rate.xy;
-        const Real d0 = beta * (cs.c11 * rxx + cs.c12 * ryy);
-        const Real d1 = beta * (cs.c12 * rxx + cs.c11 * ryy);
-        const Real d2 = beta * cs.g * rxy;
-        const Real d3 = beta * gs * sr.shear[0];
-        const Real d4 = beta * gs * sr.shear[1];
-        r.n[0] += wz * d0;
-        r.n[1] += wz * d1;
-        r.n[2] += wz * d2;
-        r.m[0] += wz * z * d0;
-        r.m[1] += wz * z * d1;
-        r.m[2] += wz * z * d2;
-        r.q[0] += wz * d3;
-        r.q[1] += wz * d4;
-        damp += wz * (d0 * rxx + d1 * ryy + d2 * rxy + d3 * sr.shear[0] + d4 * sr.shear[1]);
-      }
-    }
-    return damp;
   }
 
   /// Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes of element e
@@ -528,9 +525,9 @@ class BasicShellBlock final : public ElementBlock {
       const Mat3 ge = frame(nodes, e);
       const State* st = state_.data() + static_cast<std::size_t>(e) * n;
       CellOutput& c = out[static_cast<std::size_t>(e)];
-      c.stress_bottom = global_stress(ge, stress(e, 0));
-      c.stress_top = global_stress(ge, stress(e, n - 1));
-      const SymTensor6 a = global_stress(ge, stress(e, lo)), b = global_stress(ge, stress(e, hi));
+      c.stress_bottom = shell_bt::global_stress(ge, stress(e, 0));
+      c.stress_top = shell_bt::global_stress(ge, stress(e, n - 1));
+      const SymTensor6 a = shell_bt::global_stress(ge, stress(e, lo)), b = shell_bt::global_stress(ge, stress(e, hi));
       for (int k = 0; k < 6; ++k) c.stress[k] = 0.5 * (a[k] + b[k]);
       c.plastic_strain = 0.0;
       for (int ip = 0; ip < n; ++ip) c.plastic_strain = std::max(c.plastic_strain, plastic_strain_of(st[ip]));
@@ -564,15 +561,6 @@ class BasicShellBlock final : public ElementBlock {
   }
 
  private:
-  /// A point's local stress (xx, yy, xy, yz, xz; zz = 0) in global components, e = the
-  /// element's frame (columns e1, e2, e3).
-  static SymTensor6 global_stress(const Mat3& e, const Eigen::Matrix<Real, 5, 1>& s) {
-    Mat3 local;
-    local << s[0], s[2], s[4], s[2], s[1], s[3], s[4], s[3], 0.0;
-    const Mat3 g = e * local * e.transpose();
-    return {g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2)};
-  }
-
   shell_bt::NodeMat gather(const Vec3Field& f, Index e) const {
     return gather_rows<4>(f, conn_.data() + 4 * static_cast<std::size_t>(e));
   }
@@ -599,6 +587,7 @@ class BasicShellBlock final : public ElementBlock {
   std::vector<Index> conn_;
   std::vector<Id> ids_;
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
+  ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<Real> area0_;
   Index nq_ = 0;              ///< quadrilaterals; the triangles follow them
   std::vector<Real> tri_c_;   ///< per triangle, the time integral of the shear's rotational part c

@@ -22,6 +22,7 @@
 #include "slideline/core/error.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/element/block_options.hpp"
+#include "slideline/element/cell_output.hpp"
 
 namespace slideline::shell_bt {
 
@@ -247,5 +248,14 @@ struct ThicknessRule {
     return r;
   }
 };
+
+/// A point's local stress (xx, yy, xy, yz, xz; zz = 0) in global components, e = the element's
+/// frame (columns e1, e2, e3).
+inline SymTensor6 global_stress(const Mat3& e, const Eigen::Matrix<Real, 5, 1>& s) {
+  Mat3 local;
+  local << s[0], s[2], s[4], s[2], s[1], s[3], s[4], s[3], 0.0;
+  const Mat3 g = e * local * e.transpose();
+  return {g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2)};
+}
 
 }  // namespace slideline::shell_bt

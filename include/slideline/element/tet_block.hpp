@@ -108,16 +108,60 @@ class TetBlock final : public ElementBlock {
     const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
                                    corners.force.y.data() + force_slot_base(),
                                    corners.force.z.data() + force_slot_base()};
+    Real* raw = rescaling_.raw_steps();
+    const Real* factor = step_factor_.empty() ? nullptr : step_factor_.data();
     chunks_.scan(element_count(), [&](Index e) {
-      return eroding_element<Point>(
-          erosion_, e, dt, [&](Index k) { return element_forces(nodes, k, dt, out); },
+      const Point r = eroding_element<Point>(
+          erosion_, e, dt, [&](Index k) { return with_step_factor(element_forces(nodes, k, dt, out), k, raw, factor); },
           [&](Index k) { return plastic_strain_of(state_[k]); },
           [&](Index k) {
             for (int i = 0; i < 3; ++i) std::fill_n(out[i] + 4 * static_cast<std::size_t>(k), 4, 0.0);
           });
+      if (raw && r.dt == std::numeric_limits<Real>::max()) raw[e] = r.dt;  // deleted: adds no mass
+      return r;
     });
     if (erosion_.active()) energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
     return chunks_.reduce(energy, "tetrahedron", ids_, part_id_, "inverted (non-positive volume or non-finite force)");
+  }
+
+  /// ElementBlock::reference_steps: the element loop's step at the reference geometry at rest,
+  /// L = 3 V0 / A_max, with the stiffness-damping term (no bulk viscosity at rest).
+  void reference_steps(const NodalFields& nodes, std::span<Real> out) const override {
+    for (Index e = 0; e < element_count(); ++e) {
+      const std::array<Vec3, 4> x0 = gather(nodes.x0, e);
+      const Real len = 3.0 * volume0_[e] / tet4::max_face_area(x0);
+      out[static_cast<std::size_t>(e)] = solid_terms::stable_step(len, k_.beta * k_.c * k_.c / len, k_.c);
+    }
+  }
+
+  /// ElementBlock::scale_element_masses (MS1ST = 1): element e's rho V0 / 4 per corner times factor[e].
+  Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
+    const Index ne = element_count();
+    step_factor_.assign(static_cast<std::size_t>(ne), 1.0);
+    Real added = 0.0;
+    for (Index e = 0; e < ne; ++e) {
+      const Real f = factor[static_cast<std::size_t>(e)];
+      const Real dm = mat_.density() * volume0_[e] / 4.0 * (f - 1.0);
+      for (int k = 0; k < 4; ++k) nodes.mass[conn_[4 * e + k]] += dm;
+      added += 4.0 * dm;
+      step_factor_[e] = std::sqrt(f);
+    }
+    return added;
+  }
+
+  /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.
+  void enable_mass_rescaling() override {
+    rescaling_.enable(element_count(), element_count());
+    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
+  }
+  /// ElementBlock::rescale_element_masses (MS1ST = 0): element e's physical mass rho V0 over its
+  /// 4 corners.
+  RescaledBlock rescale_element_masses(Real dt2ms, bool at_reference, const NodalFields& nodes,
+                                       std::span<Real> corner_added, std::span<Real> /*corner_inertia*/) override {
+    if (at_reference) reference_steps(nodes, rescaling_.raw_steps_span(element_count()));
+    const Real rho = mat_.density();
+    return rescaling_.rescale(element_count(), 4, dt2ms, [&](Index e) { return rho * volume0_[e]; },
+                              step_factor_.data(), corner_added);
   }
 
   Id smallest_step_element() const override {
@@ -217,6 +261,8 @@ class TetBlock final : public ElementBlock {
   std::vector<State> state_;          ///< the law's state, one per element
   ElementChunks chunks_;  ///< per-chunk steps, failures and powers (sized at construction)
   ElementErosion erosion_;  ///< inactive unless enable_erosion
+  std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
+  ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
 };
 
 }  // namespace slideline

@@ -4,8 +4,10 @@
 /// elements get the factor mass_scale_factor(dt_e, DT2MS) of their current stable step dt_e, and the
 /// nodal masses are rebuilt as the physical mass (lumped once: elements, rigid parts, lumped masses)
 /// plus the mass the elements add, gathered per node over the corner slots in a fixed order (no
-/// atomics, thread-count independent). Changing a node's mass at its current (half-step) velocity
-/// changes the kinetic energy by 1/2 dm |v|^2: rescale() returns that sum for the energy ledger.
+/// atomics, thread-count independent); the rotary inertia of shell nodes likewise, over the moment
+/// slots (a shell element's inertia is scaled by its mass factor). Changing a node's mass at its
+/// current (half-step) velocity changes the kinetic energy by 1/2 dm |v|^2 (+ 1/2 dJ |omega|^2):
+/// rescale() returns that sum for the energy ledger.
 /// Everything is sized at initialize(); a step allocates nothing.
 #include <span>
 #include <vector>
@@ -31,13 +33,15 @@ class MassRescaling {
 
   bool active() const { return active_; }
 
-  /// At the start, once the blocks lumped their physical masses into `nodes.mass` and `slots`
-  /// (the corner gather lists of `corner_count` force slots) are built: enables every block that
-  /// bounds the step (ElementBlock::enable_mass_rescaling; the others, rigid parts, keep their
-  /// mass), sets the factors from the reference steps and rebuilds the masses. `parts[k]` (one per
-  /// block, its physical mass set) gets block k's added mass.
-  void initialize(ElementBlocks& blocks, NodalFields& nodes, const NodeSlots& slots, Index corner_count, Real dt2ms,
-                  std::vector<PartAddedMass>& parts);
+  /// At the start, once the blocks lumped their physical masses into `nodes.mass` (and rotary
+  /// inertias into `nodes.rot_inertia`) and `slots` (the corner gather lists of `corner_count`
+  /// force slots) and `moment_slots` (of `moment_count` moment slots; unused when 0) are built:
+  /// enables every block that bounds the step (ElementBlock::enable_mass_rescaling; the others,
+  /// rigid parts, keep their mass), sets the factors from the reference steps and rebuilds the
+  /// masses. `parts[k]` (one per block, its physical mass set) gets block k's added mass.
+  /// `moment_slots` must outlive this object unchanged.
+  void initialize(ElementBlocks& blocks, NodalFields& nodes, const NodeSlots& slots, Index corner_count,
+                  const NodeSlots& moment_slots, Index moment_count, Real dt2ms, std::vector<PartAddedMass>& parts);
 
   /// After the element forces at the current state: re-evaluates the factors from the steps the
   /// blocks just computed (`at_reference`: from their reference steps), rebuilds `nodes.mass` and
@@ -59,6 +63,10 @@ class MassRescaling {
   std::vector<std::size_t> blocks_;   ///< indices of the rescaled blocks
   std::vector<Real> base_mass_;       ///< per node, the physical mass
   std::vector<Real> corner_added_;    ///< per force slot, the mass its element adds to its node
+  // Rotary inertia (blocks with moments, shells): per node the physical one, per moment slot the
+  // inertia its element adds; empty without moment slots.
+  std::vector<Real> base_inertia_, corner_inertia_;
+  const NodeSlots* moment_slots_ = nullptr;
   std::vector<Real> chunk_dk_;        ///< per node chunk, sum of 1/2 dm |v|^2
   // Body loads: per load, per loaded node, its physical mass and (CSR) its slots in loaded blocks.
   struct LoadMasses {

@@ -328,18 +328,29 @@ TEST(Build, AddedMassAboveEndmasIsRefused) {
   }
 }
 
-// Mass scaling every cycle (MS1ST = 0, LS-DYNA's default) is built for hexahedra only: the shell
-// plate with DT2MS and MS1ST = 0 is refused at initialize(), naming MS1ST and the part.
-TEST(Build, ShellMassScalingEveryCycleIsRefused) {
-  model::Model m = plate_model(false);
-  m.timestep.dt2ms = -5e-3;
-  m.timestep.ms1st = 0;
-  try {
-    build_simulation(m)->initialize();
-    FAIL() << "expected NotImplementedError";
-  } catch (const NotImplementedError& e) {
-    EXPECT_NE(std::string(e.what()).find("MS1ST = 0"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("part 1"), std::string::npos) << e.what();
+// Mass scaling every cycle (MS1ST = 0, LS-DYNA's default) on the shell plate: at the start (the
+// plate at rest) it scales as MS1ST = 1 does: every element by f = (|DT2MS| / dt_e)^2, the rotary
+// inertia with the mass. The physical rotary inertia of an element is its mass x max(t^2, A) / 12
+// (A = 1/9 > t^2 = 0.01), summed 0.01 x (1/9) / 12 over the plate; scaled, f times that.
+TEST(Build, ShellMassScalingEveryCycleScalesMassAndRotaryInertia) {
+  const Real c = std::sqrt(1000.0 / (0.1 * (1.0 - 0.1 * 0.1)));
+  const Real dt_e = (1.0 / 9.0) / (std::sqrt(2.0) / 3.0) / c;
+  const Real f = (5e-3 / dt_e) * (5e-3 / dt_e);
+  for (int ms1st : {0, 1}) {
+    model::Model m = plate_model(false);
+    m.timestep.dt2ms = -5e-3;
+    m.timestep.ms1st = ms1st;
+    auto sim = build_simulation(m);
+    sim->initialize();
+    const auto& p = sim->added_mass().at(0);
+    EXPECT_EQ(p.scaled, 9) << ms1st;
+    EXPECT_NEAR(p.added, 0.01 * (f - 1.0), 1e-12) << ms1st;
+    EXPECT_NEAR(sim->stable_dt(), 5e-3, 1e-15) << ms1st;
+    Real mass = 0.0, inertia = 0.0;
+    for (Real mm : sim->nodes().mass) mass += mm;
+    for (Real j : sim->nodes().rot_inertia) inertia += j;
+    EXPECT_NEAR(mass, 0.01 * f, 1e-12) << ms1st;
+    EXPECT_NEAR(inertia, f * 0.01 * (1.0 / 9.0) / 12.0, 1e-14) << ms1st;
   }
 }
 
