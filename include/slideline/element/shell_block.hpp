@@ -59,7 +59,8 @@ class BasicShellBlock final : public ElementBlock {
                        ": the stiffness damping coefficient beta must not be negative");
     if (conn_.size() != 4 * ids_.size())
       throw InputError("shell part " + std::to_string(part_id_) + ": connectivity needs 4 nodes per element");
-    move_triangles_last();
+    nq_ = shell_c0tri::triangles_last(conn_, ids_);
+    tri_c_.assign(ids_.size() - static_cast<std::size_t>(nq_), 0.0);
     const Index ne = element_count();
     const Index nc = chunk_count(ne);
     chunk_dt_.assign(nc, 0.0);
@@ -409,26 +410,6 @@ class BasicShellBlock final : public ElementBlock {
       nodes.rot_inertia[c[k]] += j;
       nodes.has_rotation[c[k]] = 1;
     }
-  }
-
-  /// Moves the triangles (N3 = N4) after the quadrilaterals, each group in the deck's order, and
-  /// stores a triangle's three nodes only.
-  void move_triangles_last() {
-    std::vector<Index> conn, tri;
-    std::vector<Id> ids, tri_ids;
-    for (std::size_t e = 0; e < ids_.size(); ++e) {
-      const Index* n = conn_.data() + 4 * e;
-      const bool triangle = n[2] == n[3];
-      (triangle ? tri : conn).insert((triangle ? tri : conn).end(), n, n + (triangle ? 3 : 4));
-      (triangle ? tri_ids : ids).push_back(ids_[e]);
-    }
-    nq_ = static_cast<Index>(ids.size());
-    if (tri_ids.empty()) return;
-    conn.insert(conn.end(), tri.begin(), tri.end());
-    ids.insert(ids.end(), tri_ids.begin(), tri_ids.end());
-    conn_ = std::move(conn);
-    ids_ = std::move(ids);
-    tri_c_.assign(tri_ids.size(), 0.0);
   }
 
   /// Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes of element e

@@ -22,6 +22,9 @@
 /// (a, b), the shear at the centroid; the c part is elastic (kappa G t I_p / A per unit area).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
@@ -46,6 +49,27 @@ struct LocalGeometry {
   Real polar = 0.0;   ///< I_p / A = (sum x^2 + y^2) / 12 about the centroid (length^2)
   Real area = 0.0;    ///< area (length^2); <= 0 for a degenerate element
 };
+
+/// Moves the triangles (N3 = N4) of a shell connectivity (4 nodes per element, ids alongside)
+/// after the quadrilaterals, each group in its original order, keeping a triangle's three nodes
+/// only; returns the number of quadrilaterals.
+inline Index triangles_last(std::vector<Index>& conn, std::vector<Id>& ids) {
+  std::vector<Index> quads, tri;
+  std::vector<Id> quad_ids, tri_ids;
+  for (std::size_t e = 0; e < ids.size(); ++e) {
+    const Index* n = conn.data() + 4 * e;
+    const bool triangle = n[2] == n[3];
+    (triangle ? tri : quads).insert((triangle ? tri : quads).end(), n, n + (triangle ? 3 : 4));
+    (triangle ? tri_ids : quad_ids).push_back(ids[e]);
+  }
+  const auto nq = static_cast<Index>(quad_ids.size());
+  if (tri_ids.empty()) return nq;
+  quads.insert(quads.end(), tri.begin(), tri.end());
+  quad_ids.insert(quad_ids.end(), tri_ids.begin(), tri_ids.end());
+  conn = std::move(quads);
+  ids = std::move(quad_ids);
+  return nq;
+}
 
 /// The in-plane direction e1 of the invariant frame of a triangle (*CONTROL_ACCURACY INN = 2, 4;
 /// LS-DYNA documents its construction for quadrilaterals only, this one is ours): the reference
