@@ -81,7 +81,7 @@ struct TiebreakParameters {
   /// on tied slave segments push too, each with its slave segment's stiffness kappa_s A_s. Those
   /// springs join the compression factor c, so that the normal force does not jump at release.
   bool two_sided_contact = false;
-  /// OPTION 9 of the automatic card (release_to_owner set): each tie spring follows the mixed-mode
+  /// OPTION 9 (and 6) of the automatic card (release_to_owner set): each tie spring follows the mixed-mode
   /// traction-separation law `cohesive` (damage per tied node, mixed_mode_cohesive_law.hpp) instead
   /// of the stress criterion; a node is released when its damage reaches 1, a slave segment fails
   /// when all of its nodes are released. cohesive.en <= 0: the tie's penalty stiffness per unit
@@ -128,7 +128,7 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   const std::vector<std::uint8_t>& failed_segments() const { return segment_failed_; }
   /// Per link: the current tie spring stiffness (force / length).
   Real stiffness(std::size_t k) const { return kappa_[k] * area_[k]; }
-  /// Mixed mode (OPTION 9): per link, the damage D in [0, 1].
+  /// Mixed mode (OPTION 6, 9): per link, the damage D in [0, 1].
   const std::vector<Real>& damage() const { return damage_; }
   /// Mixed mode: the energy the cohesive springs dissipated so far (their work less the elastic
   /// energy they still hold); also in the energy ledger's contact term.
