@@ -34,6 +34,13 @@ void TiebreakContact::apply_cohesive(const NodalFields& nodes, ContactForceView 
       if (t.shape[q] != 0.0) add_to_master(out, t.master[q], -t.shape[q] * f);
     slave += f;
     if (damage_[k] >= 1.0) {  // fully damaged: the automatic contact takes the node from the next cycle
+      // A closed node's compression goes with it to the automatic pass (whose spring takes the same
+      // load from the next cycle): its closing spring's energy is handed over, not dissipated.
+      if (dn < 0.0) {
+        const Real closing = 0.5 * a * kn * dn * dn;
+        cohesive_work_ -= closing;
+        stored -= closing;
+      }
       area_[k] = 0.0;
       released_[k] = 1;
     }
