@@ -87,6 +87,11 @@ struct TiebreakParameters {
   /// when all of its nodes are released. cohesive.en <= 0: the tie's penalty stiffness per unit
   /// area (LS-DYNA's default for CN); cohesive.et is set per node to ct2cn x en.
   bool mixed_mode = false;
+  /// OPTION 4 of the automatic card: the tie holds the normal direction only (tension and
+  /// compression, failure by the normal stress; set shear_failure 0); tangentially a tied node
+  /// slides with Coulomb friction (`friction`) on the compressive part of its normal tie force,
+  /// through a stick spring of the tie's stiffness (no friction in tension).
+  bool normal_only = false;
   MixedModeCohesiveLaw cohesive;
   Real ct2cn = 1.0;
 };
@@ -187,6 +192,9 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   }
   /// Mixed mode: the tie forces from the cohesive law, damage, releases (tiebreak_cohesive.cpp).
   void apply_cohesive(const NodalFields& nodes, ContactForceView out);
+  /// normal_only (OPTION 4): link k's tie force on the slave for stretch d: the normal spring and
+  /// the friction of the tied share (tiebreak_cohesive.cpp).
+  Vec3 normal_tie_force(std::size_t k, const Vec3& d, const NodalFields& nodes, const StepTimes& times);
 
   std::string name_;
   std::vector<Index> candidates_;  ///< the nodes the tie search may tie
@@ -206,6 +214,7 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   std::vector<std::uint8_t> segment_failed_;
   std::vector<Vec3> segment_force_;
   std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
+  std::vector<Vec3> tie_friction_;   ///< normal_only: per link, the tied share's friction force (history)
   Real compression_ = 1.0;           ///< normal stiffness in compression / kappa x area (>= 1)
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;

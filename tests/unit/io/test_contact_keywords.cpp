@@ -247,8 +247,9 @@ TEST(ContactKeywords, AutomaticTiebreakOptions2And9) {
 
 // OPTION 6 reads NFLS, SFLS (the criterion that starts the damage) and PARAM (CCRIT, the distance
 // at which the damage is complete), all three required (> 0), and writes them back; ERATEN, ERATES,
-// CT2CN and CN (fields of other OPTIONs; CN on OPTION 6 with _MORTAR only) are refused.
-TEST(ContactKeywords, AutomaticTiebreakOption6) {
+// CT2CN and CN (fields of other OPTIONs; CN on OPTION 6 with _MORTAR only) are refused. OPTION 4
+// reads NFLS (required) and refuses SFLS and PARAM.
+TEST(ContactKeywords, AutomaticTiebreakOptions4And6) {
   const auto deck = [](const std::string& card4) {
     return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n1\n" + card4 + "*END\n";
   };
@@ -288,6 +289,14 @@ TEST(ContactKeywords, AutomaticTiebreakOption6) {
     }
   };
   refused("6,2.5,3.5,0.01,5\n", at + "ERATEN = 5");
+  // OPTION 4: NFLS (required); SFLS and PARAM (= 1: SFLS a friction stress limit) refused.
+  EXPECT_EQ(read_keyword_string(deck("4,2.5\n"), "c.k").contacts.at(0).option, 4);
+  EXPECT_EQ(read_keyword_string(write_keyword_string(read_keyword_string(deck("4,2.5\n"), "c.k")), "w.k")
+                .contacts.at(0).nflf, 2.5);
+  input_error("4\n", at + "NFLS = 0: OPTION 4 needs the normal failure stress > 0");
+  refused("4,2.5,3.5\n", at + "SFLS = 3.5");
+  refused("4,2.5,0,1\n", at + "PARAM = 1");
+  refused("4,2.5,0,0,0,0,0,1e5\n", at + "CN = 100000");
   refused("6,2.5,3.5,0.01,0,6\n", at + "ERATES = 6");
   refused("6,2.5,3.5,0.01,0,0,0.5\n", at + "CT2CN = 0.5");
   refused("6,2.5,3.5,0.01,0,0,0,1e5\n", at + "CN = 100000");
