@@ -190,6 +190,19 @@ std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec&
     p.cohesive = MixedModeCohesiveLaw{c.cn, 0.0, spec.failure.normal, spec.failure.shear, c.eraten, c.erates,
                                       c.param != 0.0 ? std::abs(c.param) : 1.0, c.param < 0.0};
     p.ct2cn = c.ct2cn > 0.0 ? c.ct2cn : 1.0;
+  } else if (spec.cohesive.option == 4) {
+    // The tie holds the normal direction (failure by NFLS, tension only); tied nodes slide with the
+    // card's friction (FS, FD, DC) on the compressive part of their tie force.
+    p.normal_only = true;
+    p.shear_failure = 0.0;
+  } else if (spec.cohesive.option == 6) {
+    // The stress criterion as the onset of a linear softening to zero at PARAM = CCRIT, per tied
+    // node, on the tie's own isotropic spring (EN = ET = kappa): the bilinear law with a fixed
+    // final separation (mixed_mode_cohesive_law.hpp).
+    p.mixed_mode = true;
+    p.cohesive = MixedModeCohesiveLaw{0.0, 0.0, spec.failure.normal, spec.failure.shear, 0.0, 0.0, 1.0, false,
+                                      spec.cohesive.param};
+    p.ct2cn = 1.0;
   }
   auto tie = std::make_unique<TiebreakContact>(spec.title, std::move(spec.slave.nodes), std::move(spec.slave.surface),
                                                std::move(spec.master.surface), p);

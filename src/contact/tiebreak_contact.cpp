@@ -111,6 +111,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   released_.assign(n, 0);
   delta_.assign(n, Vec3::Zero());
   friction_force_.assign(n, Vec3::Zero());
+  tie_friction_.assign(p_.normal_only ? n : 0, Vec3::Zero());
   seed_contact(nodes.x, side);
   damage_.assign(p_.mixed_mode ? n : 0, 0.0);
   tie_force_.assign(p_.mixed_mode ? n : 0, Vec3::Zero());
@@ -171,6 +172,14 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
     if (released_[k]) continue;
     const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
     delta_[k] = d;
+    if (p_.normal_only) {
+      const Vec3 f = normal_tie_force(k, d, nodes, times);
+      out.force.add(t.slave, f);
+      for (int a = 0; a < 4; ++a)
+        if (t.shape[a] != 0.0) add_to_master(out, t.master[a], -t.shape[a] * f);
+      slave += f;
+      continue;
+    }
     Vec3 f = -(kappa_[k] * area_[k]) * d;
     if (compression_ > 1.0) {  // the normal part pushes compression_ times stiffer in compression
       const Vec3 nk = oriented_normal(k, nodes.x);
@@ -247,8 +256,14 @@ void TiebreakContact::hand_over(std::size_t k, Real share, const Vec3& n) {
   // The friction stick force of the contact share starts from the tie's last tangential force on
   // that share (the return map of the next cycle caps it at mu N): the shear the tie carried is
   // handed over instead of dropping to zero and being rebuilt, which would jolt the bodies.
-  const Vec3 f = -(kappa_[k] * share) * delta_[k];
-  friction_force_[k] += f - f.dot(n) * n;
+  if (p_.normal_only) {  // the tied share's friction (not a spring's shear) goes with the share
+    const Real part = area_[k] > 0.0 ? share / area_[k] : 1.0;
+    friction_force_[k] += part * tie_friction_[k];
+    tie_friction_[k] *= 1.0 - part;
+  } else {
+    const Vec3 f = -(kappa_[k] * share) * delta_[k];
+    friction_force_[k] += f - f.dot(n) * n;
+  }
   area_[k] -= share;
   if (area_[k] <= 1e-12 * area0_[k]) {
     area_[k] = 0.0;

@@ -408,10 +408,31 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                     {"ERATES", 0, Use::refuse, "shear energy release rate"},
                                     {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
                                     {"CN", 0, Use::refuse, "normal stiffness"}};
+  // OPTION 6 of the automatic card: PARAM is CCRIT; the manual reads ERATEN..CN on other OPTIONs
+  // (CN on OPTION 6 with _MORTAR only).
+  static constexpr Rule kAuto6[] = {{"OPTION", 0, Use::honoured, ""}, {"NFLS", 0, Use::honoured, ""},
+                                    {"SFLS", 0, Use::honoured, ""},   {"PARAM", 0, Use::honoured, ""},
+                                    {"ERATEN", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
+                                    {"ERATES", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
+                                    {"CT2CN", 0, Use::refuse, "stiffness ratio (OPTION 9, 11)"},
+                                    {"CN", 0, Use::refuse, "normal stiffness (OPTION 6: _MORTAR only)"}};
+  // OPTION 4: NFLS only; SFLS is read by the manual with PARAM = 1 (a friction stress limit).
+  static constexpr Rule kAuto4[] = {{"OPTION", 0, Use::honoured, ""}, {"NFLS", 0, Use::honoured, ""},
+                                    {"SFLS", 0, Use::refuse, "OPTION 4: a friction stress limit with PARAM = 1"},
+                                    {"PARAM", 0, Use::refuse, "OPTION 4: 1 makes SFLS a friction stress limit, "
+                                                              "not built (a cap on Coulomb or in its place?)"},
+                                    {"ERATEN", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
+                                    {"ERATES", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
+                                    {"CT2CN", 0, Use::refuse, "stiffness ratio (OPTION 9, 11)"},
+                                    {"CN", 0, Use::refuse, "normal stiffness (OPTION 4: _MORTAR only)"}};
+  const bool automatic = c.form == model::ContactForm::automatic_surface_to_surface;
   // OPTION 9 of the automatic card honours the whole card (checked by check_automatic_tiebreak_card4).
-  if (c.form != model::ContactForm::automatic_surface_to_surface || c.option != 9)
-    check_card(ctx, *card4, kw, "card 4", c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
-                                                                                : std::span<const Rule>(kType9));
+  if (!automatic || c.option != 9)
+    check_card(ctx, *card4, kw, "card 4",
+               c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
+               : automatic && c.option == 6      ? std::span<const Rule>(kAuto6)
+               : automatic && c.option == 4      ? std::span<const Rule>(kAuto4)
+                                                 : std::span<const Rule>(kType9));
   // Type 9's OPTION selects a failure law; DYNA3D's (0) is built. The automatic card's OPTIONs:
   // check_automatic_tiebreak_card4.
   if (c.type == ContactType::tiebreak_surface && c.form != model::ContactForm::automatic_surface_to_surface)

@@ -82,10 +82,7 @@ std::string unbuilt_tiebreak_option(int option) {
     case 1: return "OPTION 1 ties nodes in contact, and those that come into contact later, permanently (no failure); "
                    "ties formed during the run are not built; give OPTION 2 for the tie that fails by NFLS and SFLS";
     case 3: return "OPTION 3 also ties nodes that come into contact later and fails them after sticking";
-    case 4: return "OPTION 4 lets tied nodes slide with friction before failure (PARAM = 1: SFLS a friction stress)";
     case 5: return "OPTION 5 is a damage curve of the crack opening (SFLS a curve, NFLS a yield stress)";
-    case 6: return "OPTION 6's manual text says only that the damage is linear in the largest distance and "
-                   "complete at PARAM, not how the traction follows the damage nor from which distance it counts";
     case 7: return "OPTION 7 (Dycoss discrete crack model, PARAM a friction angle) is defined in Lemmen and Meijer "
                    "(2001), not by the manual's text";
     case 8: case 10: case 11: return "OPTION " + std::to_string(option) + " is the offset-shell variant of OPTION " +
@@ -99,18 +96,21 @@ std::string unbuilt_tiebreak_option(int option) {
 
 /// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4. Built: OPTION 2 (the stress criterion,
 /// then the automatic contact: the manual's law for it; OPTION 1, a permanent tie that also ties
-/// nodes arriving later, is refused) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
+/// nodes arriving later, is refused), OPTION 6 (the criterion, then damage linear in the distance,
+/// complete at PARAM = CCRIT) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
 /// ERATEN, ERATES, CT2CN, CN). Every other OPTION is refused saying why; NFLS, SFLS < 0 (curves)
 /// are refused. On OPTION 2, PARAM..CN off their blank default are refused by
 /// check_contact_fields (keyword_contact_fields.cpp).
 void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c, const Line* card4, int line) {
   const std::string at = ctx.where(card4 ? card4->number : line) + c.keyword + " card 4";
   if (!card4) throw InputError(at + " (OPTION NFLS SFLS PARAM ...) is missing");
-  if (c.option != 2 && c.option != 9)
+  if (c.option != 2 && c.option != 4 && c.option != 6 && c.option != 9)
     throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) + " is not implemented (" +
                               unbuilt_tiebreak_option(c.option) +
                               "); built: 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
-                              "automatic surface-to-surface contact) and 9 (mixed-mode bilinear traction-separation)");
+                              "automatic surface-to-surface contact), 4 (a normal tie failing by NFLS, sliding "
+                              "with friction), 6 (that criterion, then linear softening to zero at PARAM) and 9 "
+                              "(mixed-mode bilinear traction-separation)");
   const auto value = [](Real v) {
     char s[32];
     std::snprintf(s, sizeof s, "%g", v);
@@ -120,6 +120,19 @@ void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c,
     if (v >= 0.0) continue;
     throw NotImplementedError(at + ": field " + name + " = " + value(v) +
                               " < 0 (a curve in recent manuals) is not implemented; give a stress >= 0");
+  }
+  if (c.option == 4 && !(c.nfls > 0.0))
+    throw InputError(at + ": field NFLS = " + value(c.nfls) +
+                     ": OPTION 4 needs the normal failure stress > 0 (its tie fails by NFLS only)");
+  if (c.option == 6) {
+    // OPTION 6: the criterion's stresses start the damage, PARAM (CCRIT) completes it; no defaults.
+    for (const auto& [name, v, what] :
+         {std::tuple<const char*, Real, const char*>{"NFLS", c.nfls, "the normal failure stress"},
+          {"SFLS", c.sfls, "the shear failure stress"},
+          {"PARAM", c.param, "the critical distance CCRIT"}})
+      if (!(v > 0.0))
+        throw InputError(at + ": field " + name + " = " + value(v) + ": OPTION 6 needs " + what + " > 0");
+    return;
   }
   if (c.option != 9) return;
   // OPTION 9: the peak tractions and the energy release rates have no default.

@@ -53,8 +53,8 @@ struct TiebreakFailure {
 
 /// The cohesive law of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (card 4 after NFLS, SFLS).
 struct TiebreakCohesive {
-  int option = 0;      ///< OPTION: 1, 2 the stress criterion; 9 the mixed-mode law
-  Real param = 0.0;    ///< OPTION 9: mixing exponent (> 0 power law, < 0 B-K; 0 means 1)
+  int option = 0;      ///< OPTION: 2 the stress criterion; 6 its linear softening to CCRIT; 9 the mixed-mode law
+  Real param = 0.0;    ///< OPTION 9: mixing exponent (> 0 power law, < 0 B-K; 0 means 1); OPTION 6: CCRIT
   Real eraten = 0.0;   ///< OPTION 9: mode I energy release rate
   Real erates = 0.0;   ///< OPTION 9: mode II energy release rate
   Real ct2cn = 0.0;    ///< OPTION 9: tangential / normal stiffness (0 means 1)

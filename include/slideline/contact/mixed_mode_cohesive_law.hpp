@@ -22,6 +22,13 @@
 ///   pure mode I: GIC;  pure mode II: GIIC;  mixed, power law with XMU = 1: G with
 ///   G_I / GIC + G_II / GIIC = 1, G_I / G_II = EN / (ET beta^2)
 /// (the area under the bilinear curve, (1/2) K_m delta_0 delta_F with K_m the mixed-mode secant).
+///
+/// OPTION 6 uses the same curve with EN = ET (the tie's isotropic penalty stiffness), the onset
+/// above (on a proportional path it is the stress criterion (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2
+/// = 1 of OPTION 2) and delta_F = PARAM (CCRIT) for every mix (`fixed_final`). Along the path the
+/// traction is then (1 - D_m) sigma_0 with D_m = (delta_m - delta_0) / (CCRIT - delta_0), the
+/// manual's damage linear in the distance, sigma_0 the traction at onset; D above is the same
+/// curve written as a secant damage of the spring. Energy to separation: (1/2) sigma_0 CCRIT.
 #include <algorithm>
 #include <cmath>
 
@@ -38,17 +45,24 @@ struct MixedModeCohesiveLaw {
   Real giic = 0.0;   ///< mode II energy release rate (ERATES)
   Real xmu = 1.0;    ///< mixing exponent (|PARAM|)
   bool bk = false;   ///< PARAM < 0: Benzeggagh-Kenane; else the power law
+  /// > 0: the final separation for every mode mix instead of the energy rule (OPTION 6: PARAM, the
+  /// critical distance CCRIT; gic, giic, xmu, bk unused). 0: OPTION 9's energy rule.
+  Real fixed_final = 0.0;
 
   /// Onset and final mixed-mode separations for opening dI >= 0 and slip dII >= 0 (length).
   void separations(Real dI, Real dII, Real& d0, Real& dF) const {
     const Real d1 = t / en, d2 = s / et;
     if (!(dI > 0.0)) {
       d0 = d2;
-      dF = 2.0 * giic / s;
+      dF = fixed_final > 0.0 ? fixed_final : 2.0 * giic / s;
       return;
     }
     const Real b = dII / dI, b2 = b * b;
     d0 = d1 * d2 * std::sqrt((1.0 + b2) / (d2 * d2 + b2 * d1 * d1));
+    if (fixed_final > 0.0) {
+      dF = fixed_final;
+      return;
+    }
     if (!bk) {
       const Real sum = std::pow(en / gic, xmu) + std::pow(et * b2 / giic, xmu);
       dF = 2.0 * (1.0 + b2) / d0 * std::pow(sum, -1.0 / xmu);

@@ -81,12 +81,17 @@ struct TiebreakParameters {
   /// on tied slave segments push too, each with its slave segment's stiffness kappa_s A_s. Those
   /// springs join the compression factor c, so that the normal force does not jump at release.
   bool two_sided_contact = false;
-  /// OPTION 9 of the automatic card (release_to_owner set): each tie spring follows the mixed-mode
+  /// OPTION 9 (and 6) of the automatic card (release_to_owner set): each tie spring follows the mixed-mode
   /// traction-separation law `cohesive` (damage per tied node, mixed_mode_cohesive_law.hpp) instead
   /// of the stress criterion; a node is released when its damage reaches 1, a slave segment fails
   /// when all of its nodes are released. cohesive.en <= 0: the tie's penalty stiffness per unit
   /// area (LS-DYNA's default for CN); cohesive.et is set per node to ct2cn x en.
   bool mixed_mode = false;
+  /// OPTION 4 of the automatic card: the tie holds the normal direction only (tension and
+  /// compression, failure by the normal stress; set shear_failure 0); tangentially a tied node
+  /// slides with Coulomb friction (`friction`) on the compressive part of its normal tie force,
+  /// through a stick spring of the tie's stiffness (no friction in tension).
+  bool normal_only = false;
   MixedModeCohesiveLaw cohesive;
   Real ct2cn = 1.0;
 };
@@ -128,7 +133,7 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   const std::vector<std::uint8_t>& failed_segments() const { return segment_failed_; }
   /// Per link: the current tie spring stiffness (force / length).
   Real stiffness(std::size_t k) const { return kappa_[k] * area_[k]; }
-  /// Mixed mode (OPTION 9): per link, the damage D in [0, 1].
+  /// Mixed mode (OPTION 6, 9): per link, the damage D in [0, 1].
   const std::vector<Real>& damage() const { return damage_; }
   /// Mixed mode: the energy the cohesive springs dissipated so far (their work less the elastic
   /// energy they still hold); also in the energy ledger's contact term.
@@ -187,6 +192,9 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   }
   /// Mixed mode: the tie forces from the cohesive law, damage, releases (tiebreak_cohesive.cpp).
   void apply_cohesive(const NodalFields& nodes, ContactForceView out);
+  /// normal_only (OPTION 4): link k's tie force on the slave for stretch d: the normal spring and
+  /// the friction of the tied share (tiebreak_cohesive.cpp).
+  Vec3 normal_tie_force(std::size_t k, const Vec3& d, const NodalFields& nodes, const StepTimes& times);
 
   std::string name_;
   std::vector<Index> candidates_;  ///< the nodes the tie search may tie
@@ -206,6 +214,7 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   std::vector<std::uint8_t> segment_failed_;
   std::vector<Vec3> segment_force_;
   std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
+  std::vector<Vec3> tie_friction_;   ///< normal_only: per link, the tied share's friction force (history)
   Real compression_ = 1.0;           ///< normal stiffness in compression / kappa x area (>= 1)
   Real dt_ = std::numeric_limits<Real>::max();
   Real friction_work_ = 0.0;

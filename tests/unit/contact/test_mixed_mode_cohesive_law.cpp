@@ -90,5 +90,40 @@ TEST(MixedModeCohesiveLaw, DamageIsIrreversibleAndClosingIsModeTwo) {
   EXPECT_EQ(l.damage(0.0, 0.1, 0.0), 1.0);
 }
 
+// OPTION 6 (fixed_final = CCRIT, EN = ET = K, the tie's isotropic spring): onset by the stress
+// criterion (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 = 1, then the traction falls linearly from its
+// onset value sigma_0 to zero at CCRIT, whatever the mix. Closed forms along a proportional path at
+// angle a (opening cos a, slip sin a), K = 1e3, NFLS = 2, SFLS = 1.5, CCRIT = 1e-2:
+//   onset delta_0 = 1 / (K sqrt((cos a / NFLS)^2 + (sin a / SFLS)^2)), sigma_0 = K delta_0,
+//   zero at CCRIT, work (the triangle 0 -> delta_0 -> CCRIT) = sigma_0 CCRIT / 2;
+//   mode I: sigma_0 = 2 at 2e-3, work 1e-2; mode II: 1.5 at 1.5e-3, 7.5e-3;
+//   45 deg: delta_0 = 1 / (K sqrt(0.5 / 4 + 0.5 / 2.25)) = 1.6971e-3, work 8.4853e-3.
+// On the falling branch the traction is linear in the separation (the manual's damage, linear in
+// the distance): checked at the midpoint between delta_0 and CCRIT, where it is sigma_0 / 2.
+TEST(MixedModeCohesiveLaw, FixedFinalSeparationIsOptionSixLinearSoftening) {
+  const Real K = 1e3, N = 2.0, S = 1.5, ccrit = 1e-2;
+  MixedModeCohesiveLaw l{K, K, N, S, 0.0, 0.0, 1.0, false, ccrit};
+  const Real pi = std::acos(-1.0);
+  for (const Real a : {0.0, pi / 4.0, pi / 2.0, pi / 3.0}) {
+    SCOPED_TRACE(a);
+    const Real c = std::cos(a), s = std::sin(a);
+    const Real d0 = 1.0 / (K * std::sqrt((c / N) * (c / N) + (s / S) * (s / S)));
+    const Real sigma0 = K * d0;
+    const Path p = walk(l, a, 0.012);
+    EXPECT_NEAR(p.at_peak / d0, 1.0, 1e-4);
+    EXPECT_NEAR(p.peak / sigma0, 1.0, 1e-4);
+    EXPECT_NEAR(p.zero_at / ccrit, 1.0, 1e-4);
+    EXPECT_NEAR(p.work / (0.5 * sigma0 * ccrit), 1.0, 1e-4);
+    // Midway down the falling branch.
+    const Real dm = 0.5 * (d0 + ccrit);
+    const Real D = l.damage(dm * c, dm * s, 0.0);
+    EXPECT_NEAR((1.0 - D) * K * dm / (0.5 * sigma0), 1.0, 1e-12);
+  }
+  // CCRIT at or below the onset separation: no falling branch, full damage at onset.
+  MixedModeCohesiveLaw brittle{K, K, N, S, 0.0, 0.0, 1.0, false, 1e-3};
+  EXPECT_EQ(brittle.damage(2.1e-3, 0.0, 0.0), 1.0);
+  EXPECT_EQ(brittle.damage(1.9e-3, 0.0, 0.0), 0.0);
+}
+
 }  // namespace
 }  // namespace slideline

@@ -173,7 +173,7 @@ TEST(ContactKeywords, AutomaticTiebreakCard4) {
   };
   const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
   refused("3,2.5,3.5\n", at + "OPTION = 3 is not implemented");
-  refused("6,2.5,3.5,0.1\n", at + "OPTION = 6 is not implemented (OPTION 6's manual text");
+  refused("8,2.5,3.5,0.1\n", at + "OPTION = 8 is not implemented (OPTION 8 is the offset-shell variant of OPTION 6");
   refused("7,2.5,3.5\n", at + "OPTION = 7 is not implemented (OPTION 7 (Dycoss");
   refused("11,2.5,3.5\n", at + "OPTION = 11 is not implemented (OPTION 11 is the offset-shell variant of OPTION 9");
   refused("-9,2.5,3.5\n", at + "OPTION = -9 is not implemented");
@@ -243,6 +243,63 @@ TEST(ContactKeywords, AutomaticTiebreakOptions2And9) {
   } catch (const NotImplementedError& e) {
     EXPECT_NE(std::string(e.what()).find(at + "ERATEN = 0.01"), std::string::npos) << e.what();
   }
+}
+
+// OPTION 6 reads NFLS, SFLS (the criterion that starts the damage) and PARAM (CCRIT, the distance
+// at which the damage is complete), all three required (> 0), and writes them back; ERATEN, ERATES,
+// CT2CN and CN (fields of other OPTIONs; CN on OPTION 6 with _MORTAR only) are refused. OPTION 4
+// reads NFLS (required) and refuses SFLS and PARAM.
+TEST(ContactKeywords, AutomaticTiebreakOptions4And6) {
+  const auto deck = [](const std::string& card4) {
+    return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n1\n" + card4 + "*END\n";
+  };
+  const auto m = read_keyword_string(deck("6,2.5,3.5,0.01\n"), "c.k");
+  const auto& c = m.contacts.at(0);
+  EXPECT_EQ(c.option, 6);
+  EXPECT_EQ(c.nflf, 2.5);
+  EXPECT_EQ(c.sflf, 3.5);
+  EXPECT_EQ(c.param, 0.01);
+  const auto again = read_keyword_string(write_keyword_string(m), "again.k");
+  EXPECT_EQ(again.contacts.at(0).option, 6);
+  EXPECT_EQ(again.contacts.at(0).nflf, 2.5);
+  EXPECT_EQ(again.contacts.at(0).sflf, 3.5);
+  EXPECT_EQ(again.contacts.at(0).param, 0.01);
+
+  const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
+  const auto input_error = [&](const std::string& card4, const std::string& message) {
+    SCOPED_TRACE(card4);
+    try {
+      read_keyword_string(deck(card4), "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  input_error("6,,3.5,0.01\n", at + "NFLS = 0: OPTION 6 needs the normal failure stress > 0");
+  input_error("6,2.5,0,0.01\n", at + "SFLS = 0: OPTION 6 needs the shear failure stress > 0");
+  input_error("6,2.5,3.5\n", at + "PARAM = 0: OPTION 6 needs the critical distance CCRIT > 0");
+  input_error("6,2.5,3.5,-1\n", at + "PARAM = -1: OPTION 6 needs the critical distance CCRIT > 0");
+  const auto refused = [&](const std::string& card4, const std::string& message) {
+    SCOPED_TRACE(card4);
+    try {
+      read_keyword_string(deck(card4), "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const NotImplementedError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  refused("6,2.5,3.5,0.01,5\n", at + "ERATEN = 5");
+  // OPTION 4: NFLS (required); SFLS and PARAM (= 1: SFLS a friction stress limit) refused.
+  EXPECT_EQ(read_keyword_string(deck("4,2.5\n"), "c.k").contacts.at(0).option, 4);
+  EXPECT_EQ(read_keyword_string(write_keyword_string(read_keyword_string(deck("4,2.5\n"), "c.k")), "w.k")
+                .contacts.at(0).nflf, 2.5);
+  input_error("4\n", at + "NFLS = 0: OPTION 4 needs the normal failure stress > 0");
+  refused("4,2.5,3.5\n", at + "SFLS = 3.5");
+  refused("4,2.5,0,1\n", at + "PARAM = 1");
+  refused("4,2.5,0,0,0,0,0,1e5\n", at + "CN = 100000");
+  refused("6,2.5,3.5,0.01,0,6\n", at + "ERATES = 6");
+  refused("6,2.5,3.5,0.01,0,0,0.5\n", at + "CT2CN = 0.5");
+  refused("6,2.5,3.5,0.01,0,0,0,1e5\n", at + "CN = 100000");
 }
 
 }  // namespace
