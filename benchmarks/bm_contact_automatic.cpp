@@ -18,8 +18,8 @@ using namespace slideline;
 
 namespace {
 
-/// Which card joins the two blocks.
-enum class Card { single_surface, automatic_surface_to_surface, type3 };
+/// Which card joins the two blocks (the last two frictionless: SOFT = 2 has no friction yet).
+enum class Card { single_surface, automatic_surface_to_surface, type3, automatic_soft0, automatic_soft2 };
 
 /// Lower block n x 1 x n (part 1) and upper block (n-1) x 1 x (n-1) on top of it (part 2), one
 /// contact with the spec's friction: *CONTACT_AUTOMATIC_SINGLE_SURFACE over both parts, or
@@ -46,7 +46,7 @@ model::Model two_block_automatic(int n, Card card = Card::single_surface) {
   c.ssid = 1;
   c.sstyp = 2;
   if (card != Card::single_surface) {
-    const bool automatic = card == Card::automatic_surface_to_surface;
+    const bool automatic = card != Card::type3;
     c.keyword = automatic ? "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" : "*CONTACT_SURFACE_TO_SURFACE";
     c.type = automatic ? model::ContactType::automatic : model::ContactType::surface_to_surface;
     c.form = automatic ? model::ContactForm::automatic_surface_to_surface : model::ContactForm::dyna3d;
@@ -55,9 +55,13 @@ model::Model two_block_automatic(int n, Card card = Card::single_surface) {
     c.msid = 1;
     c.mstyp = 3;
   }
-  c.fs = 0.3;
-  c.fd = 0.25;
-  c.dc = 2.0;
+  if (card == Card::automatic_soft0 || card == Card::automatic_soft2) {
+    c.soft = card == Card::automatic_soft2 ? 2 : 0;
+  } else {
+    c.fs = 0.3;
+    c.fd = 0.25;
+    c.dc = 2.0;
+  }
   m.contacts.push_back(c);
   return m;
 }
@@ -78,6 +82,7 @@ void run_contact_cycles(benchmark::State& state, int n, Card card) {
   for (Index i = first_upper; i < count; ++i) nodes.x.y[i] -= 1e-3;
   StepTimes t;
   t.dt_prev = t.dt_avg = t.dt_next = 1e-3;
+  t.dt_initial = 1e-3;  // SOFT = 2 sizes its springs by it; the other cards do not read it
   long step = 0;
   for (auto _ : state) {
     const Real dx = (step++ / 80) % 2 != 0 ? -0.01 : 0.01;
@@ -95,6 +100,10 @@ void run_contact_cycles(benchmark::State& state, int n, Card card) {
   state.counters["ns_per_node_cycle"] =
       benchmark::Counter(static_cast<double>(count) * 1e-9,
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  // Surface segments of the two blocks: 2 n^2 + 4 n and 2 (n-1)^2 + 4 (n-1).
+  const double segments = 2.0 * n * n + 4.0 * n + 2.0 * (n - 1) * (n - 1) + 4.0 * (n - 1);
+  state.counters["ns_per_segment_cycle"] = benchmark::Counter(
+      segments * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_AutomaticContactCycle(benchmark::State& state) {
@@ -108,6 +117,12 @@ void BM_AutomaticSurfaceVsType3(benchmark::State& state) {
   run_contact_cycles(state, static_cast<int>(state.range(0)), static_cast<Card>(state.range(1)));
 }
 
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE frictionless with SOFT = 0 (arg 1 = 3) against SOFT = 2,
+/// segment-based (arg 1 = 4): ns per surface segment-cycle on the same blocks.
+void BM_SegmentBasedVsSoftZero(benchmark::State& state) {
+  run_contact_cycles(state, static_cast<int>(state.range(0)), static_cast<Card>(state.range(1)));
+}
+
 }  // namespace
 
 // Surface segments: about 4 n^2 (top and bottom faces of both blocks) + the sides: 10^3 .. 10^5.
@@ -117,3 +132,4 @@ BENCHMARK(BM_AutomaticSurfaceVsType3)
     ->ArgsProduct({{16, 50, 158}, {0, 1, 2}})
     ->Iterations(160)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SegmentBasedVsSoftZero)->ArgsProduct({{16, 50}, {3, 4}})->Iterations(160)->Unit(benchmark::kMillisecond);

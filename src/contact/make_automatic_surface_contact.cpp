@@ -15,6 +15,8 @@
 #include "slideline/contact/automatic_surface_contact.hpp"
 #include "slideline/contact/automatic_tiebreak_contact.hpp"
 #include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/contact/search/fcl_broad_phase.hpp"
+#include "slideline/contact/segment_contact.hpp"
 #include "slideline/contact/penalty_factory.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/mesh/surface_builder.hpp"
@@ -154,6 +156,20 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
 }  // namespace
 
 std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  if (spec.segment_based) {  // SOFT = 2 (contact/segment_contact.hpp): solid faces of both sides
+    if (spec.eroding)
+      throw NotImplementedError(spec.where + ": SOFT = 2 (segment-based contact, optional card A) with eroding parts "
+                                             "is not implemented");
+    std::vector<std::uint8_t> sides;
+    std::vector<Index> from_slave;
+    Surface surface = merge_sides(spec.slave.surface, spec.master.surface, sides, from_slave);
+    for (Index s = 0; s < surface.segment_count(); ++s)
+      if (surface.kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
+        throw NotImplementedError(spec.where + ": SOFT = 2 (segment-based contact, optional card A) on shell segments "
+                                               "is not implemented (no thickness offsets yet); solid faces only");
+    return std::make_unique<SegmentContact>(spec.title, std::move(surface), std::move(sides),
+                                            std::make_unique<FclBroadPhase>(), spec.slave_stiffness);
+  }
   AutomaticPass a = make_automatic_pass(spec, ctx);
   return make_penalty_interface<AutomaticSurfaceContact>(spec, std::move(a.pass), std::move(a.sides));
 }

@@ -58,9 +58,9 @@ void act(const Context& ctx, int line, std::string_view keyword, std::string_vie
 constexpr Rule kCardA[] = {
     {"SOFT", 0, Use::honoured, ""},    // read by read_contact_card_a (keyword_contact_options.cpp)
     {"SOFSCL", 0.1, Use::honoured, ""},  // likewise
-    {"LCIDAB", 0, Use::inert, "airbag thickness curve of SOFT = 2; SOFT = 2 is refused"},
+    {"LCIDAB", 0, Use::inert, "airbag thickness curve of SOFT = 2; acts only with SOFT = 2"},
     {"MAXPAR", 1.025, Use::refuse, "maximum parametric coordinate of the segment search"},
-    {"SBOPT", 2, Use::inert, "segment-based (SOFT = 2) options; SOFT = 2 is refused"},
+    {"SBOPT", 2, Use::inert, "segment-based (SOFT = 2) options; acts only with SOFT = 2"},
     {"DEPTH", 2, Use::speed, "search depth"},
     {"BSORT", 0, Use::speed, "cycles between bucket sorts"},
     {"FRCFRQ", 1, Use::refuse, "cycles between contact force updates"},
@@ -86,9 +86,9 @@ constexpr Rule kCardC[] = {
     {"CID_RCF", 0, Use::output, "coordinate system of the rcforc output"},
 };
 constexpr Rule kCardD[] = {
-    {"Q2TRI", 0, Use::inert, "split quadrilaterals (SOFT = 2 only, which is refused)"},
+    {"Q2TRI", 0, Use::inert, "split quadrilaterals (SOFT = 2 only)"},
     {"DTPCHK", 0, Use::output, "interval of shell penetration reports"},
-    {"SFNBR", 0, Use::inert, "neighbour segment scale (SOFT = 2 only, which is refused)"},
+    {"SFNBR", 0, Use::inert, "neighbour segment scale (SOFT = 2 only)"},
     {"FNLSCL", 0, Use::refuse, "nonlinear force scaling"},
     {"DNLSCL", 0, Use::refuse, "nonlinear force scaling distance"},
     {"TCSO", 0, Use::refuse, "contact thickness from contact segments only"},
@@ -96,11 +96,11 @@ constexpr Rule kCardD[] = {
     {"SHLEDG", 0, Use::refuse, "shell edge shape"},
 };
 constexpr Rule kCardE[] = {
-    {"SHAREC", 0, Use::inert, "shared constraints (SOFT = 2 only, which is refused)"},
+    {"SHAREC", 0, Use::inert, "shared constraints (SOFT = 2 only)"},
     {"CPARM8", 0, Use::refuse, "beam contact flags"},
     {"IPBACK", 0, Use::refuse, "backup penalty tied contact"},
     {"SRNDE", 0, Use::refuse, "non-extended exterior shell edges"},
-    {"FRICSF", 1, Use::inert, "frictional stiffness scale (SOFT = 2 only, which is refused)"},
+    {"FRICSF", 1, Use::inert, "frictional stiffness scale (SOFT = 2 only)"},
     {"ICOR", 0, Use::refuse, "VDC read as a coefficient of restitution"},
     {"FTORQ", 0, Use::refuse, "transmission of moments across the interface"},
     {"REGION", 0, Use::refuse, "*DEFINE_REGION limiting the contact"},
@@ -113,8 +113,51 @@ constexpr Rule kCardF[] = {
     {"2DBINR", 0, Use::inert, "2D seat belts in retractors (no belts here)"},
     {"SSFTYP", 0, Use::refuse, "which shell thickness scale factor is used"},
     {"SWTPR", 0, Use::refuse, "constant thickness of tied weld segments"},
-    {"TETFAC", 0, Use::inert, "tetrahedron volume factor (SOFT = 2 only, which is refused)"},
+    {"TETFAC", 0, Use::inert, "tetrahedron volume factor (SOFT = 2 only)"},
 };
+
+// With SOFT = 2 (segment-based contact): SBOPT, DEPTH and LCIDAB are read by
+// read_contact_card_a; the SOFT = 2 fields of cards D-F act on it, so they are refused.
+constexpr Rule kCardA2[] = {
+    {"SOFT", 0, Use::honoured, ""},   {"SOFSCL", 0.1, Use::honoured, ""}, {"LCIDAB", 0, Use::honoured, ""},
+    {"MAXPAR", 1.025, Use::refuse, "maximum parametric coordinate of the segment search"},
+    {"SBOPT", 2, Use::honoured, ""},  {"DEPTH", 2, Use::honoured, ""},
+    {"BSORT", 0, Use::speed, "cycles between bucket sorts"},
+    {"FRCFRQ", 1, Use::refuse, "cycles between contact force updates"},
+};
+constexpr Rule kCardD2[] = {
+    {"Q2TRI", 0, Use::refuse, "split quadrilaterals of SOFT = 2"},
+    {"DTPCHK", 0, Use::output, "interval of shell penetration reports"},
+    {"SFNBR", 0, Use::refuse, "neighbour segment scale of SOFT = 2"},
+    {"FNLSCL", 0, Use::refuse, "nonlinear force scaling"},
+    {"DNLSCL", 0, Use::refuse, "nonlinear force scaling distance"},
+    {"TCSO", 0, Use::refuse, "contact thickness from contact segments only"},
+    {"TIEDID", 0, Use::refuse, "incremental displacement update of tied contact"},
+    {"SHLEDG", 0, Use::refuse, "shell edge shape"},
+};
+constexpr Rule kCardE2[] = {
+    {"SHAREC", 0, Use::refuse, "shared constraints of SOFT = 2"},
+    {"CPARM8", 0, Use::refuse, "beam contact flags"},
+    {"IPBACK", 0, Use::refuse, "backup penalty tied contact"},
+    {"SRNDE", 0, Use::refuse, "non-extended exterior shell edges"},
+    {"FRICSF", 1, Use::refuse, "frictional stiffness scale of SOFT = 2"},
+    {"ICOR", 0, Use::refuse, "VDC read as a coefficient of restitution"},
+    {"FTORQ", 0, Use::refuse, "transmission of moments across the interface"},
+    {"REGION", 0, Use::refuse, "*DEFINE_REGION limiting the contact"},
+};
+constexpr Rule kCardF2[] = {
+    {"PSTIFF", 0, Use::refuse, "penalty stiffness method"},
+    {"IGNROFF", 0, Use::refuse, "ignore the shell thickness offset"},
+    {"UNUSED", 0, Use::unused, ""},
+    {"FSTOL", 2, Use::inert, "flat-segment tolerance of _SMOOTH contact, which is refused"},
+    {"2DBINR", 0, Use::inert, "2D seat belts in retractors (no belts here)"},
+    {"SSFTYP", 0, Use::refuse, "which shell thickness scale factor is used"},
+    {"SWTPR", 0, Use::refuse, "constant thickness of tied weld segments"},
+    {"TETFAC", 0, Use::refuse, "tetrahedron volume factor of SOFT = 2"},
+};
+constexpr OptionalCard kOptionalSoft2[] = {{"optional card A", kCardA2}, {"optional card B", kCardB},
+                                           {"optional card C", kCardC}, {"optional card D", kCardD2},
+                                           {"optional card E", kCardE2}, {"optional card F", kCardF2}};
 
 constexpr OptionalCard kOptional[] = {{"optional card A", kCardA}, {"optional card B", kCardB},
                                       {"optional card C", kCardC}, {"optional card D", kCardD},
@@ -483,7 +526,10 @@ void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c
           {"IGNORE", 0, Use::inert, "initial penetrations kept; this interface ties or constrains its nodes where they are"},
           c.ignore);
   }
-  check_remaining(ctx, b, kOptional);
+  if (c.soft == 2)
+    check_remaining(ctx, b, kOptionalSoft2);
+  else
+    check_remaining(ctx, b, kOptional);
 }
 
 void read_control_contact_cards(const Context& ctx, Block& b, model::ControlContact& t, int line) {

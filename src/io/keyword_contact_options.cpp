@@ -43,6 +43,41 @@ std::string field_text(const Context* ctx, int line, const model::Contact& c, co
          " (" + what + ")";
 }
 
+/// SOFT = 2 (segment-based contact, contact/segment_contact.hpp): its fields of optional card A.
+/// Built: SBOPT 2 (planar segments; 0 is 2), DEPTH 2 (surface penetration only; 0 is 2), on
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE. Every other value is refused by name (file, line, field,
+/// value); LCIDAB (an airbag's thickness curve) is refused.
+void read_segment_based_fields(const Context& ctx, const Line& l, const Card& k, model::Contact& c) {
+  if (c.form != model::ContactForm::automatic_surface_to_surface || !penalty_sliding(c))
+    throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "SOFT", 2,
+                                         "segment-based penalty contact") +
+                              " is implemented on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (penalty) only");
+  int lcidab = 0, sbopt = 0, depth = 0;
+  k.get(2, "LCIDAB", lcidab);
+  k.get(4, "SBOPT", sbopt);
+  k.get(5, "DEPTH", depth);
+  if (lcidab != 0)
+    throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "LCIDAB", lcidab,
+                                         "airbag thickness curve of SOFT = 2") +
+                              " is not implemented; leave it blank");
+  if (sbopt != 0 && sbopt != 2) {
+    const char* what = sbopt == 1   ? "pinball edge checking"
+                       : sbopt == 3 ? "warped segment checking"
+                       : sbopt == 4 ? "sliding option"
+                       : sbopt == 5 ? "warped segment checking and sliding option"
+                                    : nullptr;
+    if (!what)
+      throw InputError(field_text(&ctx, l.number, c, "optional card A", "SBOPT", sbopt,
+                                  "segment-based contact options") + ": must be 0 to 5");
+    throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "SBOPT", sbopt, what) +
+                              " is not implemented; SBOPT = 2 (planar segments, the default) is");
+  }
+  if (depth != 0 && depth != 2)
+    throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "DEPTH", depth,
+                                         "segment-based search depth and edge-to-edge checks") +
+                              " is not implemented; DEPTH = 2 (surface penetration only, the default) is");
+}
+
 }  // namespace
 
 void read_contact_card_a(const Context& ctx, const Block& b, model::Contact& c) {
@@ -52,14 +87,17 @@ void read_contact_card_a(const Context& ctx, const Block& b, model::Contact& c) 
   k.get(0, "SOFT", c.soft);
   k.get_or_default(1, "SOFSCL", c.sofscl);
   const char* soft_what = "penalty stiffness formulation";
-  if (c.soft == 2)
-    throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "SOFT", 2,
-                                         "segment-based penalty contact, with its SBOPT, DEPTH, LCIDAB and the "
-                                         "SOFT = 2 fields of cards D-F") +
-                              " is not implemented; give SOFT = 0 or 1");
+  if (c.soft == 2) {
+    read_segment_based_fields(ctx, l, k, c);
+    if (c.sofscl != 0.1)
+      ctx.warn(l.number, field_text(nullptr, l.number, c, "optional card A", "SOFSCL", c.sofscl,
+                                    "scale of the SOFT = 1 stiffness") +
+                             " acts only with SOFT = 1; ignored");
+    return;
+  }
   if (c.soft == 4 || c.soft == 6)
     throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "SOFT", c.soft, soft_what) +
-                              " is not implemented; give SOFT = 0 or 1");
+                              " is not implemented; give SOFT = 0, 1 or 2");
   if (c.soft != 0 && c.soft != 1)
     throw InputError(field_text(&ctx, l.number, c, "optional card A", "SOFT", c.soft, soft_what) +
                      ": must be 0, 1, 2, 4 or 6");

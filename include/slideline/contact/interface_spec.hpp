@@ -100,6 +100,8 @@ struct InterfaceSpec {
   /// SOFT = 1: SOFSCL (the soft-constraint stiffness scale, PenaltyPassOptions::soft_scale); 0 for
   /// SOFT = 0 (penalty Types 3, 5, 10, 12; the reader refuses SOFT elsewhere).
   Real soft_scale = 0.0;
+  /// SOFT = 2: segment-based contact (contact/segment_contact.hpp; the two-sided automatic card only).
+  bool segment_based = false;
   /// VC (stress): the friction of each slave node capped at VC x its master segment's area
   /// (penalty Types 3, 5, 10, 12 with friction; the reader refuses VC elsewhere).
   Real viscous_friction = 0.0;

@@ -1,0 +1,99 @@
+#pragma once
+/// Segment-based penalty contact (LS-DYNA SOFT = 2 on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, flat
+/// segments, surface penetration only: SBOPT 2, DEPTH 2). Contact is between segments of the two
+/// sides, not between a node and a segment: for every segment a and each of its 2 x 2 Gauss points
+/// x_q, the nearest segment b of the other side that a faces (n_a . n_b < 0, no shared node) and
+/// that x_q lies over gives the penetration d_q = max(0, -(x_q - x_b) . n_b - d0_q) (d0_q: the
+/// penetration found at t = 0, LS-DYNA's SOFT = 2 baseline, shrinking as the segments separate).
+/// The force f = 0.5 w_q k_ab d_q n_b acts on a's nodes with a's shape functions at the Gauss
+/// point and, opposite, on b's nodes with b's at the projection (w_q: the Gauss point's share of
+/// a's area; 0.5: every pair is seen from both of its segments). Two flat segments pressed
+/// uniformly by d therefore carry k_ab d. Stiffness (LS-DYNA theory manual, segment-based contact):
+///   k_ab = 0.5 SLSFAC SFS m_a m_b / (m_a + m_b) / dt_c^2,
+/// m_s = the sum of the lumped masses of segment s's nodes, dt_c the run's initial step
+/// (StepTimes::dt_initial), replaced by the step just taken when that is more than 5 % above it.
+/// No friction, no damping, solid faces only (the factory refuses the rest). The search: every
+/// cycle, the broad phase's segment boxes against each segment's bounding sphere box; forces per
+/// segment in parallel, scattered serially in segment order (thread-count independent).
+/// docs/contact.md, "Segment-based contact (SOFT = 2)".
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/contact/search/broad_phase.hpp"
+#include "slideline/mesh/surface.hpp"
+
+namespace slideline {
+
+/// One Gauss point of one segment in contact at the last cycle.
+struct SegmentContactRecord {
+  Index other = -1;               ///< segment b it presses on (-1: none this cycle)
+  Vec3 force = Vec3::Zero();      ///< force on segment a's point (force)
+  std::array<Real, 4> shape_a{};  ///< a's shape functions at the Gauss point
+  std::array<Real, 4> shape_b{};  ///< b's shape functions at the projection
+  Real weight = 0.0;              ///< 0.5 w_q (dimensionless)
+  Real penetration = 0.0;         ///< d_q beyond the baseline (length, >= 0)
+  Real stiffness = 0.0;           ///< k_ab (force / length)
+  Real dt_inv2 = 0.0;             ///< omega^2 / 4 of this point's spring (1 / time^2)
+};
+
+class SegmentContact final : public ContactAlgorithm, public ContactForces {
+ public:
+  /// surface: the union of both sides' segments (adjacency built); sides: per segment, bit 1 the
+  /// card's slave side, bit 2 its master side; stiffness_scale = SLSFAC x SFS.
+  SegmentContact(std::string title, Surface surface, std::vector<std::uint8_t> sides,
+                 std::unique_ptr<BroadPhase> broad_phase, Real stiffness_scale);
+
+  const std::string& name() const override { return name_; }
+  void initialize(const ContactContext& context) override;
+  ContactPhases phases() override { return {.forces = this}; }
+  void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override;
+  Real stable_dt() const override { return dt_; }
+  Vec3 slave_force() const override { return slave_; }
+  Vec3 master_force() const override { return -slave_; }
+
+  const Surface& surface() const { return surface_; }
+  /// m_s: the sum of the lumped masses of segment s's nodes at initialize() (mass).
+  Real segment_mass(Index s) const { return mass_[static_cast<std::size_t>(s)]; }
+  /// The step the springs are sized by (time): 0 before the first cycle.
+  Real sizing_step() const { return dt_c_; }
+  /// 4 records per segment (Gauss points in the order (-,-), (+,-), (+,+), (-,+)).
+  std::span<const SegmentContactRecord> records() const { return records_; }
+  /// Gauss points found penetrating at t = 0 (their depth kept as the baseline) and the deepest.
+  Index initial_penetration_count() const { return initial_count_; }
+  Real largest_initial_penetration() const { return initial_max_; }
+
+ private:
+  void search(const Vec3Field& x);
+  void evaluate(Index a, const NodalFields& nodes, bool baseline);
+  void scatter(ContactForceView out);
+
+  std::string name_;
+  Surface surface_;
+  std::vector<std::uint8_t> side_;
+  std::unique_ptr<BroadPhase> broad_phase_;
+  Real scale_ = 0.1;
+  std::vector<Real> mass_;
+  std::vector<Real> depth_limit_;     ///< per segment: half its longer diagonal at t = 0
+  std::vector<Index> index_;          ///< 0 .. segments - 1, the broad-phase query list
+  Vec3Field centroid_;                ///< per segment, at the last search
+  Vec3Field normal_;                  ///< per segment: its unit normal at the last search
+  std::vector<Real> radius_;          ///< per segment: largest centroid-to-corner distance
+  std::vector<Candidate> candidates_; ///< (segment a, segment b) of the last search
+  std::vector<Index> first_;          ///< per segment a: its first candidate (CSR, segments + 1)
+  std::vector<SegmentContactRecord> records_;
+  std::vector<Real> baseline_;        ///< per Gauss point: d0 (length)
+  std::vector<Index> baseline_of_;    ///< per Gauss point: the segment d0 was measured on
+  Real dt_c_ = 0.0;
+  Real dt_ = std::numeric_limits<Real>::max();
+  Vec3 slave_ = Vec3::Zero();
+  Index initial_count_ = 0;
+  Real initial_max_ = 0.0;
+};
+
+}  // namespace slideline
