@@ -25,6 +25,7 @@
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/element_chunks.hpp"
+#include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/element/solid_point_terms.hpp"
@@ -152,17 +153,12 @@ class FullHexBlock final : public ElementBlock {
 
   /// ElementBlock::scale_element_masses (MS1ST = 1): element e's rho V0 / 8 per corner times factor[e].
   Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
-    const Index ne = element_count();
-    step_factor_.assign(static_cast<std::size_t>(ne), 1.0);
-    Real added = 0.0;
-    for (Index e = 0; e < ne; ++e) {
-      const Real f = factor[static_cast<std::size_t>(e)];
-      const Real dm = mat_.density() * volume0_[e] / 8.0 * (f - 1.0);
-      for (int k = 0; k < 8; ++k) nodes.mass[conn_[8 * e + k]] += dm;
-      added += 8.0 * dm;
-      step_factor_[e] = std::sqrt(f);
-    }
-    return added;
+    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
+    const Real rho = mat_.density();
+    const auto share = [&](Index e) {
+      return ElementMassScaling::CornerShare{rho * volume0_[e] / 8.0, 0.0, 8 * e, 8};
+    };
+    return scale_corner_masses(element_count(), factor, conn_.data(), share, nodes, step_factor_.data());
   }
 
   /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.

@@ -15,6 +15,7 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/hex8.hpp"
+#include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/hex_hourglass_stiffness.hpp"
 #include "slideline/material/solid_material.hpp"
 
@@ -172,14 +173,11 @@ class HexBlock final : public ElementBlock {
   Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
     const Index ne = element_count();
     step_factor_.assign(padded(ne), 1.0);
-    Real added = 0.0;
-    for (Index e = 0; e < ne; ++e) {
-      const Real f = factor[static_cast<std::size_t>(e)];
-      const Real dm = mat_.density() * volume0_[e] / 8.0 * (f - 1.0);
-      for (int k = 0; k < 8; ++k) nodes.mass[conn_[8 * e + k]] += dm;
-      added += 8.0 * dm;
-      step_factor_[e] = std::sqrt(f);
-    }
+    const Real rho = mat_.density();
+    const Real added = scale_corner_masses(
+        ne, factor, conn_.data(),
+        [&](Index e) { return ElementMassScaling::CornerShare{rho * volume0_[e] / 8.0, 0.0, 8 * e, 8}; }, nodes,
+        step_factor_.data());
     std::fill(step_factor_.begin() + ne, step_factor_.end(), step_factor_[ne - 1]);  // spare lanes
     return added;
   }

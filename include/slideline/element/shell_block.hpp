@@ -18,6 +18,7 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/shell_erosion.hpp"
 #include "slideline/element/block_options.hpp"
+#include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/shell_bt.hpp"
 #include "slideline/element/shell_c0tri.hpp"
 #include "slideline/element/shell_thickness.hpp"
@@ -154,21 +155,9 @@ class BasicShellBlock final : public ElementBlock {
   /// (corner_share) times factor[e]: the rotary inertia is scaled with the mass, as LS-DYNA's
   /// lumping keeps it proportional to the mass.
   Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
-    const Index ne = element_count();
-    step_factor_.assign(ne, 1.0);
-    Real added = 0.0;
-    for (Index e = 0; e < ne; ++e) {
-      const Real f = factor[static_cast<std::size_t>(e)];
-      const ElementMassScaling::CornerShare c = corner_share(e);
-      const Real dm = c.mass * (f - 1.0), dj = c.inertia * (f - 1.0);
-      for (int k = 0; k < c.corners; ++k) {
-        nodes.mass[conn_[c.first + k]] += dm;
-        nodes.rot_inertia[conn_[c.first + k]] += dj;
-      }
-      added += c.corners * dm;
-      step_factor_[e] = std::sqrt(f);
-    }
-    return added;
+    step_factor_.assign(element_count(), 1.0);
+    return scale_corner_masses(element_count(), factor, conn_.data(), [&](Index e) { return corner_share(e); }, nodes,
+                               step_factor_.data());
   }
 
   /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.
