@@ -18,17 +18,19 @@
 #include <cmath>
 #include <cstdio>
 
-#include "general_contact_models.hpp"
+#include "tiebreak_blocks.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/contact/automatic_tiebreak_contact.hpp"
 
 namespace slideline {
 namespace {
 
-using test_support::add_box;
-using test_support::add_elastic_part;
+using test_support::add_tiebreak_blocks;
+using test_support::add_node_load;
 using test_support::BoxIds;
 using test_support::Frame;
+using test_support::tiebreak_card;
+using test_support::TiebreakBlocks;
 
 constexpr Real kE = 1e4, kNu = 0.3, kRho = 1.0;
 constexpr Real kNfls = 2.0, kSfls = 1.0, kMu = 0.1;
@@ -55,35 +57,15 @@ struct TieResult {
   Real energy_release = 0.0;  ///< the largest after failure (the release: a force F gone in one step)
 };
 
-/// Adds a nodal load of `lcid` along `dir` (a unit vector) to node set `nsid`, `scale` per node.
-void add_node_load(model::Model& m, Id nsid, Id lcid, const Vec3& dir, Real scale) {
-  for (int k = 0; k < 3; ++k)
-    if (dir[k] != 0.0) m.nodal_loads.push_back({true, nsid, k + 1, lcid, scale * dir[k], 0, {0, 0, 0}, {}});
-}
-
 TieResult run_tie(const TieCase& tc) {
   const Frame frame = tc.rotated ? test_support::oblique_frame() : Frame{};
   model::Model m;
-  add_elastic_part(m, 1, kRho, kE, kNu, 10);
-  add_elastic_part(m, 2, kRho, kE, kNu, 10);
-  const BoxIds upper = add_box(m, 1, Vec3(0.0, 0.5, 0.0), Vec3(1.0, 0.5, 1.0), {1, 1, 1}, frame);
-  const BoxIds lower = add_box(m, 2, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.5, 1.0), {1, 1, 1}, frame);
-  // Slave: the upper block's bottom face (outward -y); master: the lower block's top face (+y).
-  m.segment_sets.push_back({1, "slave", {{upper.at(0, 0, 0), upper.at(1, 0, 0), upper.at(1, 0, 1), upper.at(0, 0, 1)}}, {}});
-  m.segment_sets.push_back({2, "master", {{lower.at(0, 1, 0), lower.at(0, 1, 1), lower.at(1, 1, 1), lower.at(1, 1, 0)}}, {}});
-  m.node_sets.push_back({3, "top", upper.face_j(1), {}});
-  m.node_sets.push_back({4, "bottom", lower.face_j(0), {}});
-  m.spcs.push_back({1, "fixed", 4, 0, {1, 1, 1, 1, 1, 1}, {}});
-  model::Contact card;
-  card.keyword = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (" + tc.name() + ")";
-  card.type = model::ContactType::tiebreak_surface;
-  card.form = model::ContactForm::automatic_surface_to_surface;
-  card.ssid = 1;
-  card.msid = 2;
-  card.sstyp = card.mstyp = 0;
+  const TiebreakBlocks blocks = add_tiebreak_blocks(m, frame, kRho, kE, kNu);
+  const BoxIds& upper = blocks.upper;
+  const BoxIds& lower = blocks.lower;
+  model::Contact card = tiebreak_card(tc.name(), 2);
   card.fs = card.fd = kMu;
   card.sfs = card.sfm = 10.0;
-  card.option = 2;
   card.nfls = card.nflf = kNfls;
   card.sfls = card.sflf = kSfls;
   m.contacts.push_back(card);

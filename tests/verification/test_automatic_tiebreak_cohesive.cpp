@@ -24,7 +24,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "general_contact_models.hpp"
+#include "tiebreak_blocks.hpp"
 #include "slideline/contact/automatic_tiebreak_contact.hpp"
 #include "slideline/core/parallel.hpp"
 #include "slideline/solver/energy_ledger.hpp"
@@ -32,10 +32,11 @@
 namespace slideline {
 namespace {
 
-using test_support::add_box;
-using test_support::add_elastic_part;
+using test_support::add_tiebreak_blocks;
 using test_support::BoxIds;
 using test_support::Frame;
+using test_support::tiebreak_card;
+using test_support::TiebreakBlocks;
 
 constexpr Real kE = 1e5, kNu = 0.3, kRho = 1.0;
 constexpr Real kCn = 1e3, kNfls = 2.0, kSfls = 1.5, kGic = 1e-2, kGiic = 1.2e-2;
@@ -86,23 +87,10 @@ struct CohesiveResult {
 CohesiveResult run_cohesive(const CohesiveCase& cc) {
   const Frame frame = cc.rotated ? test_support::oblique_frame() : Frame{};
   model::Model m;
-  add_elastic_part(m, 1, kRho, kE, kNu, 10);
-  add_elastic_part(m, 2, kRho, kE, kNu, 10);
-  const BoxIds upper = add_box(m, 1, Vec3(0.0, 0.5, 0.0), Vec3(1.0, 0.5, 1.0), {1, 1, 1}, frame);
-  const BoxIds lower = add_box(m, 2, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.5, 1.0), {1, 1, 1}, frame);
-  m.segment_sets.push_back({1, "slave", {{upper.at(0, 0, 0), upper.at(1, 0, 0), upper.at(1, 0, 1), upper.at(0, 0, 1)}}, {}});
-  m.segment_sets.push_back({2, "master", {{lower.at(0, 1, 0), lower.at(0, 1, 1), lower.at(1, 1, 1), lower.at(1, 1, 0)}}, {}});
-  m.node_sets.push_back({3, "top", upper.face_j(1), {}});
-  m.node_sets.push_back({4, "bottom", lower.face_j(0), {}});
-  m.spcs.push_back({1, "fixed", 4, 0, {1, 1, 1, 1, 1, 1}, {}});
-  model::Contact card;
-  card.keyword = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (" + cc.name() + ")";
-  card.type = model::ContactType::tiebreak_surface;
-  card.form = model::ContactForm::automatic_surface_to_surface;
-  card.ssid = 1;
-  card.msid = 2;
-  card.sstyp = card.mstyp = 0;
-  card.option = 9;
+  const TiebreakBlocks blocks = add_tiebreak_blocks(m, frame, kRho, kE, kNu);
+  const BoxIds& upper = blocks.upper;
+  const BoxIds& lower = blocks.lower;
+  model::Contact card = tiebreak_card(cc.name(), 9);
   card.nfls = card.nflf = kNfls;
   card.sfls = card.sflf = kSfls;
   card.param = 1.0;

@@ -28,17 +28,19 @@
 #include <cmath>
 #include <cstdio>
 
-#include "general_contact_models.hpp"
+#include "tiebreak_blocks.hpp"
 #include "slideline/contact/automatic_tiebreak_contact.hpp"
 #include "slideline/solver/energy_ledger.hpp"
 
 namespace slideline {
 namespace {
 
-using test_support::add_box;
-using test_support::add_elastic_part;
+using test_support::add_tiebreak_blocks;
+using test_support::add_node_load;
 using test_support::BoxIds;
 using test_support::Frame;
+using test_support::tiebreak_card;
+using test_support::TiebreakBlocks;
 
 constexpr Real kE = 1e4, kNu = 0.3, kRho = 1.0, kMass = 0.5;
 constexpr Real kNfls = 2.0, kMu = 0.1, kPressure = 4.0, kShearRate = 0.25, kShearStart = 0.3;
@@ -72,34 +74,16 @@ struct Option4Result {
   bool failed = false;
 };
 
-void add_node_load(model::Model& m, Id nsid, Id lcid, const Vec3& dir, Real scale) {
-  for (int k = 0; k < 3; ++k)
-    if (dir[k] != 0.0) m.nodal_loads.push_back({true, nsid, k + 1, lcid, scale * dir[k], 0, {0, 0, 0}, {}});
-}
-
 Option4Result run_option4(const Option4Case& oc) {
   const Frame frame = oc.rotated ? test_support::oblique_frame() : Frame{};
   model::Model m;
-  add_elastic_part(m, 1, kRho, kE, kNu, 10);
-  add_elastic_part(m, 2, kRho, kE, kNu, 10);
-  const BoxIds upper = add_box(m, 1, Vec3(0.0, 0.5, 0.0), Vec3(1.0, 0.5, 1.0), {1, 1, 1}, frame);
-  const BoxIds lower = add_box(m, 2, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.5, 1.0), {1, 1, 1}, frame);
-  m.segment_sets.push_back({1, "slave", {{upper.at(0, 0, 0), upper.at(1, 0, 0), upper.at(1, 0, 1), upper.at(0, 0, 1)}}, {}});
-  m.segment_sets.push_back({2, "master", {{lower.at(0, 1, 0), lower.at(0, 1, 1), lower.at(1, 1, 1), lower.at(1, 1, 0)}}, {}});
-  m.node_sets.push_back({3, "top", upper.face_j(1), {}});
-  m.node_sets.push_back({4, "bottom", lower.face_j(0), {}});
+  const TiebreakBlocks blocks = add_tiebreak_blocks(m, frame, kRho, kE, kNu);
+  const BoxIds& upper = blocks.upper;
+  const BoxIds& lower = blocks.lower;
   m.node_sets.push_back({5, "tied face", upper.face_j(0), {}});
-  m.spcs.push_back({1, "fixed", 4, 0, {1, 1, 1, 1, 1, 1}, {}});
-  model::Contact card;
-  card.keyword = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (OPTION 4, " + oc.name() + ")";
-  card.type = model::ContactType::tiebreak_surface;
-  card.form = model::ContactForm::automatic_surface_to_surface;
-  card.ssid = 1;
-  card.msid = 2;
-  card.sstyp = card.mstyp = 0;
+  model::Contact card = tiebreak_card("OPTION 4, " + oc.name(), 4);
   card.fs = card.fd = kMu;
   card.sfs = card.sfm = 10.0;
-  card.option = 4;
   card.nfls = card.nflf = kNfls;
   m.contacts.push_back(card);
   const Vec3 up = frame.map(Vec3::UnitY()), along = frame.map(Vec3::UnitX());
