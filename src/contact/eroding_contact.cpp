@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,7 +15,6 @@
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/element_erosion.hpp"
 #include "slideline/mesh/surface_builder.hpp"
-#include "slideline/solver/boundary.hpp"
 
 namespace slideline {
 
@@ -67,17 +66,14 @@ void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const
 
 /// ISYM = 1: leaves out of side.surface the solid faces on a symmetry plane: faces whose unit
 /// normal (reference geometry) is a global axis to 1e-6 and whose nodes are all held in that
-/// direction by a support without a curve acting for the whole run (*BOUNDARY_SPC_..., *NODE TC).
+/// direction by a support without a curve acting for the whole run (*BOUNDARY_SPC_..., *NODE TC;
+/// ContactBuildContext::held_axes).
 /// Such faces are exterior only because the model is cut there; as contact segments they would
 /// catch the other half's nodes that do not exist.
 void drop_symmetry_faces(ContactSide& side, const ContactBuildContext& ctx) {
   Surface& s = side.surface;
-  if (!ctx.supports || s.segment_count() == 0) return;
-  std::vector<std::uint8_t> held(ctx.nodes.size(), 0);
-  for (const SupportGroup& g : *ctx.supports)
-    for (const Support& sp : g.supports)
-      if (!sp.rotational && !sp.has_curve && sp.birth <= 0.0 && sp.death == std::numeric_limits<Real>::infinity())
-        for (Index n : sp.nodes) held[static_cast<std::size_t>(n)] |= std::uint8_t(1u << static_cast<int>(sp.axis));
+  const std::span<const std::uint8_t> held = ctx.held_axes;
+  if (held.empty() || s.segment_count() == 0) return;
   Surface kept;
   for (Index k = 0; k < s.segment_count(); ++k) {
     const auto u = static_cast<std::size_t>(k);

@@ -14,6 +14,7 @@
 #include "slideline/core/overloaded.hpp"
 #include "slideline/core/source_location.hpp"
 #include "slideline/element/block_factory.hpp"
+#include "slideline/solver/held_axes.hpp"
 #include "slideline/solver/material_registry.hpp"
 #include "slideline/solver/rigid_body.hpp"
 #include "slideline/solver/validate_model.hpp"
@@ -519,7 +520,8 @@ struct Builder {
   }
 
   void build_contacts() {
-    const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets, &setup.supports};
+    const std::vector<std::uint8_t> held = held_axes(setup.supports, setup.nodes.size());  // ISYM = 1
+    const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets, held};
     const std::vector<Id> eroding = eroding_part_of_nodes();
     // Force transducers last: they read the contact forces every other interface has added.
     for (const bool transducers : {false, true})

@@ -6,7 +6,9 @@
 /// nodal radius, one friction law, the stiffness factors, the tiebreak failure data, birth and
 /// death, and the outputs. The factories (src/contact/make_*.cpp) read the spec, never the card.
 /// docs/architecture.md, "The contact pipeline".
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,8 +21,6 @@
 
 namespace slideline {
 
-struct SupportGroup;  // solver/boundary.hpp
-
 class ElementBlock;
 
 /// What resolution may use: the card, the deck's contact controls, and the built mesh (element
@@ -31,9 +31,10 @@ struct ContactBuildContext {
   const std::vector<std::unique_ptr<ElementBlock>>& blocks;
   const NodalFields& nodes;
   const MeshSets& sets;
-  /// The model's supports (for ISYM = 1 of the eroding cards: faces on symmetry planes); null when
-  /// the caller has none to give.
-  const std::vector<SupportGroup>* supports = nullptr;
+  /// Per node, the translational axes (bit a for axis a) a support without a curve holds for the
+  /// whole run (the builder's: for ISYM = 1 of the eroding cards, faces on symmetry planes);
+  /// empty when the caller has none to give.
+  std::span<const std::uint8_t> held_axes = {};
 };
 
 /// One side of an interface as the card's SSID/SSTYP (or MSID/MSTYP) select it.

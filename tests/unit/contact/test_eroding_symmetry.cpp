@@ -7,6 +7,7 @@
 // in y (their normal): kept. ISYM = 0 keeps every face.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "slideline/element/element_erosion.hpp"
 #include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
+#include "slideline/solver/held_axes.hpp"
 
 namespace slideline {
 namespace {
@@ -34,7 +36,8 @@ std::string deck(int isym, int erosop) {
 Index faces(int isym, int erosop) {
   const model::Model m = read_keyword_string(deck(isym, erosop), "sym.k");
   const SimulationSetup setup = build_setup(m);
-  const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets, &setup.supports};
+  const std::vector<std::uint8_t> held = held_axes(setup.supports, setup.nodes.size());  // as build.cpp
+  const ContactBuildContext ctx{m, setup.blocks, setup.nodes, setup.sets, held};
   InterfaceSpec spec = resolve_interface(m.contacts.at(0), 1, ctx);
   std::vector<Id> eroding(setup.nodes.size(), 0);
   for (const auto& b : setup.blocks)

@@ -85,12 +85,14 @@ TEST(SolidMaterial, HyperelasticUpdateIsTheStressAtF) {
   const Tensor3<Lanes> s = mr.update(sl, Fl, Dl, 0.5);
   const Tensor3<Lanes> sf = mr.cauchy_stress(Fl);
   // The batch and one-element code may round differently (the compiler contracts a * b + c into
-  // fused multiply-adds differently in vector and scalar code): equal per type, close across.
+  // fused multiply-adds differently in vector and scalar code), and so may the two inlined batch
+  // copies, as the scalar ones above (under -march=native the batch pair parted in the last bit
+  // when the element headers grew, session 13): equal to round-off within a type and across.
   const Tensor3<Real> s1 = mr.cauchy_stress(F);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int l = 0; l < kLanes; ++l) {
-        EXPECT_EQ(s[i][j][l], sf[i][j][l]);
+        EXPECT_NEAR(s[i][j][l], sf[i][j][l], 1e-13 * std::abs(s1[0][0]));
         EXPECT_NEAR(s[i][j][l], s1[i][j], 1e-13 * std::abs(s1[0][0]));
       }
 }
