@@ -1,7 +1,12 @@
 // Hexahedron force update and full explicit step, in ns per element-cycle, on cubes of 10^3 to
-// 10^6 elements, 1 and 2 threads. The counter "per_elem_cycle" is the time per element-cycle
+// 10^6 elements, 1 and 2 threads (or the list in SLIDELINE_BENCH_THREADS). The counter "per_elem_cycle" is the time per element-cycle
 // (Google Benchmark prints it with an SI prefix: "180n" = 180 ns).
 #include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "slideline/core/parallel.hpp"
 #include "slideline/element/block_factory.hpp"
@@ -191,9 +196,23 @@ void BM_SolidForms(benchmark::State& state) {
   set_threads(max_threads());
 }
 
+/// The thread counts of the size sweeps: 1 and 2 (this project's 2-core machine), or the
+/// comma-separated list in SLIDELINE_BENCH_THREADS for a scaling run on a larger machine
+/// (docs/benchmarks.md, "Thread scaling").
+std::vector<int> thread_counts() {
+  std::vector<int> out;
+  if (const char* env = std::getenv("SLIDELINE_BENCH_THREADS")) {
+    std::stringstream list(env);
+    for (std::string item; std::getline(list, item, ',');)
+      if (const int t = std::atoi(item.c_str()); t > 0) out.push_back(t);
+  }
+  if (out.empty()) out = {1, 2};
+  return out;
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   for (int n : {10, 22, 46, 100})
-    for (int t : {1, 2}) b->Args({n, t, 0});
+    for (int t : thread_counts()) b->Args({n, t, 0});
   b->ArgNames({"n", "threads", "damped"});
   b->Unit(benchmark::kMillisecond);
   b->UseRealTime();
