@@ -31,16 +31,16 @@ struct ErosionCriteria {
     bool on = false;
     Real value = 0.0;
   };
-  Threshold mxpres;  ///< fails when p >= MXPRES (force/length^2)
-  Threshold mnpres;  ///< fails when p <= MNPRES
-  Threshold sigp1;   ///< fails when the largest principal stress >= SIGP1
-  Threshold sigvm;   ///< fails when the von Mises stress >= SIGVM
+  Threshold mxpres;  ///< fails when p > MXPRES (force/length^2)
+  Threshold mnpres;  ///< fails when p < MNPRES
+  Threshold sigp1;   ///< fails when the largest principal stress > SIGP1
+  Threshold sigvm;   ///< fails when the von Mises stress > SIGVM
   Threshold failtm;  ///< fails when the time t >= FAILTM
-  Threshold mneps;   ///< fails when the smallest principal strain e3 <= MNEPS
-  Threshold effeps;  ///< fails when the effective strain sqrt(2/3 e'_ij e'_ij) >= EFFEPS
-  Threshold voleps;  ///< fails when the volumetric strain ln J >= VOLEPS (> 0), <= VOLEPS (< 0)
-  Threshold mxeps;   ///< fails when the largest principal strain e1 >= MXEPS
-  Threshold epssh;   ///< fails when the tensorial shear strain (e1 - e3) / 2 >= EPSSH
+  Threshold mneps;   ///< fails when the smallest principal strain e3 < MNEPS
+  Threshold effeps;  ///< fails when the effective strain sqrt(2/3 e'_ij e'_ij) > EFFEPS
+  Threshold voleps;  ///< fails when the volumetric strain ln J > VOLEPS (> 0), < VOLEPS (< 0)
+  Threshold mxeps;   ///< fails when the largest principal strain e1 > MXEPS
+  Threshold epssh;   ///< fails when the tensorial shear strain (e1 - e3) / 2 > EPSSH
   /// NCS: how many of the thresholds above must hold at once at a point (>= 1).
   int ncs = 1;
   /// NUMFIP of *MAT_ADD_EROSION (shells): > 0 the number of through-thickness points that must
@@ -65,26 +65,29 @@ struct ErosionCriteria {
   bool any() const { return plastic_strain > 0.0 || has_thresholds() || min_step > 0.0 || erode_below_tsmin; }
 
   /// The number of *MAT_ADD_EROSION thresholds that hold at a point of stress `s` and principal
-  /// logarithmic strains `e` (descending; read only when needs_strain()) at time `t`.
+  /// logarithmic strains `e` (descending; read only when needs_strain()) at time `t`. A threshold
+  /// holds once it is passed, strictly (the manual: "if the value is exceeded"): so a threshold of
+  /// 0 kept by EXCL != 0 holds in the first tension, not at rest (the manual's own example, MNPRES
+  /// = 0 with EXCL to keep a material out of tension, would otherwise delete every element at t = 0).
   int thresholds_met(const std::array<Real, 6>& s, Real t, const std::array<Real, 3>& e = {}) const {
     int n = 0;
     if (mxpres.on || mnpres.on) {
       const Real p = -(s[0] + s[1] + s[2]) / 3.0;
-      n += (mxpres.on && p >= mxpres.value) ? 1 : 0;
-      n += (mnpres.on && p <= mnpres.value) ? 1 : 0;
+      n += (mxpres.on && p > mxpres.value) ? 1 : 0;
+      n += (mnpres.on && p < mnpres.value) ? 1 : 0;
     }
-    if (sigp1.on && max_principal(s) >= sigp1.value) ++n;
-    if (sigvm.on && von_mises(s) >= sigvm.value) ++n;
+    if (sigp1.on && max_principal(s) > sigp1.value) ++n;
+    if (sigvm.on && von_mises(s) > sigvm.value) ++n;
     if (failtm.on && t >= failtm.value) ++n;
     if (needs_strain()) {
-      n += (mxeps.on && e[0] >= mxeps.value) ? 1 : 0;
-      n += (mneps.on && e[2] <= mneps.value) ? 1 : 0;
-      n += (epssh.on && 0.5 * (e[0] - e[2]) >= epssh.value) ? 1 : 0;
+      n += (mxeps.on && e[0] > mxeps.value) ? 1 : 0;
+      n += (mneps.on && e[2] < mneps.value) ? 1 : 0;
+      n += (epssh.on && 0.5 * (e[0] - e[2]) > epssh.value) ? 1 : 0;
       if (voleps.on) {
         const Real v = e[0] + e[1] + e[2];
-        n += (voleps.value > 0.0 ? v >= voleps.value : v <= voleps.value) ? 1 : 0;
+        n += (voleps.value > 0.0 ? v > voleps.value : v < voleps.value) ? 1 : 0;
       }
-      n += (effeps.on && effective_strain(e) >= effeps.value) ? 1 : 0;
+      n += (effeps.on && effective_strain(e) > effeps.value) ? 1 : 0;
     }
     return n;
   }

@@ -64,7 +64,7 @@ TEST(ErosionCriteria, ThresholdsAndNcs) {
   ErosionCriteria k;
   const Sym tension = rotated(30.0, 0.0, 0.0, 0.7);  // p = -10, sigma_1 = 30, vm = 30
   EXPECT_FALSE(k.point_fails(tension, 1.0));
-  k.mnpres = {true, -10.0};
+  k.mnpres = {true, -9.5};
   EXPECT_TRUE(k.point_fails(tension, 0.0));
   k.mnpres = {true, -10.5};
   EXPECT_FALSE(k.point_fails(tension, 0.0));
@@ -88,6 +88,32 @@ TEST(ErosionCriteria, ThresholdsAndNcs) {
   EXPECT_FALSE(k.point_fails(tension, 1.0));
   EXPECT_TRUE(k.point_fails(tension, 2.0));
   EXPECT_FALSE(k.point_fails(Sym{}, 5.0));  // only FAILTM holds
+}
+
+// A threshold holds once passed, strictly: every stress and strain threshold set to 0 (what EXCL
+// != 0 keeps) holds nowhere at rest (zero stress, zero strain), and each holds at the first stress
+// or strain of its sign. (MNPRES = 0 is the manual's "keep the material out of tension".)
+TEST(ErosionCriteria, ZeroThresholdsHoldOnlyOncePassed) {
+  ErosionCriteria k;
+  const std::array<Real, 3> rest{0.0, 0.0, 0.0};
+  for (ErosionCriteria::Threshold ErosionCriteria::*f :
+       {&ErosionCriteria::mxpres, &ErosionCriteria::mnpres, &ErosionCriteria::sigp1, &ErosionCriteria::sigvm,
+        &ErosionCriteria::mneps, &ErosionCriteria::effeps, &ErosionCriteria::mxeps, &ErosionCriteria::epssh}) {
+    k = ErosionCriteria{};
+    k.*f = {true, 0.0};
+    EXPECT_EQ(k.thresholds_met(Sym{}, 0.0, rest), 0);
+  }
+  k = ErosionCriteria{};
+  k.mnpres = {true, 0.0};
+  EXPECT_TRUE(k.point_fails(rotated(1e-6, 0.0, 0.0, 0.3), 0.0));  // p = -3.3e-7 < 0
+  EXPECT_FALSE(k.point_fails(rotated(-1e-6, 0.0, 0.0, 0.3), 0.0));
+  k = ErosionCriteria{};
+  k.mxeps = {true, 0.0};
+  EXPECT_TRUE(k.point_fails(Sym{}, 0.0, {1e-9, 0.0, 0.0}));
+  EXPECT_FALSE(k.point_fails(Sym{}, 0.0, {0.0, 0.0, -1e-9}));
+  k = ErosionCriteria{};
+  k.mneps = {true, 0.0};
+  EXPECT_TRUE(k.point_fails(Sym{}, 0.0, {0.0, 0.0, -1e-9}));
 }
 
 // NUMFIP: a count (blank/0 read as 1), a percentage of the points (rounded up), or |NUMFIP| - 100.
