@@ -291,6 +291,11 @@ void read_set_node_general(const Context& ctx, Block& block, model::Model& model
 /// for a part or box the deck does not define.
 void resolve_node_sets(const DeckState& deck, model::Model& model);
 
+// keyword_coordinate_systems.cpp: *DEFINE_COORDINATE_SYSTEM, _NODES and _VECTOR (`titled`: _TITLE).
+void read_define_coordinate_system(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_define_coordinate_nodes(const Context& ctx, Block& block, model::Model& model, bool titled);
+void read_define_coordinate_vector(const Context& ctx, Block& block, model::Model& model, bool titled);
+
 // keyword_rigidwall.cpp: *RIGIDWALL_PLANAR and *RIGIDWALL_PLANAR_FINITE (`with_id`: the _ID option).
 void read_rigidwall_planar(const Context& ctx, Block& block, model::Model& model, bool with_id);
 void read_rigidwall_planar_finite(const Context& ctx, Block& block, model::Model& model, bool with_id);

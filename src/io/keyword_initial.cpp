@@ -1,6 +1,6 @@
 // The *INITIAL_VELOCITY family (field orders from the LS-DYNA keyword manual, listed in
 // docs/keywords.md). The reader only records the cards; build_simulation checks the references
-// and refuses what the solver cannot do (local systems, IVATN, PHASE), naming the card's line.
+// and refuses what the solver cannot do (IVATN, PHASE, a spin with a local system), naming the card's line.
 #include <string>
 
 #include "keyword_card.hpp"
@@ -41,6 +41,7 @@ void read_initial_velocity_node(const Context& ctx, Block& b, model::Model& m) {
     model::InitialVelocityNode iv;
     c.get(0, "NID", iv.nid);
     get_velocity(c, 1, kVelocity, iv.v, iv.vr);
+    c.get(7, "ICID", iv.icid);
     iv.at.line = l->number;
     iv.at.file = ctx.file_index;
     m.initial_velocity_nodes.push_back(iv);

@@ -101,11 +101,12 @@ void write_initial_velocities(const model::Model& m, std::string& o) {
     o += CardOut().r(g.xc[0]).r(g.xc[1]).r(g.xc[2]).r(g.n[0]).r(g.n[1]).r(g.n[2]).i(g.phase).i(g.irigid).str();
   }
   if (!m.initial_velocity_nodes.empty()) {
-    o += "*INITIAL_VELOCITY_NODE\n$#     NID        VX        VY        VZ       VXR       VYR       VZR\n";
+    o += "*INITIAL_VELOCITY_NODE\n$#     NID        VX        VY        VZ       VXR       VYR       VZR      ICID\n";
     for (const auto& iv : m.initial_velocity_nodes) {
       CardOut c;
       c.i(iv.nid);
       velocity(c, iv.v, iv.vr);
+      if (iv.icid != 0) c.i(iv.icid);
       o += c.str();
     }
   }
@@ -450,6 +451,38 @@ void write_curves_and_boxes(const model::Model& m, std::string& o) {
   }
 }
 
+/// Local coordinate systems, each in the form the deck gave it.
+void write_coordinate_systems(const model::Model& m, std::string& o) {
+  using Kind = model::CoordinateSystem::Kind;
+  for (const auto& s : m.coordinate_systems) {
+    const char* kw = s.kind == Kind::points  ? "*DEFINE_COORDINATE_SYSTEM"
+                     : s.kind == Kind::nodes ? "*DEFINE_COORDINATE_NODES"
+                                             : "*DEFINE_COORDINATE_VECTOR";
+    o += std::string(kw) + (s.title.empty() ? "\n" : "_TITLE\n" + heading(s.title));
+    switch (s.kind) {
+      case Kind::points:
+        o += "$#     CID        X0        Y0        Z0        XL        YL        ZL      CIDL\n";
+        o += CardOut().i(s.cid).r(s.origin[0]).r(s.origin[1]).r(s.origin[2]).r(s.axis[0]).r(s.axis[1]).r(s.axis[2])
+                 .i(s.cidl).str();
+        o += "$#      XP        YP        ZP\n" + CardOut().r(s.plane[0]).r(s.plane[1]).r(s.plane[2]).str();
+        break;
+      case Kind::nodes: {
+        static const char* const dirs[] = {"X", "Y", "Z"};
+        o += "$#     CID        N1        N2        N3      FLAG       DIR\n";
+        std::string c = CardOut().i(s.cid).i(s.nodes[0]).i(s.nodes[1]).i(s.nodes[2]).i(s.flag).str();
+        c.pop_back();  // the newline; DIR is text, right-aligned in its field (or after a comma)
+        o += c + (c.find(',') != std::string::npos ? std::string(",") : std::string(9, ' ')) + dirs[s.dir] + "\n";
+        break;
+      }
+      case Kind::vectors:
+        o += "$#     CID        XX        YX        ZX        XV        YV        ZV       NID\n";
+        o += CardOut().i(s.cid).r(s.axis[0]).r(s.axis[1]).r(s.axis[2]).r(s.plane[0]).r(s.plane[1]).r(s.plane[2])
+                 .i(s.nodes[0]).str();
+        break;
+    }
+  }
+}
+
 /// Nodes and elements.
 void write_mesh(const model::Model& m, std::string& o) {
   if (!m.nodes.empty()) {
@@ -484,6 +517,7 @@ std::string write_keyword_string(const model::Model& m) {
   write_boundaries_and_loads(m, o);
   write_damping(m, o);
   write_curves_and_boxes(m, o);
+  write_coordinate_systems(m, o);
   write_contacts(m, o);
   write_mesh(m, o);
   o += "*END\n";

@@ -20,6 +20,7 @@
 #include "slideline/solver/validate_model.hpp"
 #include "build_support.hpp"
 #include "erosion_setup.hpp"
+#include "slideline/solver/coordinate_axes.hpp"
 #include "initial_velocity.hpp"
 
 namespace slideline {
@@ -331,18 +332,33 @@ struct Builder {
     return setup.sets.part_set(sid, describe(from) + ": " + field);
   }
 
+  /// The global axes and components of local axis `a` of system `cid` (0: `a` itself, 1): the
+  /// nonzero entries of column a of the system's rotation, in axis order.
+  std::vector<std::pair<Axis, Real>> global_components(Axis a, Id cid, const model::Source& src) const {
+    if (cid == 0) return {{a, 1.0}};
+    const Mat3 r = local_axes(m, cid, describe(src) + ": field CID").r;
+    std::vector<std::pair<Axis, Real>> out;
+    for (int k = 0; k < 3; ++k)
+      if (const Real c = r(k, static_cast<int>(a)); c != 0.0) out.emplace_back(static_cast<Axis>(k), c);
+    return out;
+  }
+
   void build_boundaries() {
     for (const auto& spc : m.spcs) {
-      SupportGroup g;  // DOF flags 0 or 1, no CID, no rigid node (validate_model)
+      SupportGroup g;  // DOF flags 0 or 1, a CID whose axes are global axes, no rigid node (validate_model)
       g.name = !spc.title.empty() ? spc.title
                                   : std::string(spc.node ? "spc_node_" : "spc_") +
                                         std::to_string(spc.id != 0 ? spc.id : spc.nsid);
       const auto nodes = spc.node ? std::vector<Index>{node(spc.nsid, spc.src, "NID")}
                                   : node_set(spc.nsid, spc.src, "NSID");
+      // CID: DOFX..DOFRZ name the local axes; each is a global axis (validate_model).
+      std::array<int, 3> global_axis{0, 1, 2};
+      if (spc.cid != 0)
+        global_axis = *axis_permutation(local_axes(m, spc.cid, describe(spc.src) + ": field CID").r);
       for (int d = 0; d < 6; ++d) {
         if (spc.dof[d] == 0) continue;
         Support s;
-        s.axis = static_cast<Axis>(d % 3);
+        s.axis = static_cast<Axis>(global_axis[static_cast<std::size_t>(d % 3)]);
         s.rotational = d >= 3;
         s.nodes = nodes;
         g.supports.push_back(std::move(s));
@@ -438,30 +454,36 @@ struct Builder {
       parts_nodes(loaded, m.body_load_parts->src);  // checks that every part exists
     }
     for (const auto& lb : m.body_loads) {
-      BodyLoad b;
-      b.axis = lb.axis;
-      // LS-DYNA body loads are base accelerations: the inertial force opposes them.
-      b.scale = -lb.sf;
-      b.curve = curve(lb.lcid, lb.src, "LCID");
-      b.parts = loaded;
-      setup.body_loads.push_back(std::move(b));
+      // CID: the acceleration is along the local axis, its global components one load each.
+      for (const auto& [axis, c] : global_components(lb.axis, lb.cid, lb.src)) {
+        BodyLoad b;
+        b.axis = axis;
+        // LS-DYNA body loads are base accelerations: the inertial force opposes them.
+        b.scale = -lb.sf * c;
+        b.curve = curve(lb.lcid, lb.src, "LCID");
+        b.parts = loaded;
+        setup.body_loads.push_back(std::move(b));
+      }
     }
   }
 
   void build_nodal_loads() {
     for (const auto& l : m.nodal_loads) {
       const std::string card = l.set ? "*LOAD_NODE_SET" : "*LOAD_NODE_POINT";
-      NodalLoad nl;  // validate_model: CID 0, DOF 1-3 or 5-7
+      NodalLoad nl;  // validate_model: DOF 1-3 or 5-7, CID 0 or a fixed system
 
       nl.moment = l.dof >= 5;
-      nl.axis = static_cast<Axis>(nl.moment ? l.dof - 5 : l.dof - 1);
-      nl.scale = l.sf;
       nl.curve = curve(l.lcid, l.src, "LCID");
       nl.nodes = l.set ? node_set(l.id, l.src, "NSID") : std::vector<Index>{node(l.id, l.src, "NID")};
       std::sort(nl.nodes.begin(), nl.nodes.end());
       nl.nodes.erase(std::unique(nl.nodes.begin(), nl.nodes.end()), nl.nodes.end());
       nl.source = describe(l.src) + ": " + card;
-      setup.nodal_loads.push_back(std::move(nl));
+      // CID: the force (moment) is along the local axis, its global components one load each.
+      for (const auto& [axis, c] : global_components(static_cast<Axis>(nl.moment ? l.dof - 5 : l.dof - 1), l.cid, l.src)) {
+        nl.axis = axis;
+        nl.scale = l.sf * c;
+        setup.nodal_loads.push_back(nl);
+      }
     }
   }
 

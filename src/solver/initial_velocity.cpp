@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "slideline/solver/coordinate_axes.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/rigid_body.hpp"
@@ -20,6 +21,12 @@ namespace {
 template <class Card>
 std::string place(const model::Model& m, const Card& c, const char* keyword) {
   return describe(model::element_source(m, c)) + ": " + keyword;
+}
+
+/// The rotation from system `icid` to global (identity for 0): the card's velocities are given in
+/// that system (LS-DYNA's ICID). The system at t = 0 (a moving system has not moved yet).
+Mat3 velocity_frame(const model::Model& m, Id icid, const std::string& where) {
+  return icid == 0 ? Mat3::Identity() : local_axes(m, icid, where + " field ICID").r;
 }
 
 std::string num(Real v) {
@@ -92,7 +99,8 @@ void apply_set_cards(const InitialVelocityInputs& in, const NodalFields& nodes, 
   const model::Model& m = in.model;
   for (const auto& iv : m.initial_velocities) {
     const std::string where = place(m, iv, "*INITIAL_VELOCITY");
-    // validate_model refused ICID != 0 and negative NSID, NSIDEX, BOXID.
+    // validate_model refused negative NSID, NSIDEX, BOXID.
+    const Mat3 r = velocity_frame(m, iv.icid, where);
     std::vector<Index> targets =
         iv.nsid == 0 ? all_nodes(nodes.size()) : in.sets.node_set(iv.nsid, where + ": NSID");
     std::vector<Index> exempt;
@@ -112,8 +120,8 @@ void apply_set_cards(const InitialVelocityInputs& in, const NodalFields& nodes, 
     }
     a.begin_card(where, iv.vr != Vec3::Zero() || (iv.nsidex > 0 && iv.vre != Vec3::Zero()));
     for (Index i : targets)
-      if (!std::binary_search(exempt.begin(), exempt.end(), i)) a.set(i, iv.v, iv.vr);
-    for (Index i : exempt) a.set(i, iv.ve, iv.vre);
+      if (!std::binary_search(exempt.begin(), exempt.end(), i)) a.set(i, r * iv.v, r * iv.vr);
+    for (Index i : exempt) a.set(i, r * iv.ve, r * iv.vre);
     a.end_card();
   }
 }
@@ -122,7 +130,8 @@ void apply_generation_cards(const InitialVelocityInputs& in, const NodalFields& 
   const model::Model& m = in.model;
   for (const auto& g : m.initial_velocity_generations) {
     const std::string where = place(m, g, "*INITIAL_VELOCITY_GENERATION");
-    // validate_model refused ICID, IVATN, PHASE != 0, an STYP out of 1-3 and OMEGA without an axis.
+    // validate_model refused IVATN, PHASE != 0, an STYP out of 1-3, OMEGA without an axis and OMEGA
+    // with ICID (the manual gives VX VY VZ in the local system; the axis's frame it leaves open).
     std::vector<Index> targets;
     if (g.id == 0) {
       // ID = 0: every node, STYP ignored (our reading of the LS-DYNA manual: "if zero, STYP is
@@ -144,8 +153,9 @@ void apply_generation_cards(const InitialVelocityInputs& in, const NodalFields& 
     }
     const Vec3 axis = g.omega != 0.0 ? Vec3(g.n / g.n.norm()) : Vec3::Zero();
     const Vec3 spin = g.omega * axis;  // angular velocity vector
+    const Vec3 v = velocity_frame(m, g.icid, where) * g.v;
     a.begin_card(where, false);        // the spin reaches rotational dofs only where they exist
-    for (Index i : targets) a.set(i, g.v + spin.cross(nodes.x0.get(i) - g.xc), spin);
+    for (Index i : targets) a.set(i, v + spin.cross(nodes.x0.get(i) - g.xc), spin);
   }
 }
 
@@ -157,8 +167,9 @@ void apply_node_cards(const InitialVelocityInputs& in, Assignment& a) {
     if (f == in.node_index.end())
       throw InputError(where + ": NID refers to node " + std::to_string(iv.nid) +
                        ", which the deck does not define");
+    const Mat3 r = velocity_frame(m, iv.icid, where);
     a.begin_card(where, iv.vr != Vec3::Zero());
-    a.set(f->second, iv.v, iv.vr);
+    a.set(f->second, r * iv.v, r * iv.vr);
     a.end_card();
   }
 }

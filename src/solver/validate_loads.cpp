@@ -3,34 +3,60 @@
 // one the builder gave when it found the problem itself, to the letter.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "build_support.hpp"
+#include "slideline/solver/coordinate_axes.hpp"
 #include "slideline/contact/interface_spec.hpp"
 #include "validate_problems.hpp"
 
 namespace slideline::validation {
 namespace {
 
+/// The local system `cid` that a card acts in through the run, resolved at t = 0: undefined or
+/// degenerate is bad input; one that moves with its nodes (NODES FLAG = 1, VECTOR NID) is refused
+/// (LS-DYNA turns such a card with the nodes each step; here a system is fixed).
+std::optional<LocalAxes> fixed_frame(const model::Model& m, Problems& p, Id cid, const std::string& user) {
+  try {
+    LocalAxes a = local_axes(m, cid, user);
+    if (a.system->moves()) {
+      p.todo(user + " = " + std::to_string(cid) + ": the system moves with its nodes (" +
+             (a.system->kind == model::CoordinateSystem::Kind::nodes ? "FLAG = 1" : "NID != 0") +
+             "), which is not implemented for a card that acts through the run; give a fixed system");
+      return std::nullopt;
+    }
+    return a;
+  } catch (const InputError& e) {
+    p.bad(e.what());
+    return std::nullopt;
+  }
+}
+
 void check_supports(const model::Model& m, Problems& p) {
   for (const auto& spc : m.spcs) {
-    if (spc.cid != 0)
-      p.todo(describe(spc.src) + ": *BOUNDARY_SPC_SET with a local coordinate system (CID) is not implemented");
     const char* const card = spc.node ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET";
+    if (spc.cid != 0)
+      if (const auto a = fixed_frame(m, p, spc.cid, describe(spc.src) + ": " + card + " field CID");
+          a && !axis_permutation(a->r))
+        p.todo(describe(spc.src) + ": " + card + " field CID = " + std::to_string(spc.cid) +
+               ": constraints along axes that are not global axes (skew constraints) are not implemented; a "
+               "system whose axes are global axes (in any order or sense) is accepted");
     if (std::any_of(spc.dof.begin(), spc.dof.end(), [](int d) { return d != 0 && d != 1; }))
       p.bad(describe(spc.src) + ": DOF flags of " + card + " must be 0 or 1");
   }
 }
 
 void check_nodal_and_body_loads(const model::Model& m, Problems& p) {
-  for (const auto& lb : m.body_loads)
-    if (lb.lciddr != 0 || lb.cid != 0)
-      p.todo(describe(lb.src) + ": *LOAD_BODY with LCIDDR or CID is not implemented");
+  for (const auto& lb : m.body_loads) {
+    if (lb.lciddr != 0)
+      p.todo(describe(lb.src) + ": *LOAD_BODY with LCIDDR (dynamic relaxation) is not implemented");
+    if (lb.cid != 0) fixed_frame(m, p, lb.cid, describe(lb.src) + ": *LOAD_BODY field CID");
+  }
   for (const auto& l : m.nodal_loads) {
     const std::string card = l.set ? "*LOAD_NODE_SET" : "*LOAD_NODE_POINT";
-    if (l.cid != 0)
-      p.todo(describe(l.src) + ": " + card + " in a local coordinate system (CID) is not implemented");
+    if (l.cid != 0) fixed_frame(m, p, l.cid, describe(l.src) + ": " + card + " field CID");
     if (l.dof == 4 || l.dof == 8)
       p.todo(describe(l.src) + ": " + card + " DOF " + std::to_string(l.dof) +
              " (follower force or moment) is not implemented");

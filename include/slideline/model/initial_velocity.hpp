@@ -15,6 +15,7 @@ struct InitialVelocityNode {
   Id nid = 0;
   Vec3 v = Vec3::Zero();   ///< length/time
   Vec3 vr = Vec3::Zero();  ///< rad/time
+  Id icid = 0;             ///< local coordinate system of the velocities (0: global)
   CardLine at;             ///< where the card is, for messages (model::element_source)
   bool operator==(const InitialVelocityNode&) const = default;
 };
@@ -26,7 +27,7 @@ struct InitialVelocity {
   Id nsidex = 0;
   Id boxid = 0;
   int irigid = 0;  ///< overwrite *PART_INERTIA velocities: no effect here (see docs/keywords.md)
-  Id icid = 0;     ///< local coordinate system of the velocities (not implemented)
+  Id icid = 0;     ///< local coordinate system of the velocities, translational and rotational (0: global)
   Vec3 v = Vec3::Zero();
   Vec3 vr = Vec3::Zero();
   Vec3 ve = Vec3::Zero();   ///< exempted nodes (card 3, with NSIDEX > 0)
@@ -44,7 +45,7 @@ struct InitialVelocityGeneration {
   Real omega = 0.0;  ///< angular velocity about the axis, rad/time
   Vec3 v = Vec3::Zero();
   int ivatn = 0;     ///< slave parts/nodes of constrained rigid bodies (not implemented)
-  Id icid = 0;       ///< local coordinate system (not implemented)
+  Id icid = 0;       ///< local coordinate system of VX VY VZ (0: global; not with OMEGA)
   Vec3 xc = Vec3::Zero();  ///< a point on the rotation axis
   Vec3 n = Vec3::Zero();   ///< axis direction (normalised by the builder)
   int phase = 0;     ///< 1 = after dynamic relaxation (not implemented)

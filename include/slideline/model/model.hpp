@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "slideline/core/types.hpp"
+#include "slideline/model/coordinate_system.hpp"
 #include "slideline/model/initial_velocity.hpp"
 #include "slideline/model/materials.hpp"
 #include "slideline/model/source.hpp"
@@ -481,6 +482,7 @@ struct Model {
   std::optional<LoadBodyParts> body_load_parts;
   std::vector<Curve> curves;
   std::vector<Box> boxes;
+  std::vector<CoordinateSystem> coordinate_systems;
   std::optional<DampingGlobal> damping_global;
   std::vector<DampingPartMass> damping_parts;
   std::vector<DampingPartStiffness> damping_stiffness;
