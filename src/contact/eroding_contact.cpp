@@ -31,9 +31,11 @@ bool block_erodes(const ContactBuildContext& ctx, Index b) {
 }
 
 /// Appends to side.surface the interior faces of its parts' solids where one of the two elements
-/// that own a face can erode (each face once per owner, oriented out of it), rebuilds the
-/// adjacency and the side's nodes.
-void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const std::string& where) {
+/// that own a face can erode (each face once per owner, oriented out of it; `between_parts`: only
+/// faces whose two elements belong to different parts, IADJ = 1), rebuilds the adjacency and the
+/// side's nodes.
+void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const std::string& where,
+                        bool between_parts) {
   if (side.parts.empty()) return;  // a segment set: its segments only
   const Surface inner = interior_faces_of_parts(ctx.blocks, ctx.nodes, side.parts, where);
   using Key = std::pair<std::array<Index, 4>, Index>;
@@ -49,10 +51,15 @@ void add_interior_faces(ContactSide& side, const ContactBuildContext& ctx, const
   std::vector<char> keep(static_cast<std::size_t>(inner.segment_count()), 0);
   for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i;
-    bool erodes = false;
-    for (; j < keys.size() && keys[j].first == keys[i].first; ++j)
-      erodes = erodes || block_erodes(ctx, inner.block[static_cast<std::size_t>(keys[j].second)]);
-    for (std::size_t k = i; k < j; ++k) keep[static_cast<std::size_t>(keys[k].second)] = erodes ? 1 : 0;
+    bool erodes = false, two_parts = false;
+    const Id part = ctx.blocks[static_cast<std::size_t>(inner.block[static_cast<std::size_t>(keys[i].second)])]->part_id();
+    for (; j < keys.size() && keys[j].first == keys[i].first; ++j) {
+      const Index b = inner.block[static_cast<std::size_t>(keys[j].second)];
+      erodes = erodes || block_erodes(ctx, b);
+      two_parts = two_parts || ctx.blocks[static_cast<std::size_t>(b)]->part_id() != part;
+    }
+    const bool wanted = erodes && (!between_parts || two_parts);
+    for (std::size_t k = i; k < j; ++k) keep[static_cast<std::size_t>(keys[k].second)] = wanted ? 1 : 0;
     i = j;
   }
   Surface& s = side.surface;
@@ -137,12 +144,12 @@ void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx
                                   " can erode and holds slave nodes of a node set (SSTYP 4): not implemented; "
                                   "select the slave side by part (SSTYP 2 or 3)");
   if (spec.interior_faces) {
-    add_interior_faces(spec.slave, ctx, spec.where + ": SSID");
+    add_interior_faces(spec.slave, ctx, spec.where + ": SSID", spec.interior_faces_between_parts_only);
     if (spec.symmetry_faces_out) drop_symmetry_faces(spec.slave, ctx);
     if (spec.single_surface) {
       spec.master = spec.slave;
     } else {
-      add_interior_faces(spec.master, ctx, spec.where + ": MSID");
+      add_interior_faces(spec.master, ctx, spec.where + ": MSID", spec.interior_faces_between_parts_only);
       if (spec.symmetry_faces_out) drop_symmetry_faces(spec.master, ctx);
     }
   }

@@ -328,7 +328,7 @@ void check_hourglass_fields(const Context& ctx, const Line& card, std::string_vi
 /// physics and is not at its default is refused; a card beyond the manual's is refused.
 void check_control_fields(const Context& ctx, Block& block);
 /// keyword_contact_eroding.cpp: card 4 of *CONTACT_ERODING_... (ISYM EROSOP IADJ; the next card
-/// left in `block`, if any) into `c`: ISYM and IADJ other than 0 refused, EROSOP 0 or 1.
+/// left in `block`, if any) into `c`: ISYM, EROSOP and IADJ 0 or 1.
 void read_eroding_card4(const Context& ctx, Block& block, model::Contact& c);
 /// Reads the optional cards A-F of a *CONTACT_... keyword (what is left in the block): IGNORE of
 /// card C into `c`, the other fields checked.

@@ -22,10 +22,9 @@ void read_eroding_card4(const Context& ctx, Block& b, model::Contact& c) {
                      std::to_string(c.isym) + ")");
   if (c.erosop != 0 && c.erosop != 1)
     throw InputError(at + "EROSOP must be 0 or 1 (got " + std::to_string(c.erosop) + ")");
-  if (c.iadj != 0)
-    throw NotImplementedError(at + "IADJ = " + std::to_string(c.iadj) +
-                              " (faces on the boundary of each material subset) is not implemented; give 0 "
-                              "(faces on the free boundary only)");
+  if (c.iadj != 0 && c.iadj != 1)
+    throw InputError(at + "IADJ must be 0 (faces on the free boundary) or 1 (also the faces between parts, "
+                     "the boundary of each part's subset of the mesh; got " + std::to_string(c.iadj) + ")");
   for (int i = 3; i < 8; ++i) {
     Real v = 0.0;
     k.get(i, "(unused)", v);

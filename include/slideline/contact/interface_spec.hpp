@@ -120,6 +120,9 @@ struct InterfaceSpec {
   /// eroding part (the factories then attach a ContactErosion to the pass).
   bool eroding_card = false;
   bool interior_faces = true;
+  /// IADJ = 1 with EROSOP = 0: of the interior faces, only those between two parts (the boundary
+  /// of each part's subset of the mesh).
+  bool interior_faces_between_parts_only = false;
   /// ISYM = 1 of the eroding cards: the solid faces on a symmetry plane (every node held in the
   /// direction of the face's normal) are left out of both sides (prepare_eroding_contact).
   bool symmetry_faces_out = false;

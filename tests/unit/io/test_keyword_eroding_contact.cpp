@@ -94,8 +94,9 @@ TEST(ErodingContactCards, Card4FieldsOutsideWhatRunsAreRefusedByName) {
               std::string::npos)
         << w;
     EXPECT_EQ(read_keyword_string(deck(row.keyword, "1,1,0\n"), "c.k").contacts.at(0).isym, 1);
-    w = refusal<NotImplementedError>(deck(row.keyword, "0,1,1\n"));
-    EXPECT_NE(w.find(at + "IADJ = 1"), std::string::npos) << w;
+    EXPECT_EQ(read_keyword_string(deck(row.keyword, "0,0,1\n"), "c.k").contacts.at(0).iadj, 1);
+    w = refusal<InputError>(deck(row.keyword, "0,1,2\n"));
+    EXPECT_NE(w.find(at + "IADJ must be 0 (faces on the free boundary) or 1"), std::string::npos) << w;
     w = refusal<InputError>(deck(row.keyword, "0,2,0\n"));
     EXPECT_NE(w.find(at + "EROSOP must be 0 or 1 (got 2)"), std::string::npos) << w;
     w = refusal<InputError>(deck(row.keyword, "0,1,0,7\n"));
