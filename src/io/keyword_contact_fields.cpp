@@ -484,7 +484,7 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
                : automatic && c.option == 6      ? std::span<const Rule>(kAuto6)
                : automatic && c.option == 4      ? std::span<const Rule>(kAuto4)
-               : automatic && c.option <= 1      ? std::span<const Rule>(kAuto1)
+               : automatic && (c.option == 0 || c.option == 1) ? std::span<const Rule>(kAuto1)
                                                  : std::span<const Rule>(kType9));
   // Type 9's OPTION selects a failure law; DYNA3D's (0) is built. The automatic card's OPTIONs:
   // check_automatic_tiebreak_card4.
