@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/contact/search/fcl_broad_phase.hpp"
 #include "slideline/contact/segment_contact.hpp"
+#include "slideline/contact/sticking_tiebreak_contact.hpp"
 #include "slideline/contact/penalty_factory.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/mesh/surface_builder.hpp"
@@ -28,8 +30,9 @@ namespace {
 /// The union of two sides' surfaces: the slave side's segments, then the master side's that are
 /// not already there (same element, same kind, same nodes), with adjacency built. `sides` gets
 /// one mask per segment (bit 1 slave side, bit 2 master side); `from_a` the index in the union of
-/// each segment of `a`.
-Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t>& sides, std::vector<Index>& from_a) {
+/// each segment of `a`, and `from_b` (when given) of each segment of `b`.
+Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t>& sides, std::vector<Index>& from_a,
+                    std::vector<Index>* from_b = nullptr) {
   using Key = std::tuple<Index, Index, SegmentKind, std::array<Index, 4>>;
   const auto key = [](const Surface& s, Index k) {
     std::array<Index, 4> n{};
@@ -42,10 +45,12 @@ Surface merge_sides(const Surface& a, const Surface& b, std::vector<std::uint8_t
   std::map<Key, Index> seen;
   sides.clear();
   from_a.assign(static_cast<std::size_t>(a.segment_count()), -1);
+  if (from_b) from_b->assign(static_cast<std::size_t>(b.segment_count()), -1);
   const auto append = [&](const Surface& s, std::uint8_t bit) {
     for (Index k = 0; k < s.segment_count(); ++k) {
       const auto [it, fresh] = seen.emplace(key(s, k), out.segment_count());
       if (bit == 1) from_a[static_cast<std::size_t>(k)] = it->second;
+      if (bit == 2 && from_b) (*from_b)[static_cast<std::size_t>(k)] = it->second;
       if (!fresh) {
         sides[static_cast<std::size_t>(it->second)] |= bit;
         continue;
@@ -113,6 +118,7 @@ struct AutomaticPass {
   std::unique_ptr<PenaltyPass> pass;
   std::vector<std::uint8_t> sides;  ///< per segment of the pass's surface (bit 1 slave, bit 2 master side)
   std::vector<Index> from_slave;    ///< two-sided: per slave-side segment, its index in the pass's surface
+  std::vector<Index> from_master;   ///< two-sided: per master-side segment, its index in the pass's surface
 };
 
 AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext& ctx) {
@@ -123,7 +129,7 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
   Surface master;
   AutomaticPass out;
   if (two_sided) {
-    master = merge_sides(spec.slave.surface, spec.master.surface, out.sides, out.from_slave);
+    master = merge_sides(spec.slave.surface, spec.master.surface, out.sides, out.from_slave, &out.from_master);
     pass_side.surface = master;
     pass_side.nodes = master.nodes;
   } else {
@@ -174,12 +180,49 @@ std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& 
   return make_penalty_interface<AutomaticSurfaceContact>(spec, std::move(a.pass), std::move(a.sides));
 }
 
+namespace {
+
+/// OPTION 1 (blank, 0) and 3: ties formed at t = 0 and at each slave node's first touch
+/// (sticking_tiebreak_contact.hpp), over the card *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE's pass.
+std::unique_ptr<ContactAlgorithm> make_sticking_tiebreak_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  if (spec.node_set_slaves)
+    throw NotImplementedError(spec.where + ": a node-set slave side on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK "
+                                           "OPTION 1 or 3 is not implemented (the tie's stresses need the slave segments)");
+  InterfaceSpec contact_spec = spec;
+  contact_spec.type = model::ContactType::automatic;
+  contact_spec.keep_initial_penetrations = true;
+  AutomaticPass a = make_automatic_pass(contact_spec, ctx);
+  std::vector<std::uint8_t> held_nodes(ctx.nodes.size(), 0);
+  std::vector<std::uint8_t> held_segments(a.sides.size(), 0);
+  a.pass->set_held(held_nodes, held_segments);  // views; the vectors' buffers move with them
+  const PenaltyPass* pass = a.pass.get();        // owned by the interface from here on
+  std::vector<std::uint8_t> sides = a.sides;
+  auto contact = make_penalty_interface<AutomaticSurfaceContact>(contact_spec, std::move(a.pass), std::move(a.sides));
+  StickingTieParameters p;
+  p.fails = spec.cohesive.option == 3;
+  p.normal_failure = p.fails ? spec.failure.normal : 0.0;
+  p.shear_failure = p.fails ? spec.failure.shear : 0.0;
+  return std::make_unique<StickingTiebreakContact>(spec.title, std::move(contact), pass, std::move(sides),
+                                                   std::move(spec.slave.nodes), std::move(spec.master.nodes),
+                                                   std::move(spec.slave.surface), std::move(a.from_slave),
+                                                   std::move(spec.master.surface),
+                                                   std::move(a.from_master), std::move(held_nodes),
+                                                   std::move(held_segments), p);
+}
+
+}  // namespace
+
 std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   for (const Surface* side : {&spec.slave.surface, &spec.master.surface})
     for (Index s = 0; s < side->segment_count(); ++s)
       if (side->kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
         throw NotImplementedError(spec.where + ": shell segments on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK "
                                                "are not implemented (the tie has no thickness offsets); solid faces only");
+  const int option = spec.cohesive.option;
+  if (option == 0 || option == 1 || option == 3) return make_sticking_tiebreak_contact(spec, ctx);
+  if (option != 2 && option != 4 && option != 6 && option != 9)
+    throw NotImplementedError(spec.where + ": OPTION = " + std::to_string(option) +
+                              " of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK is not implemented");
   // The contact after failure: the card *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE's pass, each node's
   // penetration at t = 0 its spring's zero (IGNORE = 1; the tie keeps its stand-off alike).
   InterfaceSpec contact_spec = spec;

@@ -468,6 +468,15 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                     {"ERATES", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
                                     {"CT2CN", 0, Use::refuse, "stiffness ratio (OPTION 9, 11)"},
                                     {"CN", 0, Use::refuse, "normal stiffness (OPTION 4: _MORTAR only)"}};
+  // OPTION 1 (blank, 0): a permanent tie; the manual reads NFLS, SFLS on 2, 3, 4, 6-11 only.
+  static constexpr Rule kAuto1[] = {{"OPTION", 0, Use::honoured, ""},
+                                    {"NFLS", 0, Use::refuse, "OPTION 1 never fails (give OPTION 3 for failure)"},
+                                    {"SFLS", 0, Use::refuse, "OPTION 1 never fails (give OPTION 3 for failure)"},
+                                    {"PARAM", 0, Use::refuse, "failure law parameter (not read on OPTION 1)"},
+                                    {"ERATEN", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
+                                    {"ERATES", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
+                                    {"CT2CN", 0, Use::refuse, "stiffness ratio (OPTION 9, 11)"},
+                                    {"CN", 0, Use::refuse, "normal stiffness (OPTION 9, 11, 13, 14)"}};
   const bool automatic = c.form == model::ContactForm::automatic_surface_to_surface;
   // OPTION 9 of the automatic card honours the whole card (checked by check_automatic_tiebreak_card4).
   if (!automatic || c.option != 9)
@@ -475,6 +484,7 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
                : automatic && c.option == 6      ? std::span<const Rule>(kAuto6)
                : automatic && c.option == 4      ? std::span<const Rule>(kAuto4)
+               : automatic && (c.option == 0 || c.option == 1) ? std::span<const Rule>(kAuto1)
                                                  : std::span<const Rule>(kType9));
   // Type 9's OPTION selects a failure law; DYNA3D's (0) is built. The automatic card's OPTIONs:
   // check_automatic_tiebreak_card4.

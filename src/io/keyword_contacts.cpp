@@ -76,12 +76,6 @@ void read_tiebreak_card4(const Card& k, model::Contact& c) {
 /// "Automatic tiebreak": the table of options).
 std::string unbuilt_tiebreak_option(int option) {
   switch (option) {
-    case 0: return "blank or 0 means the manual's default, OPTION 1: nodes in contact, and those that come into "
-                   "contact later, stick permanently; ties formed during the run are not built; give OPTION 2 for the "
-                   "tie that fails by NFLS and SFLS";
-    case 1: return "OPTION 1 ties nodes in contact, and those that come into contact later, permanently (no failure); "
-                   "ties formed during the run are not built; give OPTION 2 for the tie that fails by NFLS and SFLS";
-    case 3: return "OPTION 3 also ties nodes that come into contact later and fails them after sticking";
     case 5: return "OPTION 5 is a damage curve of the crack opening (SFLS a curve, NFLS a yield stress)";
     case 7: return "OPTION 7 (Dycoss discrete crack model, PARAM a friction angle) is defined in Lemmen and Meijer "
                    "(2001), not by the manual's text";
@@ -94,9 +88,10 @@ std::string unbuilt_tiebreak_option(int option) {
   }
 }
 
-/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4. Built: OPTION 2 (the stress criterion,
-/// then the automatic contact: the manual's law for it; OPTION 1, a permanent tie that also ties
-/// nodes arriving later, is refused), OPTION 6 (the criterion, then damage linear in the distance,
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4. Built: OPTION 1 (blank and 0 its
+/// default: nodes in contact and those coming into contact stick for good; NFLS, SFLS refused by
+/// check_contact_fields), OPTION 3 (as 1, failing by the stress criterion), OPTION 2 (the stress
+/// criterion, then the automatic contact), OPTION 4 (a normal tie with friction), OPTION 6 (the criterion, then damage linear in the distance,
 /// complete at PARAM = CCRIT) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
 /// ERATEN, ERATES, CT2CN, CN). Every other OPTION is refused saying why; NFLS, SFLS < 0 (curves)
 /// are refused. On OPTION 2, PARAM..CN off their blank default are refused by
@@ -104,13 +99,14 @@ std::string unbuilt_tiebreak_option(int option) {
 void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c, const Line* card4, int line) {
   const std::string at = ctx.where(card4 ? card4->number : line) + c.keyword + " card 4";
   if (!card4) throw InputError(at + " (OPTION NFLS SFLS PARAM ...) is missing");
-  if (c.option != 2 && c.option != 4 && c.option != 6 && c.option != 9)
+  if (c.option < 0 || c.option == 5 || c.option == 7 || c.option == 8 || c.option > 9)
     throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) + " is not implemented (" +
                               unbuilt_tiebreak_option(c.option) +
-                              "); built: 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
-                              "automatic surface-to-surface contact), 4 (a normal tie failing by NFLS, sliding "
-                              "with friction), 6 (that criterion, then linear softening to zero at PARAM) and 9 "
-                              "(mixed-mode bilinear traction-separation)");
+                              "); built: blank, 0 and 1 (nodes in contact and those coming into contact stick "
+                              "permanently), 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
+                              "automatic surface-to-surface contact), 3 (as 1, failing by that criterion), 4 (a "
+                              "normal tie failing by NFLS, sliding with friction), 6 (that criterion, then linear "
+                              "softening to zero at PARAM) and 9 (mixed-mode bilinear traction-separation)");
   const auto value = [](Real v) {
     char s[32];
     std::snprintf(s, sizeof s, "%g", v);

@@ -170,5 +170,26 @@ TEST(InterfaceSpec, AutomaticTiebreakRefusesShellSegments) {
   }
 }
 
+
+// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK built through the model API with an OPTION no
+// class runs (the reader refuses it first): refused by the factory too, not run as another OPTION.
+TEST(InterfaceSpec, AutomaticTiebreakRefusesAnUnbuiltOption) {
+  InterfaceSpec spec;
+  spec.where = "api: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK";
+  spec.type = model::ContactType::tiebreak_surface;
+  spec.form = model::ContactForm::automatic_surface_to_surface;
+  spec.cohesive.option = 5;
+  const model::Model m;
+  const std::vector<std::unique_ptr<ElementBlock>> blocks;
+  const NodalFields nodes;
+  const MeshSets sets;
+  try {
+    make_automatic_tiebreak_contact(spec, ContactBuildContext{m, blocks, nodes, sets});
+    ADD_FAILURE() << "built";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("OPTION = 5"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace slideline

@@ -138,9 +138,10 @@ TEST(ContactKeywords, TheReadersTableKeepsTheOptionGrammar) {
 }
 
 // *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: OPTION 2 with NFLS, SFLS is read (stresses,
-// kept as the tiebreak failure fields) and written back; OPTION 1 (and blank, its default: a
-// permanent tie that also ties nodes arriving later), the other unbuilt OPTIONs, a field of card 4
-// that is not honoured and a curve (NFLS, SFLS < 0) are refused naming the file, line, field and value.
+// kept as the tiebreak failure fields) and written back; OPTION 1 (and blank or 0, its default: a
+// permanent tie that also ties nodes arriving later) and 3 (as 1, with failure) are read; the unbuilt
+// OPTIONs, a field of card 4 that is not honoured (NFLS, SFLS on OPTION 1) and a curve (NFLS, SFLS <
+// 0) are refused naming the file, line, field and value.
 TEST(ContactKeywords, AutomaticTiebreakCard4) {
   const auto deck = [](const std::string& card4) {
     return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n1\n" + card4 + "*END\n";
@@ -172,14 +173,23 @@ TEST(ContactKeywords, AutomaticTiebreakCard4) {
     }
   };
   const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
-  refused("3,2.5,3.5\n", at + "OPTION = 3 is not implemented");
   refused("8,2.5,3.5,0.1\n", at + "OPTION = 8 is not implemented (OPTION 8 is the offset-shell variant of OPTION 6");
   refused("7,2.5,3.5\n", at + "OPTION = 7 is not implemented (OPTION 7 (Dycoss");
   refused("11,2.5,3.5\n", at + "OPTION = 11 is not implemented (OPTION 11 is the offset-shell variant of OPTION 9");
   refused("-9,2.5,3.5\n", at + "OPTION = -9 is not implemented");
-  refused(",2.5,3.5\n", at + "OPTION = 0 is not implemented (blank or 0 means the manual's default, OPTION 1");
-  refused("1,2.5,3.5\n", at + "OPTION = 1 is not implemented (OPTION 1 ties nodes in contact, and those that come "
-                              "into contact later, permanently");
+  // OPTION 1 (blank and 0 its default) never fails: NFLS, SFLS refused there, read on OPTION 3.
+  refused(",2.5\n", at + "NFLS = 2.5 (OPTION 1 never fails (give OPTION 3 for failure))");
+  refused("1,0,3.5\n", at + "SFLS = 3.5 (OPTION 1 never fails (give OPTION 3 for failure))");
+  refused("1,0,0,1\n", at + "PARAM = 1");
+  refused("3,2.5,3.5,1\n", at + "PARAM = 1");
+  refused("5,2.5,3.5\n", at + "OPTION = 5 is not implemented (OPTION 5 is a damage curve");
+  for (const auto& [card4, option] : {std::pair<std::string, int>{"\n", 0}, {"0\n", 0}, {"1\n", 1}, {"3,2.5,3.5\n", 3}}) {
+    const auto read = read_keyword_string(deck(card4), "c.k");
+    ASSERT_EQ(read.contacts.size(), 1u);
+    EXPECT_EQ(read.contacts[0].option, option) << card4;
+    if (option == 3) EXPECT_EQ(read.contacts[0].nflf, 2.5);
+    if (option == 3) EXPECT_EQ(read.contacts[0].sflf, 3.5);
+  }
   refused("2,-4,3.5\n", at + "NFLS = -4");
   refused("2,2.5,-7\n", at + "SFLS = -7");
   refused("2,2.5,3.5,0.1\n", at + "PARAM = 0.1");
