@@ -127,7 +127,7 @@ TEST(ShellThicknessUpdate, PlasticThicknessKeepsThePlasticVolume) {
     for (const Mat3& f : {Mat3(Mat3::Identity()), kTilt})
       for (int mode : {1, 4}) {
         Element<PlasticShellBlock> el(make_block<PlasticShellBlock>(triangle), f, triangle, mode);
-        const auto [l1, l2] = el.stretch(0.1, 0.1, 500, 1e-4);
+        const auto [l1, l2] = el.stretch(1.0, 1.0, 500, 1e-4);
         const auto s = el.block.stress(0, 2);
         std::vector<CellOutput> out(1);
         el.block.cell_outputs(el.nodes, out);
