@@ -99,6 +99,9 @@ model::Model full_model() {
   // read and written back, other values are refused, RWPNAL warns, ENMASS 1/2 is refused:
   // docs/contact.md, "Contact card fields").
   m.control_contact = {0.2, 0.0, 1, 1, 2, 1, 1, 0};
+  m.shell_esort = 1;  // *CONTROL_SHELL: ESORT, ISTUPD, INTGRD are stored and written back
+  m.shell_istupd = 4;
+  m.shell_intgrd = 1;
   m.database = {0.001, 0.002, 0.003, 0.004, 0.05, {100, 105, 109}};
 
   // One contact per DYNA3D type, every enforcement and option.
