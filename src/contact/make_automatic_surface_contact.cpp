@@ -111,7 +111,9 @@ std::vector<Real> segment_offsets(const Surface& surface, const std::vector<std:
 /// THKCHG = 1 (InterfaceSpec::follow_thickness): node_sides' and segment_offsets' rules as
 /// offsets that follow the shells' current thickness (FollowedOffsets, shell_offset.hpp).
 FollowedOffsets followed_node_sides(const std::vector<Index>& nodes, const InterfaceSpec& spec) {
-  const auto on = [](const std::vector<Index>& side, Index n) { return std::binary_search(side.begin(), side.end(), n); };
+  const auto on = [](const std::vector<Index>& side, Index n) {
+    return std::binary_search(side.begin(), side.end(), n);
+  };
   FollowedOffsets f;
   for (const Index n : nodes) {
     Real floor = 0.0;

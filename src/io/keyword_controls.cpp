@@ -51,8 +51,9 @@ void read_control_fields(const Context& ctx, Block& b, Model& m) {
     k.get(3, "ISTUPD", m.shell_istupd);
     if (m.shell_istupd != 0 && m.shell_istupd != 1 && m.shell_istupd != 4)
       throw NotImplementedError(ctx.where(l.number) + "*CONTROL_SHELL card 1: field ISTUPD = " +
-                                std::to_string(m.shell_istupd) + " (shell thickness change) is not implemented; give 0, "
-                                "1 (membrane straining changes the thickness) or 4 (its plastic part alone)");
+                                std::to_string(m.shell_istupd) +
+                                " (shell thickness change) is not implemented; give 0, 1 (membrane straining "
+                                "changes the thickness) or 4 (its plastic part alone)");
     m.shell_istupd_src = ctx.source(l.number);
     // Card 2, field 2: INTGRD, the through-thickness rule (0 Gauss, 1 Lobatto).
     if (b.next + 1 < b.cards.size()) {

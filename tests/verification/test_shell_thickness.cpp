@@ -90,7 +90,8 @@ StripEnd run_strip(const std::string& deck) {
 // t the current thickness (W the mean width; it differs from sigma W t0 by nu ln L = 0.6 %).
 TEST(ShellThickness, ElasticStripThinsAsExpMinusNuEps) {
   const Real nu = 0.3, v = 0.1, t_ramp = 0.05;
-  const std::string deck = strip(elastic(1e-3, 1e4, nu), "*CONTROL_SHELL\n0,0,0,1\n", v, t_ramp, 0.02 / v + 0.5 * t_ramp);
+  const std::string deck =
+      strip(elastic(1e-3, 1e4, nu), "*CONTROL_SHELL\n0,0,0,1\n", v, t_ramp, 0.02 / v + 0.5 * t_ramp);
   const StripEnd r = run_strip(deck);
   const Real ln_l = std::log(r.length);
   const Real pointwise = 0.1 * std::pow(r.area, -nu / (1.0 - nu)), uniaxial = 0.1 * std::exp(-nu * ln_l);

@@ -89,7 +89,8 @@ struct FollowedOffsets {
   /// Adds the terms of `node` (an internal index) on `own` under `rule`, if it is on `own`.
   void add_node_of(const Surface& own, Index node, const ShellOffsetRule& rule, Real& target_floor) {
     const auto it = std::lower_bound(own.nodes.begin(), own.nodes.end(), node);
-    if (it != own.nodes.end() && *it == node) add_node(own, static_cast<Index>(it - own.nodes.begin()), rule, target_floor);
+    if (it != own.nodes.end() && *it == node)
+      add_node(own, static_cast<Index>(it - own.nodes.begin()), rule, target_floor);
   }
   /// Closes the target being built with its floor.
   void close(Real target_floor) {

@@ -286,8 +286,10 @@ class BasicShellBlock final : public ElementBlock {
     shell_bt::Resultants r;
     const Real t = thickness(e);
     shell_thickness::PointStrains ps = point_strains(e);
-    [[maybe_unused]] const Real damp = shell_thickness::integrate<damped>(mat_, rule_, t, damping_.beta,
-        state_.data() + static_cast<std::size_t>(e) * rule_.n, sr, dt, r, sec_.shear_factor, tracks_strain() ? &ps : nullptr);
+    State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
+    shell_thickness::PointStrains* psp = tracks_strain() ? &ps : nullptr;
+    [[maybe_unused]] const Real damp =
+        shell_thickness::integrate<damped>(mat_, rule_, t, damping_.beta, st, sr, dt, r, sec_.shear_factor, psp);
     if (!thick_.empty()) thick_[e] = t * std::exp(ps.mean);  // ISTUPD: the next step's thickness
     // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
     const Real len = shell_bt::characteristic_length(X, g.area);
@@ -325,8 +327,9 @@ class BasicShellBlock final : public ElementBlock {
   }
 
   /// Bulk viscosity on the membrane dilatation rate of `sr` (a pressure over the thickness) of an
-  /// element of characteristic length `len`, area `area` and thickness `t`: subtracted from the resultants `r`,
-  /// its power added to `p_visc`; returns its term of the step's (len / (q + sqrt(q^2 + c^2))) q.
+  /// element of characteristic length `len`, area `area` and thickness `t`: subtracted from the
+  /// resultants `r`, its power added to `p_visc`; returns its term of the step's
+  /// (len / (q + sqrt(q^2 + c^2))) q.
   Real bulk_viscosity(const shell_bt::StrainRates& sr, Real len, Real area, Real t, shell_bt::Resultants& r,
                       Real& p_visc) const {
     const Real trd = sr.membrane[0] + sr.membrane[1];

@@ -342,7 +342,8 @@ inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) con
 
 inline void ContactPairs::locate(const Vec3Field& x) {
   if (following_) {  // THKCHG = 1: this cycle's offsets (the elements updated their thickness before)
-    for (std::size_t i = 0; i < slaves_.size(); ++i) slave_offset_[i] = follow_slave_.value(static_cast<Index>(i), thickness_);
+    for (std::size_t i = 0; i < slaves_.size(); ++i)
+      slave_offset_[i] = follow_slave_.value(static_cast<Index>(i), thickness_);
     for (Index s = 0; s < master_.segment_count(); ++s)
       master_offset_[static_cast<std::size_t>(s)] = follow_segment_.value(s, thickness_);
   }
