@@ -190,6 +190,11 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   // (the reader refuses MST there).
   spec.master_shells = spec.single_surface ? spec.slave_shells : ShellOffsetRule{shells, card.mst, card.sfmt};
   spec.nodal_radius = card.radius > 0.0 ? card.radius : 0.5 * card.sst * card.sfst;
+  spec.follow_thickness = ctx.model.control_contact.thkchg == 1 && card.type == T::automatic;
+  if (spec.follow_thickness && ctx.model.shell_istupd != 0 && card.enforcement != model::Enforcement::penalty)
+    throw NotImplementedError(spec.where +
+                              ": THKCHG = 1 of *CONTROL_CONTACT (the shell offsets follow the thickness of "
+                              "*CONTROL_SHELL ISTUPD) with the Lagrange enforcement is not implemented");
   spec.slave_stiffness = ctx.model.control_contact.slsfac * card.sfs;
   spec.master_stiffness = ctx.model.control_contact.slsfac * card.sfm;
   spec.sliding_only = card.sliding_only_option;

@@ -113,6 +113,36 @@ std::vector<Real> segment_offsets(const Surface& surface, const std::vector<std:
   return out;
 }
 
+/// THKCHG = 1 (InterfaceSpec::follow_thickness): node_sides' and segment_offsets' rules as
+/// offsets that follow the shells' current thickness (FollowedOffsets, shell_offset.hpp).
+FollowedOffsets followed_node_sides(const std::vector<Index>& nodes, const InterfaceSpec& spec) {
+  const auto on = [](const std::vector<Index>& side, Index n) {
+    return std::binary_search(side.begin(), side.end(), n);
+  };
+  FollowedOffsets f;
+  for (const Index n : nodes) {
+    Real floor = 0.0;
+    if (on(spec.slave.nodes, n)) {
+      floor = spec.node_set_slaves ? spec.nodal_radius : 0.0;
+      f.add_node_of(spec.slave.surface, n, spec.slave_shells, floor);
+    }
+    if (on(spec.master.nodes, n)) f.add_node_of(spec.master.surface, n, spec.master_shells, floor);
+    f.close(floor);
+  }
+  return f;
+}
+FollowedOffsets followed_segment_offsets(const Surface& surface, const std::vector<std::uint8_t>& sides,
+                                         const InterfaceSpec& spec) {
+  FollowedOffsets f;
+  for (Index s = 0; s < surface.segment_count(); ++s) {
+    Real floor = 0.0;
+    if (sides[static_cast<std::size_t>(s)] & 1) f.add_segment(surface, s, spec.slave_shells, floor);
+    if (sides[static_cast<std::size_t>(s)] & 2) f.add_segment(surface, s, spec.master_shells, floor);
+    f.close(floor);
+  }
+  return f;
+}
+
 /// The automatic pass of an automatic card and what its interface needs besides.
 struct AutomaticPass {
   std::unique_ptr<PenaltyPass> pass;
@@ -152,6 +182,9 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
   out.pass->slave_part() = node_parts(pass_side);
   out.pass->set_slave_orientation(SlaveOrientation(own, pass_side.nodes));
   out.pass->set_sides(std::move(nodes.mask), out.sides, std::move(offsets));
+  if (spec.follow_thickness)
+    out.pass->set_followed_offsets(followed_node_sides(pass_side.nodes, spec),
+                                   followed_segment_offsets(master, out.sides, spec));
   // Eroding parts (docs/contact_erosion.md): two-sided, the slaves lie on the pass's surface; one
   // way, on their own side's.
   if (spec.eroding)

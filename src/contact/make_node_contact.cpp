@@ -30,6 +30,16 @@ std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
                                 penalty_pass_options(spec, spec.slave_stiffness, spec.master_shells));
   pass->slave_part() = node_parts(side);
   pass->set_slave_orientation(SlaveOrientation(side.surface, side.nodes));
+  if (spec.follow_thickness) {  // THKCHG = 1: the offsets follow the shells' current thickness
+    FollowedOffsets segments;
+    for (Index s = 0; s < side.surface.segment_count(); ++s) {
+      Real floor = 0.0;
+      segments.add_segment(side.surface, s, spec.master_shells, floor);
+      segments.close(floor);
+    }
+    pass->set_followed_offsets(followed_node_offsets(side.nodes, side.surface, spec.slave_shells, 0.0),
+                               std::move(segments));
+  }
   // Eroding parts (docs/contact_erosion.md): the surface is its own slaves' surface.
   if (spec.eroding) pass->set_erosion(ContactErosion(side.surface, nullptr, side.nodes));
   std::vector<Id> parts = side.parts;

@@ -553,7 +553,10 @@ void read_control_contact_cards(const Context& ctx, Block& b, model::ControlCont
   // PENOPT 1 and 2 (the DYNA3D types take the master segment's stiffness here, docs/contact.md).
   if (t.penopt != 2)
     field(ctx, &card1, kw, "card 1", t.penopt, {"PENOPT", 1, Use::refuse, "penalty stiffness option"});
-  field(ctx, &card1, kw, "card 1", t.thkchg, {"THKCHG", 0, Use::refuse, "shell thickness changes in contact"});
+  // THKCHG 1: the automatic cards' shell offsets follow the current thickness (ISTUPD; docs/contact.md,
+  // "Shell thickness change"); other values are refused.
+  if (t.thkchg != 1)
+    field(ctx, &card1, kw, "card 1", t.thkchg, {"THKCHG", 0, Use::refuse, "shell thickness changes in contact"});
   field(ctx, &card1, kw, "card 1", t.orien, {"ORIEN", 1, Use::refuse, "segment orientation option"});
   field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::refuse, "nodes freed by erosion kept in contact with their mass; here they leave it (0)"});
   t.ignore = read_ignore(ctx, b, 2, 0, "card 4");

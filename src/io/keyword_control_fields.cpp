@@ -18,7 +18,7 @@ constexpr Rule kShell1[] = {
     {"WRPANG", 20, Use::output, "shell warpage angle above which a warning is printed"},
     {"ESORT", 0, Use::honoured, ""},  // stored (Model::shell_esort); 2 refused where triangles run
     {"IRNXX", -1, Use::inert, "shell normal update of Hughes-Liu shells; the shells here are Belytschko-Tsay"},
-    {"ISTUPD", 0, Use::refuse, "shell thickness change with membrane strain"},
+    {"ISTUPD", 0, Use::honoured, ""},  // stored (Model::shell_istupd): 1, 4; 2, 3 refused
     {"THEORY", 2, Use::refuse, "default shell formulation; 2 = Belytschko-Tsay is the one here"},
     {"BWC", 2, Use::refuse, "warping stiffness of Belytschko-Tsay shells: 1 = Belytschko-Wong-Chiang"},
     {"MITER", 1, Use::refuse, "plane-stress plasticity iteration"},

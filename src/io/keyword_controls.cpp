@@ -46,6 +46,15 @@ void read_control_fields(const Context& ctx, Block& b, Model& m) {
       throw InputError(ctx.where(l.number) + "*CONTROL_SHELL card 1: field ESORT = " + std::to_string(m.shell_esort) +
                        " must be 0, 1 or 2");
     m.shell_esort_src = ctx.source(l.number);
+    // ISTUPD (field 4): 1 and 4 are stored (the shell blocks follow their thickness); 2 and 3 ask
+    // it of thick shells (8-node *SECTION_TSHELL), which are not implemented.
+    k.get(3, "ISTUPD", m.shell_istupd);
+    if (m.shell_istupd != 0 && m.shell_istupd != 1 && m.shell_istupd != 4)
+      throw NotImplementedError(ctx.where(l.number) + "*CONTROL_SHELL card 1: field ISTUPD = " +
+                                std::to_string(m.shell_istupd) +
+                                " (shell thickness change) is not implemented; give 0, 1 (membrane straining "
+                                "changes the thickness) or 4 (its plastic part alone)");
+    m.shell_istupd_src = ctx.source(l.number);
     // Card 2, field 2: INTGRD, the through-thickness rule (0 Gauss, 1 Lobatto).
     if (b.next + 1 < b.cards.size()) {
       const Line& l2 = b.cards[b.next + 1];

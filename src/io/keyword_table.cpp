@@ -101,7 +101,9 @@ constexpr Row kRows[] = {
      plain<read_control_bulk_viscosity>},
     {"*CONTROL_CONTACT", "", "contact defaults (SLSFAC penalty scale, shell thickness, orientation)",
      plain<read_control_contact>},
-    {"*CONTROL_SHELL", "", "shell controls: every field at its default or refused (ISTUPD, THEORY, BWC, ...)",
+    {"*CONTROL_SHELL", "",
+     "shell controls: ESORT, ISTUPD (1, 4) and INTGRD stored; the other fields at their default or refused (THEORY, "
+     "BWC, ...)",
      plain<read_control_fields>},
     {"*CONTROL_ACCURACY", "", "accuracy controls: OSU, INN, ... at their defaults or refused", plain<read_control_fields>},
     {"*CONTROL_SOLID", "", "solid controls: every field at its default or refused", plain<read_control_fields>},

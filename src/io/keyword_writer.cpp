@@ -282,6 +282,15 @@ void write_controls(const model::Model& m, std::string& o) {
   o += CardOut().i(m.control_hourglass.ihq).r(m.control_hourglass.qh).str();
   o += "*CONTROL_BULK_VISCOSITY\n$#      Q1        Q2\n";
   o += CardOut().r(m.bulk_viscosity.q1).r(m.bulk_viscosity.q2).str();
+  // *CONTROL_SHELL: the fields stored (ESORT, ISTUPD; INTGRD on card 2), when one is not 0.
+  if (m.shell_esort != 0 || m.shell_istupd != 0 || m.shell_intgrd != 0) {
+    o += "*CONTROL_SHELL\n$#  WRPANG     ESORT     IRNXX    ISTUPD\n";
+    o += CardOut().i(0).i(m.shell_esort).i(0).i(m.shell_istupd).str();
+    if (m.shell_intgrd != 0) {
+      o += "$# ROTASCL    INTGRD\n";
+      o += CardOut().i(0).i(m.shell_intgrd).str();
+    }
+  }
   const auto& cc = m.control_contact;
   o += "*CONTROL_CONTACT\n$#  SLSFAC    RWPNAL    ISLCHK    SHLTHK    PENOPT    THKCHG     ORIEN    ENMASS\n";
   o += CardOut().r(cc.slsfac).r(cc.rwpnal).i(cc.islchk).i(cc.shlthk).i(cc.penopt).i(cc.thkchg).i(cc.orien)

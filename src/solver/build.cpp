@@ -245,6 +245,15 @@ struct Builder {
     ss.bulk = bv;
     setup.blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),
                                            std::move(g.quad_ids), damping));
+    // *CONTROL_SHELL ISTUPD = 1, 4: the thickness follows the membrane strain (the block refuses
+    // what it cannot: a law without stress, 4 on an elastic law).
+    if (m.shell_istupd != 0) {
+      try {
+        setup.blocks.back()->enable_thickness_update(m.shell_istupd);
+      } catch (const NotImplementedError& e) {
+        throw NotImplementedError(describe(m.shell_istupd_src) + ": field ISTUPD of *CONTROL_SHELL: " + e.what());
+      }
+    }
   }
 
   template <class Sections>

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 #include "build_support.hpp"
@@ -269,6 +270,18 @@ void check_parts(const model::Model& m, Problems& p) {
       if (shell_sec) check_shell_section(*shell_sec, use.quads, p);
     } else if (use.shells) {
       check_shell_part(*part, shell_sec, use.quads, laws, ihq, p);
+      // *CONTROL_SHELL ISTUPD: the blocks refuse what they cannot (enable_thickness_update); the
+      // same refusals here, so that `blockcontact check` lists them with the others.
+      if (m.shell_istupd != 0 && laws.shell) {
+        const std::string at = describe(m.shell_istupd_src) + ": field ISTUPD of *CONTROL_SHELL: part " +
+                               std::to_string(pid) + ": ";
+        if (std::holds_alternative<NullShell>(*laws.shell))
+          p.todo(at + "its material carries no stress, so the normal strain of plane stress is not defined: "
+                      "*CONTROL_SHELL ISTUPD is not implemented on it");
+        else if (m.shell_istupd == 4 && std::holds_alternative<ElasticShell>(*laws.shell))
+          p.todo(at + "*CONTROL_SHELL ISTUPD = 4 (elastic strains left out) acts on elastic-plastic materials; "
+                      "this part's is elastic");
+      }
       if (use.triangle && m.shell_esort == 2)
         p.todo(describe(m.shell_esort_src) + ": field ESORT of *CONTROL_SHELL: 2 (DKT triangular shells) is not "
                                              "implemented, and part " + std::to_string(pid) + " has triangles (*ELEMENT_SHELL " +

@@ -80,6 +80,10 @@ struct InterfaceSpec {
   /// Shell offsets: on for Type 12 or *CONTROL_CONTACT SHLTHK > 0; thickness SST / MST, scale
   /// SFST / SFMT; a single surface takes SST / SFST for both.
   ShellOffsetRule slave_shells, master_shells;
+  /// *CONTROL_CONTACT THKCHG = 1 on an automatic card (type family 12, penalty): the shell offsets
+  /// follow the shells' current thickness every cycle (FollowedOffsets, shell_offset.hpp); the
+  /// other cards keep the thickness of the first cycle, as LS-DYNA's.
+  bool follow_thickness = false;
   /// Offset of node-set slaves (Type 5; length): RADIUS, else half SST x SFST (0 for SST = 0).
   Real nodal_radius = 0.0;
 

@@ -204,6 +204,17 @@ class ElementBlock : public MeshBlock {
   virtual const ElementErosion* erosion() const { return nullptr; }
   ElementErosion* erosion() { return const_cast<ElementErosion*>(std::as_const(*this).erosion()); }
 
+  /// Shells: the thickness follows the membrane strain (*CONTROL_SHELL ISTUPD; `mode` 1: the whole
+  /// normal strain of plane stress, 4: its plastic part alone). Called once, before initialize().
+  /// A block without a thickness refuses (NotImplementedError).
+  virtual void enable_thickness_update(int mode) {
+    throw NotImplementedError("part " + std::to_string(part_id()) + ": a thickness change (*CONTROL_SHELL ISTUPD = " +
+                              std::to_string(mode) + ") of " + kind() + " elements is not implemented");
+  }
+  /// Per element, the current thickness (length) of a block whose thickness changes
+  /// (enable_thickness_update); empty: it does not change (BlockTopology's section thickness).
+  virtual std::span<const Real> current_thickness() const { return {}; }
+
   /// Deck id of the block's material (*PART MID), for the output; 0 when not set.
   Id material_id() const { return material_id_; }
   void set_material_id(Id mid) { material_id_ = mid; }

@@ -7,6 +7,7 @@
 /// stored per element and through-thickness point, turns with the element (Belytschko, Lin & Tsay
 /// 1984). See docs/shells_and_rigid.md for the options.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -21,6 +22,7 @@
 #include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/shell_bt.hpp"
 #include "slideline/element/shell_c0tri.hpp"
+#include "slideline/element/shell_hourglass.hpp"
 #include "slideline/element/shell_thickness.hpp"
 #include "slideline/material/elastic_shell.hpp"
 #include "slideline/material/shell_material.hpp"
@@ -99,6 +101,32 @@ class BasicShellBlock final : public ElementBlock {
   void enable_erosion(const ErosionCriteria& criteria) override {
     shell_erosion::check<State>(criteria, part_id_, nq_, element_count(), rule_.n);
     erosion_.enable(criteria, element_count(), element_count());
+    if (criteria.needs_strain()) strain_.assign(static_cast<std::size_t>(element_count()) * rule_.n, {});
+  }
+  /// ElementBlock::enable_thickness_update (*CONTROL_SHELL ISTUPD; docs/solver.md, "Shell thickness
+  /// change"): each element's thickness t follows the thickness average of its points' normal
+  /// strain increments (shell_thickness::PointStrains), t <- t exp(mean), and makes the next step's
+  /// resultants, hourglass and bulk viscosity (the mass stays). Mode 4 needs a plastic law.
+  void enable_thickness_update(int mode) override {
+    const std::string part = "part " + std::to_string(part_id_);
+    if constexpr (!requires(const State& s) { s.sigma; })
+      throw NotImplementedError(part + ": its material carries no stress, so the normal strain of plane stress is not "
+                                       "defined: *CONTROL_SHELL ISTUPD is not implemented on it");
+    if (mode != 1 && mode != 4)
+      throw NotImplementedError(part + ": *CONTROL_SHELL ISTUPD = " + std::to_string(mode) + " is not implemented");
+    if (mode == 4 && !PlasticState<State>)
+      throw NotImplementedError(part + ": *CONTROL_SHELL ISTUPD = 4 (elastic strains left out) acts on elastic-plastic "
+                                       "materials; this part's is elastic");
+    thick_.assign(static_cast<std::size_t>(element_count()), sec_.thickness);
+    thickness_mode_ = mode;
+  }
+  std::span<const Real> current_thickness() const override { return thick_; }
+  /// Element e's thickness (length): the section's, or its current one under ISTUPD.
+  Real thickness(Index e) const { return thick_.empty() ? sec_.thickness : thick_[static_cast<std::size_t>(e)]; }
+  /// Element e's strain at point ip (xx, yy, zz, xy, yz, xz, element frame), accumulated where a
+  /// strain criterion of *MAT_ADD_EROSION is set (zero otherwise).
+  std::array<Real, 6> point_strain(Index e, int ip) const {
+    return strain_.empty() ? std::array<Real, 6>{} : strain_[static_cast<std::size_t>(e) * rule_.n + ip];
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
   const shell_bt::ThicknessRule& thickness_rule() const { return rule_; }
@@ -256,11 +284,16 @@ class BasicShellBlock final : public ElementBlock {
     }
     const shell_bt::StrainRates sr = shell_bt::strain_rates(gm, V * gm.e, W * gm.e);
     shell_bt::Resultants r;
-    [[maybe_unused]] const Real damp = shell_thickness::integrate<damped>(mat_, rule_, sec_.thickness, damping_.beta,
-        state_.data() + static_cast<std::size_t>(e) * rule_.n, sr, dt, r, sec_.shear_factor);
+    const Real t = thickness(e);
+    shell_thickness::PointStrains ps = point_strains(e);
+    State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
+    shell_thickness::PointStrains* psp = tracks_strain() ? &ps : nullptr;
+    [[maybe_unused]] const Real damp =
+        shell_thickness::integrate<damped>(mat_, rule_, t, damping_.beta, st, sr, dt, r, sec_.shear_factor, psp);
+    if (!thick_.empty()) thick_[e] = t * std::exp(ps.mean);  // ISTUPD: the next step's thickness
     // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
     const Real len = shell_bt::characteristic_length(X, g.area);
-    Real qdt = bulk_viscosity(sr, len, g.area, r, out.p_visc);
+    Real qdt = bulk_viscosity(sr, len, g.area, t, r, out.p_visc);
     if constexpr (damped) {
       out.p_damp = damp * g.area;
       qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
@@ -269,7 +302,12 @@ class BasicShellBlock final : public ElementBlock {
     shell_bt::resultant_forces(g, r, fl, ml);
     shell_bt::NodeMat f = fl * g.e.transpose();
     shell_bt::NodeMat m = ml * g.e.transpose();
-    if (qhg_ > 0.0) out.p_hg = add_hourglass(e, gm, Xm, V, W, f, m);
+    if (qhg_ > 0.0) {
+      const Real m_node = mat_.density() * area0_[e] * sec_.thickness / 4.0;  // the mass stays
+      const Real j_node = m_node * std::max(sec_.thickness * sec_.thickness, area0_[e]) / 12.0;
+      out.p_hg = shell_hourglass::add(qhg_, mat_.youngs_modulus(), sec_.shear_factor * mat_.stiffness().g, t, m_node,
+                                      j_node, gm, Xm, V, W, f, m);
+    }
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
     out.dt = len / (qdt + std::sqrt(qdt * qdt + c * c));
@@ -289,14 +327,14 @@ class BasicShellBlock final : public ElementBlock {
   }
 
   /// Bulk viscosity on the membrane dilatation rate of `sr` (a pressure over the thickness) of an
-  /// element of characteristic length `len` and area `area`: subtracted from the resultants `r`,
-  /// its power added to `p_visc`; returns its term of the step's (len / (q + sqrt(q^2 + c^2))) q.
-  Real bulk_viscosity(const shell_bt::StrainRates& sr, Real len, Real area, shell_bt::Resultants& r,
+  /// element of characteristic length `len`, area `area` and thickness `t`: subtracted from the
+  /// resultants `r`, its power added to `p_visc`; returns its term of the step's
+  /// (len / (q + sqrt(q^2 + c^2))) q.
+  Real bulk_viscosity(const shell_bt::StrainRates& sr, Real len, Real area, Real t, shell_bt::Resultants& r,
                       Real& p_visc) const {
     const Real trd = sr.membrane[0] + sr.membrane[1];
     if (!(trd < 0.0)) return 0.0;
     const Real c = mat_.wave_speed();
-    const Real t = sec_.thickness;
     const Real q = mat_.density() * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
     r.n[0] -= q * t;
     r.n[1] -= q * t;
@@ -325,19 +363,22 @@ class BasicShellBlock final : public ElementBlock {
     }
     const shell_c0tri::StrainRates sr = shell_c0tri::strain_rates(gm, V * gm.e, W * gm.e);
     shell_bt::Resultants r;
-    const Real kappa = shell_c0tri::stabilised_shear_factor(gm, sec_.shear_factor, sec_.thickness);
-    [[maybe_unused]] const Real damp = shell_thickness::integrate<damped>(mat_, rule_, sec_.thickness, damping_.beta,
-        state_.data() + static_cast<std::size_t>(e) * rule_.n, sr.s, dt, r, kappa);
+    const Real t = thickness(e);
+    const Real kappa = shell_c0tri::stabilised_shear_factor(gm, sec_.shear_factor, t);
+    shell_thickness::PointStrains ps = point_strains(e);
+    [[maybe_unused]] const Real damp = shell_thickness::integrate<damped>(mat_, rule_, t, damping_.beta,
+        state_.data() + static_cast<std::size_t>(e) * rule_.n, sr.s, dt, r, kappa, tracks_strain() ? &ps : nullptr);
+    if (!thick_.empty()) thick_[e] = t * std::exp(ps.mean);  // ISTUPD: the next step's thickness
     // The shear's rotational part: elastic, kappa G t I_p / A per unit area (shell_c0tri.hpp).
-    const Real kc = kappa * mat_.shear_modulus() * sec_.thickness * gm.polar;
+    const Real kc = kappa * mat_.shear_modulus() * t * gm.polar;
     Real& c_int = tri_c_[static_cast<std::size_t>(e - nq_)];
     c_int += dt * sr.shear_c;
     Real qc = kc * c_int;
     const Real c = mat_.wave_speed();
     const PlaneStressStiffness cs = mat_.stiffness();
     const Real len = shell_c0tri::characteristic_length(g, cs.c11, cs.g);
-    const Real len_dt = triangle_step_length(g, e, kappa, len);
-    Real qdt = bulk_viscosity(sr.s, len, g.area, r, out.p_visc);
+    const Real len_dt = triangle_step_length(g, e, kappa, len, t);
+    Real qdt = bulk_viscosity(sr.s, len, g.area, t, r, out.p_visc);
     if constexpr (damped) {
       const Real dc = damping_.beta * kc * sr.shear_c;
       qc += dc;
@@ -367,12 +408,13 @@ class BasicShellBlock final : public ElementBlock {
   }
 
   /// The length triangle e's step formula takes at geometry `g`: the smaller of its membrane
-  /// length `len` and its bending / shear modes' bound 2 c / omega (shear factor `kappa`).
-  Real triangle_step_length(const shell_c0tri::LocalGeometry& g, Index e, Real kappa, Real len) const {
+  /// length `len` and its bending / shear modes' bound 2 c / omega (shear factor `kappa`, thickness
+  /// `tk` of the stiffness; the mass is the section's).
+  Real triangle_step_length(const shell_c0tri::LocalGeometry& g, Index e, Real kappa, Real len, Real tk) const {
     const PlaneStressStiffness cs = mat_.stiffness();
     const Real t = sec_.thickness;
     const Real m_node = mat_.density() * area0_[e] * t / 3.0;
-    const Real w2 = shell_c0tri::bending_omega2_bound(g, cs.c11, cs.g, kappa, t, m_node,
+    const Real w2 = shell_c0tri::bending_omega2_bound(g, cs.c11, cs.g, kappa, tk, m_node,
                                                       m_node * std::max(t * t, area0_[e]) / 12.0);
     return std::min(len, 2.0 * mat_.wave_speed() / std::sqrt(w2));
   }
@@ -380,7 +422,7 @@ class BasicShellBlock final : public ElementBlock {
   Real triangle_step_length(const shell_c0tri::LocalGeometry& g, Index e) const {
     const PlaneStressStiffness cs = mat_.stiffness();
     return triangle_step_length(g, e, shell_c0tri::stabilised_shear_factor(g, sec_.shear_factor, sec_.thickness),
-                                shell_c0tri::characteristic_length(g, cs.c11, cs.g));
+                                shell_c0tri::characteristic_length(g, cs.c11, cs.g), sec_.thickness);
   }
 
   /// Triangle e's lumped mass rho A t / 3 per node and the quad's rotary inertia scaling.
@@ -401,50 +443,26 @@ class BasicShellBlock final : public ElementBlock {
     }
   }
 
-  /// Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes of element e
-  /// on the mid-step geometry (gm, Xm), added to the forces f and moments m (global components);
-  /// returns its power.
-  Real add_hourglass(Index e, const shell_bt::LocalGeometry& gm, const shell_bt::NodeMat& Xm,
-                     const shell_bt::NodeMat& V, const shell_bt::NodeMat& W, shell_bt::NodeMat& f,
-                     shell_bt::NodeMat& m) const {
-    const Real t = sec_.thickness;
-    const Real gs = sec_.shear_factor * mat_.stiffness().g;
-    // Relative to the element's mean rigid rotation: on a warped element the rotation about an
-    // in-plane axis moves the nodes in plane in proportion to their warp, which is an hourglass
-    // pattern; it must not be resisted.
-    const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
-    const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
-    shell_bt::NodeMat vrel;
-    for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
-    const shell_bt::NodeMat vl = vrel * gm.e;
-    const shell_bt::NodeMat wl = W * gm.e;
-    const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
-    const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
-    const Real m_node = mat_.density() * area0_[e] * t / 4.0;
-    const Real j_node = m_node * std::max(t * t, area0_[e]) / 12.0;
-    // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass displacement);
-    // the viscous coefficient is qhg times the critical damping of the mode.
-    const Real k_m = mat_.youngs_modulus() * t * gm.area * bb / 8.0;
-    const Real k_w = gs * t * t * t * bb / 12.0;
-    const Real k_r = mat_.youngs_modulus() * t * t * t * gm.area * bb / 192.0;
-    const Real cm = 2.0 * qhg_ * std::sqrt(k_m * m_node * inv_gg);
-    const Real cw = 2.0 * qhg_ * std::sqrt(k_w * m_node * inv_gg);
-    const Real cr = 2.0 * qhg_ * std::sqrt(k_r * j_node * inv_gg);
-    const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
-    const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
-    const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
-    const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
-    const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
-    f += gam * (hv * gm.e.transpose());
-    m += gam * (hw * gm.e.transpose());
-    return cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] + cr * (qw[0] * qw[0] + qw[1] * qw[1]);
+  /// Whether the elements integrate their points' normal strains (ISTUPD, or a strain criterion).
+  bool tracks_strain() const { return !thick_.empty() || !strain_.empty(); }
+  /// The normal-strain bookkeeping of element e (shell_thickness::PointStrains): nu = c12 / c11.
+  shell_thickness::PointStrains point_strains(Index e) {
+    shell_thickness::PointStrains ps;
+    if (!tracks_strain()) return ps;
+    const PlaneStressStiffness cs = mat_.stiffness();
+    const Real nu = cs.c12 / cs.c11, young = mat_.youngs_modulus();
+    ps.total_factor = (1.0 - 2.0 * nu) / young;
+    ps.thickness_factor = thickness_mode_ == 4 ? (1.0 - nu) / young : ps.total_factor;
+    if (!strain_.empty()) ps.strain = strain_.data() + static_cast<std::size_t>(e) * rule_.n;
+    return ps;
   }
 
   /// Erosion (element_erosion.hpp) of quadrilateral e after its update (`internal`, `hourglass`: its
   /// powers; `dt_e` its stable step); the verdict is shell_erosion::fails.
   bool erode(Index e, Index chunk, Real internal, Real hourglass, Real dt, Real dt_e) {
     const State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
-    const bool gone = shell_erosion::fails(erosion_.criteria(), st, rule_.n, erosion_.time(), dt_e);
+    const std::array<Real, 6>* eps = strain_.empty() ? nullptr : strain_.data() + static_cast<std::size_t>(e) * rule_.n;
+    const bool gone = shell_erosion::fails(erosion_.criteria(), st, rule_.n, erosion_.time(), dt_e, eps);
     return erosion_.update_failed(e, chunk, gone, internal, hourglass, dt);
   }
 
@@ -512,7 +530,8 @@ class BasicShellBlock final : public ElementBlock {
   bool has_plasticity() const override { return PlasticState<State>; }
 
   /// ElementBlock::plasticity_totals: each through-thickness point's `eps`, and its `work` times
-  /// its share w/2 of the current area times the thickness (the section's, which does not change).
+  /// its share w/2 of the current area times the thickness (the section's, or the current one
+  /// under ISTUPD).
   PlasticityTotals plasticity_totals(const NodalFields& nodes) const override {
     PlasticityTotals t;
     if constexpr (PlasticState<State>) {
@@ -523,7 +542,7 @@ class BasicShellBlock final : public ElementBlock {
         const State* st = state_.data() + static_cast<std::size_t>(e) * n;
         for (int ip = 0; ip < n; ++ip) {
           t.max_plastic_strain = std::max(t.max_plastic_strain, plastic_strain_of(st[ip]));
-          t.plastic_work += 0.5 * rule_.w[ip] * plastic_work_density_of(st[ip]) * area * sec_.thickness;
+          t.plastic_work += 0.5 * rule_.w[ip] * plastic_work_density_of(st[ip]) * area * thickness(e);
         }
       }
     }
@@ -562,6 +581,9 @@ class BasicShellBlock final : public ElementBlock {
   Index nq_ = 0;              ///< quadrilaterals; the triangles follow them
   std::vector<Real> tri_c_;   ///< per triangle, the time integral of the shear's rotational part c
   std::vector<State> state_;  ///< the law's state, element-major, then point
+  std::vector<Real> thick_;   ///< ISTUPD: per element, the current thickness (empty: the section's)
+  int thickness_mode_ = 0;    ///< ISTUPD (1 or 4) when thick_ is not empty
+  std::vector<std::array<Real, 6>> strain_;  ///< strain criteria: per element and point (empty: none)
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;

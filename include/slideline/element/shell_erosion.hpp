@@ -12,9 +12,9 @@
 namespace slideline::shell_erosion {
 
 /// Refuses what a shell part (`part_id`, `quads` of `elements` quadrilaterals, `points`
-/// through-thickness points) cannot erode by: a failure strain without a plastic law, a stress
-/// threshold on a law without stress (*MAT_NULL), a strain threshold, C0 triangles, NUMFIP beyond
-/// the points.
+/// through-thickness points) cannot erode by: a failure strain without a plastic law, a stress or
+/// strain threshold on a law without stress (*MAT_NULL: no plane-stress normal strain either), C0
+/// triangles, NUMFIP beyond the points.
 template <class State>
 void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, int points) {
   const std::string part = "part " + std::to_string(part_id);
@@ -24,9 +24,10 @@ void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, in
     if (k.needs_stress())
       throw NotImplementedError(part + ": its material carries no stress, so a stress criterion of"
                                 " *MAT_ADD_EROSION can never hold");
-  if (k.needs_strain())
-    throw NotImplementedError(part + ": the strain criteria of *MAT_ADD_EROSION (MNEPS, EFFEPS, VOLEPS, MXEPS,"
-                              " EPSSH) on shells are not implemented (one-point hexahedra have them)");
+  if constexpr (!requires(const State& s) { s.sigma; })
+    if (k.needs_strain())
+      throw NotImplementedError(part + ": its material carries no stress, so the normal strain of plane stress is not"
+                                " defined: the strain criteria of *MAT_ADD_EROSION are not implemented on it");
   if (quads < elements) throw NotImplementedError(part + ": erosion of C0 triangles is not implemented");
   if (k.has_thresholds() && k.points_needed(points) > points)
     throw InputError(part + ": NUMFIP of *MAT_ADD_EROSION asks for " + std::to_string(k.points_needed(points)) +
@@ -36,9 +37,19 @@ void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, in
 /// Whether a quadrilateral goes, from the states `st` of its `points` through-thickness points
 /// after the update, at time `t` with stable step `dt_e`: every point's plastic strain reached
 /// the failure strain; or NUMFIP points meet NCS thresholds (each point's law stress in the
-/// element frame, sigma_zz = 0); or dt_e < TDEL.
+/// element frame, sigma_zz = 0, and, read when a strain criterion is set, its accumulated strain
+/// `strain[ip]`: xx, yy, zz, xy, yz, xz, shell_thickness::PointStrains); or dt_e < TDEL.
+/// The principal values, largest first, of a shell point's strain (xx, yy, zz, xy, yz, xz: the
+/// time integral of the rate of deformation in the co-rotating element frame, which is the
+/// logarithmic strain while the principal axes of stretch stay fixed in the material, as for the
+/// hexahedra's ln V; erosion_criteria.hpp).
+inline std::array<Real, 3> principal_log_strains(const std::array<Real, 6>& e) {
+  return ErosionCriteria::principal_values(e);
+}
+
 template <class State>
-bool fails(const ErosionCriteria& k, const State* st, int points, Real t, Real dt_e) {
+bool fails(const ErosionCriteria& k, const State* st, int points, Real t, Real dt_e,
+           const std::array<Real, 6>* strain = nullptr) {
   if (k.plastic_strain > 0.0) {
     Real eps = plastic_strain_of(st[0]);
     for (int ip = 1; ip < points; ++ip) eps = std::min(eps, plastic_strain_of(st[ip]));
@@ -52,7 +63,9 @@ bool fails(const ErosionCriteria& k, const State* st, int points, Real t, Real d
         const auto& p = st[ip].sigma;  // local xx, yy, xy, yz, xz
         s = {p[0], p[1], 0.0, p[2], p[3], p[4]};
       }
-      failed += k.point_fails(s, t) ? 1 : 0;
+      const std::array<Real, 3> e =
+          k.needs_strain() ? principal_log_strains(strain[ip]) : std::array<Real, 3>{};
+      failed += k.point_fails(s, t, e) ? 1 : 0;
     }
     if (failed >= k.points_needed(points)) return true;
   }

@@ -497,6 +497,12 @@ struct Model {
   /// Gauss-Legendre, 1 Gauss-Lobatto (the two surfaces are integration points); other values are
   /// refused by the reader.
   int shell_intgrd = 0;
+  /// *CONTROL_SHELL ISTUPD (card 1): 0 (blank) the shells keep their thickness; 1 membrane
+  /// straining changes it (the whole normal strain of plane stress), 4 its plastic part alone
+  /// (docs/solver.md, "Shell thickness change"); 2 and 3 (thick shells) are refused by the
+  /// reader. `shell_istupd_src`: where it was given.
+  int shell_istupd = 0;
+  Source shell_istupd_src;
   /// *CONTROL_ACCURACY INN, invariant node numbering: 1 (blank, 0) off; 2 and -2 shells (the
   /// quadrilaterals' co-rotational frame from the lines joining opposite mid-sides, invariant under
   /// a renumbering of the nodes; 2 would also ask it of triangles, refused where triangles run);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -47,7 +48,9 @@ TEST(KeywordControls, DefaultsAndZerosReadSilently) {
 
 TEST(KeywordControls, PhysicsFieldsAreRefusedNamingLineAndField) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"*CONTROL_SHELL\n0,0,0,1\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = 1 (shell thickness change"},
+      {"*CONTROL_SHELL\n0,0,0,2\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = 2 (shell thickness change)"},
+      {"*CONTROL_SHELL\n0,0,0,3\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = 3 (shell thickness change)"},
+      {"*CONTROL_SHELL\n0,0,0,-1\n", "c.k:3: *CONTROL_SHELL card 1: field ISTUPD = -1 (shell thickness change)"},
       {"*CONTROL_SHELL\n0,0,0,0,16\n", "c.k:3: *CONTROL_SHELL card 1: field THEORY = 16"},
       {"*CONTROL_SHELL\n\n0,0,1\n", "c.k:4: *CONTROL_SHELL card 2: field LAMSHT = 1"},
       {"*CONTROL_ACCURACY\n0,1,0,1\n", "c.k:3: *CONTROL_ACCURACY card 1: field IACC = 1"},
@@ -173,6 +176,40 @@ TEST(KeywordControls, ShellIntgrdPicksTheThroughThicknessRule) {
     EXPECT_NE(std::string(e.what()).find("c.k:6: *CONTROL_SHELL card 2: field INTGRD = 2 must be 0 (Gauss) or 1 (Lobatto)"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// *CONTROL_SHELL ISTUPD (card 1, field 4): 1 and 4 are stored and turn the shell blocks' thickness
+// update on (docs/solver.md, "Shell thickness change"); 4 on an elastic part and either on a
+// *MAT_NULL shell are refused when the model is built, naming the card's line and the part.
+TEST(KeywordControls, ShellIstupdTurnsTheThicknessUpdateOn) {
+  const auto deck = [](const std::string& istupd, const std::string& mat) {
+    return std::string("*KEYWORD\n*CONTROL_TERMINATION\n1.0\n*CONTROL_SHELL\n0,0,0,") + istupd +
+           "\n*SECTION_SHELL\n1,2,,3\n0.1\n" + mat + "*PART\nplate\n1,1,1\n*NODE\n1,0,0,0\n2,1,0,0\n"
+           "3,1,1,0\n4,0,1,0\n*ELEMENT_SHELL\n7,1,1,2,3,4\n*END\n";
+  };
+  const std::string elastic = "*MAT_ELASTIC\n1,1.0,1000.0,0.3\n";
+  const std::string plastic = "*MAT_PLASTIC_KINEMATIC\n1,1.0,1000.0,0.3,1.0,10.0,1.0\n";
+  for (const auto& [istupd, mat, follows] :
+       {std::tuple{"", elastic, false}, std::tuple{"1", elastic, true}, std::tuple{"1", plastic, true},
+        std::tuple{"4", plastic, true}}) {
+    const auto m = read_keyword_string(deck(istupd, mat), "c.k");
+    EXPECT_EQ(m.shell_istupd, std::string(istupd).empty() ? 0 : std::stoi(istupd));
+    auto sim = build_simulation(m);
+    EXPECT_EQ(sim->blocks().at(0)->current_thickness().size(), follows ? 1u : 0u) << istupd;
+    if (follows) EXPECT_EQ(sim->blocks().at(0)->current_thickness()[0], 0.1);
+  }
+  for (const auto& [istupd, mat, expected] :
+       {std::tuple{"4", elastic, "c.k:5: field ISTUPD of *CONTROL_SHELL: part 1: *CONTROL_SHELL ISTUPD = 4 (elastic "
+                                 "strains left out) acts on elastic-plastic materials"},
+        std::tuple{"1", std::string("*MAT_NULL\n1,1.0,0,0,0,0,1000.0,0.3\n"),
+                   "c.k:5: field ISTUPD of *CONTROL_SHELL: part 1: its material carries no stress"}}) {
+    try {
+      build_simulation(read_keyword_string(deck(istupd, mat), "c.k"));
+      FAIL() << "ISTUPD " << istupd << " built";
+    } catch (const NotImplementedError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
   }
 }
 

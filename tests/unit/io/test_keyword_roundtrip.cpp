@@ -95,9 +95,13 @@ model::Model full_model() {
   m.damping_stiffness.push_back({1, -2.5e-5, true, {}});
   m.termination = {0.5, 100000, 2e-4, 7.5, 12.5, {}};
   m.timestep = {1e-5, 0.6, 1, 0.0, -1e-6, 2, 1, {}};  // MS1ST = 1: mass scaled once; TSLIMT != 0 is refused
-  // Values the reader accepts (0 in ISLCHK / ORIEN would read back as their default 1; THKCHG != 0
-  // is refused, RWPNAL warns, ENMASS 1/2 is refused: docs/contact.md, "Contact card fields").
-  m.control_contact = {0.2, 0.0, 1, 1, 2, 0, 1, 0};
+  // Values the reader accepts (0 in ISLCHK / ORIEN would read back as their default 1; THKCHG 1 is
+  // read and written back, other values are refused, RWPNAL warns, ENMASS 1/2 is refused:
+  // docs/contact.md, "Contact card fields").
+  m.control_contact = {0.2, 0.0, 1, 1, 2, 1, 1, 0};
+  m.shell_esort = 1;  // *CONTROL_SHELL: ESORT, ISTUPD, INTGRD are stored and written back
+  m.shell_istupd = 4;
+  m.shell_intgrd = 1;
   m.database = {0.001, 0.002, 0.003, 0.004, 0.05, {100, 105, 109}};
 
   // One contact per DYNA3D type, every enforcement and option.

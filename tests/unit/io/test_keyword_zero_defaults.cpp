@@ -191,7 +191,7 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {"*HOURGLASS\n" + card({"1", "1", "", "", "", "", "0.05"}, ""), "u.k:2: *HOURGLASS card 1: field QB = 0.05"},
       {"*HOURGLASS\n" + card({"1", "1", "0.2", "", "", "", "", "0.1"}, ""), "u.k:2: *HOURGLASS card 1: field QW = 0.1"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "3"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field PENOPT = 3"},
-      {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "1"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field THKCHG = 1"},
+      {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "2"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field THKCHG = 2"},
       {"*CONTROL_CONTACT\n" + card({"", "", "", "", "", "", "2"}, ""), "u.k:2: *CONTROL_CONTACT card 1: field ORIEN = 2"},
       {"*CONTROL_CONTACT\n" + card({}, "") + card({}, "") + card({}, "") + card({}, "") + card({"1"}, ""),
        "u.k:6: *CONTROL_CONTACT card 5: field ISYM = 1"},

@@ -182,6 +182,11 @@ class PenaltyPass {
     pairs_.set_sides(std::move(slave_sides), std::move(segment_sides));
     pairs_.set_master_offsets(std::move(segment_offsets));
   }
+  /// THKCHG = 1: the offsets of the slaves and master segments follow the shells' current
+  /// thickness (ContactPairs::set_followed_offsets); before initialize().
+  void set_followed_offsets(FollowedOffsets slaves, FollowedOffsets segments) {
+    pairs_.set_followed_offsets(std::move(slaves), std::move(segments));
+  }
   /// The pairs a tie still holds (ContactPairs::set_held); before initialize().
   void set_held(std::span<const std::uint8_t> held_nodes, std::span<const std::uint8_t> held_segments) {
     pairs_.set_held(held_nodes, held_segments);

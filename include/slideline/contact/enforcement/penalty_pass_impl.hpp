@@ -25,6 +25,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes,
   }
   pairs_.set_depth_limits(nodes.x, blocks, opt_.penetration_check);
   initialize(nodes, std::move(k_seg_));
+  pairs_.follow_thickness(blocks);  // THKCHG = 1: from the first cycle on
 }
 
 inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> segment_stiffness) {

@@ -138,6 +138,28 @@ class ContactPairs {
   /// One offset per master segment (length) instead of the ShellOffsetRule's (a surface whose
   /// segments come from two sides with their own thickness rules); before initialize().
   void set_master_offsets(std::vector<Real> offsets) { master_offset_given_ = std::move(offsets); }
+  /// THKCHG = 1 (FollowedOffsets, shell_offset.hpp): the slaves' offsets (indexed like slaves())
+  /// and the master segments' follow the shells' current thickness; before initialize(). Never
+  /// called: the offsets are those of initialize() for the run.
+  void set_followed_offsets(FollowedOffsets slaves, FollowedOffsets segments) {
+    follow_slave_ = std::move(slaves);
+    follow_segment_ = std::move(segments);
+  }
+  /// After initialize(): reads each block's current thickness (ElementBlock::current_thickness; the
+  /// views stay valid for the run); the offsets follow only where a block's thickness changes.
+  void follow_thickness(const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
+    if (follow_slave_.size() != static_cast<Index>(slaves_.size()) || follow_segment_.size() != master_.segment_count())
+      return;
+    thickness_.clear();
+    following_ = false;
+    for (const auto& b : blocks) {
+      thickness_.push_back(b->current_thickness());
+      following_ = following_ || !thickness_.back().empty();
+    }
+  }
+  /// Whether the offsets follow the thickness (set_followed_offsets, follow_thickness).
+  bool follows_thickness() const { return following_; }
+
   /// Per master segment, the deepest contact (contact_depth_limit), from the element blocks at x;
   /// with xpene > 0 (PENCHK = 1) at most xpene x penetration_check_thickness. Without a call,
   /// depth_limit() is half the projection's segment size.
@@ -223,6 +245,9 @@ class ContactPairs {
   std::vector<std::uint8_t> slave_side_mask_;    ///< set_sides(): per slave (empty: no side filter)
   std::vector<std::uint8_t> segment_side_mask_;  ///< set_sides(): per master segment
   std::vector<Real> master_offset_given_;        ///< set_master_offsets() (empty: the rule's)
+  FollowedOffsets follow_slave_, follow_segment_;  ///< set_followed_offsets()
+  std::vector<std::span<const Real>> thickness_;   ///< follow_thickness(): per block (empty: constant)
+  bool following_ = false;
   std::span<const std::uint8_t> held_node_;      ///< set_held(): per internal node (empty: none held)
   std::span<const std::uint8_t> held_segment_;   ///< set_held(): per master segment
   std::span<const std::uint8_t> slave_active_;   ///< set_erosion(): per slave (empty: all active)
@@ -316,6 +341,12 @@ inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) con
 }
 
 inline void ContactPairs::locate(const Vec3Field& x) {
+  if (following_) {  // THKCHG = 1: this cycle's offsets (the elements updated their thickness before)
+    for (std::size_t i = 0; i < slaves_.size(); ++i)
+      slave_offset_[i] = follow_slave_.value(static_cast<Index>(i), thickness_);
+    for (Index s = 0; s < master_.segment_count(); ++s)
+      master_offset_[static_cast<std::size_t>(s)] = follow_segment_.value(s, thickness_);
+  }
   const bool due = broad_ && (force_search_ || cadence_.is_due(x));  // a seeded stage only tracks
   force_search_ = false;
   if (due) {

@@ -1,0 +1,49 @@
+#pragma once
+/// The viscous hourglass control of a Belytschko-Tsay quadrilateral (shell_block.hpp): kept apart
+/// from the block (its size).
+#include <algorithm>
+#include <cmath>
+
+#include "slideline/core/types.hpp"
+#include "slideline/element/shell_bt.hpp"
+
+namespace slideline::shell_hourglass {
+
+/// Viscous hourglass on the membrane (x, y), bending (z) and rotation (x, y) modes of an element on
+/// the mid-step geometry (gm, Xm), added to the forces f and moments m (global components); returns
+/// its power. `qhg` the coefficient, `youngs` and `gs` (the shear factor times G) the law's moduli,
+/// `t` the element's thickness (its stiffness), `m_node` and `j_node` its corner mass and rotary
+/// inertia (from the section's thickness: the mass does not change).
+inline Real add(Real qhg, Real youngs, Real gs, Real t, Real m_node, Real j_node, const shell_bt::LocalGeometry& gm,
+                const shell_bt::NodeMat& Xm, const shell_bt::NodeMat& V, const shell_bt::NodeMat& W,
+                shell_bt::NodeMat& f, shell_bt::NodeMat& m) {
+  // Relative to the element's mean rigid rotation: on a warped element the rotation about an
+  // in-plane axis moves the nodes in plane in proportion to their warp, which is an hourglass
+  // pattern; it must not be resisted.
+  const Eigen::Matrix<Real, 1, 3> wbar = 0.25 * W.colwise().sum();
+  const Eigen::Matrix<Real, 1, 3> xc = 0.25 * Xm.colwise().sum();
+  shell_bt::NodeMat vrel;
+  for (int k = 0; k < 4; ++k) vrel.row(k) = V.row(k) - wbar.cross(Xm.row(k) - xc);
+  const shell_bt::NodeMat vl = vrel * gm.e;
+  const shell_bt::NodeMat wl = W * gm.e;
+  const Real bb = gm.b1.squaredNorm() + gm.b2.squaredNorm();
+  const Real inv_gg = 1.0 / gm.gamma.squaredNorm();
+  // Mode stiffnesses of LS-DYNA's BT hourglass control (force per unit hourglass displacement);
+  // the viscous coefficient is qhg times the critical damping of the mode.
+  const Real k_m = youngs * t * gm.area * bb / 8.0;
+  const Real k_w = gs * t * t * t * bb / 12.0;
+  const Real k_r = youngs * t * t * t * gm.area * bb / 192.0;
+  const Real cm = 2.0 * qhg * std::sqrt(k_m * m_node * inv_gg);
+  const Real cw = 2.0 * qhg * std::sqrt(k_w * m_node * inv_gg);
+  const Real cr = 2.0 * qhg * std::sqrt(k_r * j_node * inv_gg);
+  const Eigen::Matrix<Real, 4, 1> gam = gm.gamma.transpose();
+  const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
+  const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
+  const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
+  const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
+  f += gam * (hv * gm.e.transpose());
+  m += gam * (hw * gm.e.transpose());
+  return cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] + cr * (qw[0] * qw[0] + qw[1] * qw[1]);
+}
+
+}  // namespace slideline::shell_hourglass
