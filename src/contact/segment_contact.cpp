@@ -46,6 +46,34 @@ SegmentContact::SegmentContact(std::string title, Surface surface, std::vector<s
     throw Error("SegmentContact: one side mask per segment");
 }
 
+void SegmentContact::set_offsets(std::vector<Real> offsets) {
+  if (offsets.size() != side_.size()) throw Error("SegmentContact: one offset per segment");
+  offset_ = std::move(offsets);
+  max_offset_ = 0.0;
+  for (Real o : offset_) max_offset_ = std::max(max_offset_, o);
+}
+
+void SegmentContact::set_single_surface(std::vector<Id> parts) {
+  parts_ = std::move(parts);
+  const std::size_t n = parts_.size();
+  transmitted_.assign(n >= 2 ? n * (n - 1) / 2 : 0, Vec3::Zero());
+}
+
+void SegmentContact::append_output_names(std::vector<std::string>& names) const {
+  if (transmitted_.size() == 1) {
+    names.emplace_back("transmitted_force");
+    return;
+  }
+  for (std::size_t a = 0; a < parts_.size(); ++a)
+    for (std::size_t b = a + 1; b < parts_.size(); ++b)
+      names.push_back("transmitted_force/" + std::to_string(parts_[a]) + "_" + std::to_string(parts_[b]));
+}
+
+void SegmentContact::write_output_values(std::span<Real> out) const {
+  for (std::size_t k = 0; k < transmitted_.size(); ++k)
+    for (int c = 0; c < 3; ++c) out[3 * k + static_cast<std::size_t>(c)] = transmitted_[k][c];
+}
+
 void SegmentContact::initialize(const ContactContext& context) {
   const NodalFields& nodes = context.nodes;
   const Index ns = surface_.segment_count();
@@ -68,6 +96,8 @@ void SegmentContact::initialize(const ContactContext& context) {
   first_.assign(n + 1, 0);
   records_.assign(4 * n, SegmentContactRecord{});
   baseline_.assign(4 * n, 0.0);
+  memory_.assign(4 * n, 0);
+  memory_of_.assign(4 * n, -1);
   BroadPhaseOptions o;
   o.margin = 0.0;  // a new search every cycle
   broad_phase_->build(surface_, nodes.x, o);
@@ -98,6 +128,8 @@ void SegmentContact::search(const Vec3Field& x) {
     for (const Vec3& p : c) r = std::max(r, (p - m).norm());
     centroid_.set(s, m);
     normal_.set(s, segment_normal(surface_, s, x));
+    // A shell's contact surface lies o_s off its mid-surface; the other segment's o_b <= max.
+    if (!offset_.empty()) r += offset_[static_cast<std::size_t>(s)] + max_offset_;
     radius_[static_cast<std::size_t>(s)] = r;
   }
   broad_phase_->update(x);
@@ -114,36 +146,76 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) 
   const Vec3 na = normal_.get(a);
   Real jac[4], area = 0.0;
   for (int q = 0; q < 4; ++q) area += (jac[q] = jacobian(xa, kXi[q], kEta[q]));
+  const bool a_shell = surface_.kind[au] == SegmentKind::shell;
+  const Real o_a = offset_.empty() ? 0.0 : offset_[au];
   for (int q = 0; q < 4; ++q) {
-    SegmentContactRecord& rec = records_[4 * au + static_cast<std::size_t>(q)];
+    const std::size_t g = 4 * au + static_cast<std::size_t>(q);
+    SegmentContactRecord& rec = records_[g];
     rec = SegmentContactRecord{};
     const std::array<Real, 4> shape_a = detail::bilinear_shape(kXi[q], kEta[q]);
     const Vec3 p = detail::combine(xa, shape_a);
-    // The nearest admitted segment of the other side that the point lies over.
+    // The least-penetrated admitted segment that the point lies over.
     Index best = -1;
     Projection best_pr;
+    Real best_raw = 0.0;
+    int best_side = 1;
     for (Index k = first_[au]; k < first_[au + 1]; ++k) {
       const Index b = candidates_[static_cast<std::size_t>(k)].segment;
       const auto bu = static_cast<std::size_t>(b);
       const bool cross = ((side_[au] & 1) && (side_[bu] & 2)) || ((side_[au] & 2) && (side_[bu] & 1));
       if (!cross || b == a || share_node(ca, &surface_.conn[4 * bu])) continue;
+      // Faces of one element never meet (a one-element-thick layer's top and bottom share no node).
+      if (surface_.element[au] == surface_.element[bu] && surface_.block[au] == surface_.block[bu]) continue;
+      const bool b_shell = surface_.kind[bu] == SegmentKind::shell;
+      const Real nn = na.dot(normal_.get(b));
       // a must face b: normals within 60 deg of opposite. A point of a face that meets b only
       // at b's edge (a side face beside an end face, n_a . n_b ~ 0) would otherwise read the
       // distance to b's plane as a penetration (x_b - x_q = d n_b, so (x_b - x_q) . n_a < -d / 2
-      // is the same test: b's point lies inside a as well).
-      if (!(na.dot(normal_.get(b)) < -0.5)) continue;
+      // is the same test: b's point lies inside a as well). A shell has two sides: within 60 deg
+      // of parallel or opposite, the side checked below once it is known.
+      if (!a_shell && !b_shell) {
+        if (!(nn < -0.5)) continue;
+      } else if (!(std::abs(nn) > 0.5)) {
+        continue;
+      }
       const Projection pr = project_point_to_segment(p, surface_, b, nodes.x);
       const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
-      if (lateral > 1e-3 * pr.size) continue;                              // beside b
-      if (!(pr.gap < 0.0) || -pr.gap > depth_limit_[bu]) continue;          // not into b, or through it
-      if (best < 0 || -pr.gap < -best_pr.gap) {
+      if (lateral > 1e-3 * pr.size) continue;  // beside b
+      Real raw = -pr.gap;
+      int side = 1;
+      if (b_shell || o_a > 0.0) {
+        const Real o = o_a + (offset_.empty() ? 0.0 : offset_[bu]);
+        if (b_shell) {  // the side of b's mid-surface: remembered while within o of it
+          side = pr.gap >= 0.0 ? 1 : -1;
+          if (memory_of_[g] == b && memory_[g] != 0 && std::abs(pr.gap) < o) side = memory_[g];
+          if (!a_shell && !(side * nn < -0.5)) continue;  // a solid face must face b's side
+        } else if (!(pr.gap > -o_a)) {
+          // A shell's mid-surface at most o_a behind a solid face (penetration < 2 o_a, as a solid
+          // face's behind a shell's mid-surface is bounded by the side memory): deeper, the point
+          // would read the far face of a thin solid (its top, seen from a shell under it) as met.
+          continue;
+        }
+        raw = o - side * pr.gap;
+      }
+      if (!(raw > 0.0) || side * pr.gap < -depth_limit_[bu]) continue;  // not into b, or through it
+      if (best < 0 || raw < best_raw) {
         best = b;
         best_pr = pr;
+        best_raw = raw;
+        best_side = side;
       }
     }
+    // The side memory follows the pair; a point in contact with nothing reads its side again.
+    if (best >= 0 && surface_.kind[static_cast<std::size_t>(best)] == SegmentKind::shell) {
+      memory_of_[g] = best;
+      memory_[g] = static_cast<std::int8_t>(best_side);
+    } else {
+      memory_of_[g] = -1;
+      memory_[g] = 0;
+    }
     if (best < 0) continue;
-    const Real raw = -best_pr.gap;  // > 0
-    Real& d0 = baseline_[4 * au + static_cast<std::size_t>(q)];
+    const Real raw = best_raw;  // > 0
+    Real& d0 = baseline_[g];
     if (baseline) {
       if (raw > 1e-9 * best_pr.size) d0 = raw;
       continue;
@@ -161,7 +233,8 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) 
     rec.stiffness = k;
     rec.shape_a = shape_a;
     rec.shape_b = best_pr.shape;
-    rec.force = rec.weight * k * d * best_pr.normal;
+    rec.side = best_side;
+    rec.force = best_side > 0 ? Vec3(rec.weight * k * d * best_pr.normal) : Vec3(-(rec.weight * k * d) * best_pr.normal);
     // The point's spring between a's and b's interpolated points: omega^2 = k_q sum N^2 / m.
     Real inv_m = 0.0;
     for (int i = 0; i < 4; ++i) {
@@ -188,8 +261,24 @@ void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& tim
   scatter(out);
 }
 
+void SegmentContact::add_transmitted(Id on, Id from, const Vec3& force) {
+  // rec.force acts on a's part (`on`), its opposite on b's (`from`); pair k = (parts_[i], parts_[j]),
+  // i < j, holds the force of parts_[j] on parts_[i].
+  if (on == from) return;
+  const auto i = static_cast<std::size_t>(std::lower_bound(parts_.begin(), parts_.end(), std::min(on, from)) - parts_.begin());
+  const auto j = static_cast<std::size_t>(std::lower_bound(parts_.begin(), parts_.end(), std::max(on, from)) - parts_.begin());
+  if (j >= parts_.size()) return;
+  const std::size_t n = parts_.size();
+  const std::size_t k = i * n - i * (i + 1) / 2 + (j - i - 1);
+  if (on < from)
+    transmitted_[k] += force;
+  else
+    transmitted_[k] -= force;
+}
+
 void SegmentContact::scatter(ContactForceView out) {
   slave_ = Vec3::Zero();
+  for (Vec3& t : transmitted_) t.setZero();
   Real w2 = 0.0;
   for (std::size_t r = 0; r < records_.size(); ++r) {
     const SegmentContactRecord& rec = records_[r];
@@ -208,6 +297,7 @@ void SegmentContact::scatter(ContactForceView out) {
     else
       slave_ += rec.force;
     w2 = std::max(w2, rec.dt_inv2);
+    if (!transmitted_.empty()) add_transmitted(surface_.part[a], surface_.part[static_cast<std::size_t>(rec.other)], rec.force);
   }
   dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }
