@@ -56,6 +56,7 @@ model::Model two_plates(int n) {
   sec.t = {0.1, 0.1, 0.1, 0.1};
   m.shell_sections.push_back(sec);
   m.parts.push_back({1, "plates", 1, 1, 0, 0, {}});
+  m.termination.endtim = 1.0;
   Id eid = 1;
   for (const int u : {n, n - 1}) {
     const Id first = static_cast<Id>(m.nodes.size()) + 1;
