@@ -178,6 +178,7 @@ std::unique_ptr<ContactAlgorithm> make_segment_contact(InterfaceSpec& spec) {
   auto contact = std::make_unique<SegmentContact>(spec.title, std::move(surface), std::move(sides),
                                                   std::make_unique<FclBroadPhase>(), spec.slave_stiffness);
   contact->set_offsets(std::move(offsets));
+  contact->set_friction(spec.friction, spec.viscous_damping);
   if (spec.single_surface) contact->set_single_surface(std::move(parts));
   return contact;
 }

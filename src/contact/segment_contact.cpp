@@ -59,6 +59,12 @@ void SegmentContact::set_single_surface(std::vector<Id> parts) {
   transmitted_.assign(n >= 2 ? n * (n - 1) / 2 : 0, Vec3::Zero());
 }
 
+void SegmentContact::set_friction(const ExponentialCoulomb& law, Real viscous_damping) {
+  friction_ = law;
+  frictional_ = std::max(law.mu_s, law.mu_k) > 0.0;
+  viscous_damping_ = viscous_damping;
+}
+
 void SegmentContact::append_output_names(std::vector<std::string>& names) const {
   if (transmitted_.size() == 1) {
     names.emplace_back("transmitted_force");
@@ -98,13 +104,16 @@ void SegmentContact::initialize(const ContactContext& context) {
   baseline_.assign(4 * n, 0.0);
   memory_.assign(4 * n, 0);
   memory_of_.assign(4 * n, -1);
+  slip_.assign(frictional_ ? 4 * n : 0, Vec3::Zero());
+  slip_on_.assign(frictional_ ? 4 * n : 0, -1);
+  friction_work_ = 0.0;
   BroadPhaseOptions o;
   o.margin = 0.0;  // a new search every cycle
   broad_phase_->build(surface_, nodes.x, o);
   candidates_.reserve(16 * n);
   search(nodes.x);
   // LS-DYNA's SOFT = 2 keeps what penetrates at t = 0 as the baseline (no node is moved).
-  for (Index a = 0; a < ns; ++a) evaluate(a, nodes, true);
+  for (Index a = 0; a < ns; ++a) evaluate(a, nodes, true, 0.0);
   initial_count_ = 0;
   initial_max_ = 0.0;
   for (Real d : baseline_)
@@ -139,7 +148,7 @@ void SegmentContact::search(const Vec3Field& x) {
   for (std::size_t s = 0; s + 1 < first_.size(); ++s) first_[s + 1] += first_[s];
 }
 
-void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) {
+void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, Real dt_prev) {
   const auto au = static_cast<std::size_t>(a);
   const Index* ca = &surface_.conn[4 * au];
   const SegmentCorners xa = segment_corners(surface_, a, nodes.x);
@@ -213,6 +222,9 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) 
       memory_of_[g] = -1;
       memory_[g] = 0;
     }
+    // The stick spring's segment: set again below while the point stays in contact.
+    const Index held = frictional_ ? slip_on_[g] : -1;
+    if (frictional_) slip_on_[g] = -1;
     if (best < 0) continue;
     const Real raw = best_raw;  // > 0
     Real& d0 = baseline_[g];
@@ -244,8 +256,55 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) 
                nodes.mass[static_cast<std::size_t>(cb[i])];
     }
     rec.dt_inv2 = 0.25 * rec.weight * k * inv_m;
+    rec.normal_force = rec.weight * k * d;
+    if (frictional_ || viscous_damping_ > 0.0)
+      add_damping_and_friction(g, held, rec, best_side > 0 ? Vec3(best_pr.normal) : Vec3(-best_pr.normal), ca, cb,
+                               inv_m, nodes, dt_prev);
   }
 }
+
+void SegmentContact::add_damping_and_friction(std::size_t g, Index held, SegmentContactRecord& rec, const Vec3& n,
+                                              const Index* ca, const Index* cb, Real inv_m, const NodalFields& nodes,
+                                              Real dt_prev) {
+  // Relative velocity of a's point against b's (v^{n-1/2}).
+  Vec3 dv = Vec3::Zero();
+  Real inv_a = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    dv += rec.shape_a[iu] * nodes.v.get(ca[i]) - rec.shape_b[iu] * nodes.v.get(cb[i]);
+    inv_a += rec.shape_a[iu] * rec.shape_a[iu] / nodes.mass[static_cast<std::size_t>(ca[i])];
+  }
+  const Real kq = rec.weight * rec.stiffness;  // the point's normal spring (force / length)
+  Real fn = rec.normal_force;
+  if (viscous_damping_ > 0.0) {
+    // LS-DYNA's VDC as on the penalty passes: c = VDC/100 x 2 m omega, omega^2 = k_q (1/m_a + 1/m_b),
+    // m the smaller of the two points' masses (1 / sum N^2 / m); the normal force stays >= 0.
+    const Real inv_b = inv_m - inv_a;
+    const Real m = std::min(1.0 / inv_a, inv_b > 0.0 ? 1.0 / inv_b : 1.0 / inv_a);
+    const Real c = viscous_damping_ * 2.0 * m * std::sqrt(kq * inv_m);
+    fn = std::max(Real(0), fn - c * n.dot(dv));  // n . dv > 0: separating
+    // Central differences with the velocity half a step behind: omega dt <= 2 (sqrt(1 + z^2) - z).
+    const Real zeta = viscous_damping_ * m * inv_m;
+    const Real factor = std::sqrt(1.0 + zeta * zeta) - zeta;
+    rec.dt_inv2 /= factor * factor;
+  }
+  rec.normal_force = fn;
+  rec.force = fn * n;
+  if (!frictional_) return;
+  // Friction: a stick spring k_t = k_q from the sticking point (kept while the point stays in
+  // contact, also as it slides from one segment b onto the next: released there, the friction
+  // would drop for the steps the spring takes to stretch again), the exponential Coulomb law at
+  // the tangential slip speed.
+  const Vec3 vt = tangential_part(dv, n);
+  const Vec3 ue = (held >= 0 ? rotate_into_plane(slip_[g], n) : Vec3(Vec3::Zero())) + dt_prev * vt;
+  const StickSpringUpdate u = stick_spring_update(ue, kq, fn, friction_.coefficient(vt.norm()));
+  if (u.slipping) rec.dissipation = u.force.norm() * (ue.norm() - u.elastic_displacement.norm());
+  slip_[g] = u.elastic_displacement;
+  slip_on_[g] = rec.other;
+  rec.friction = u.force;
+  rec.force += u.force;
+}
+
 
 void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
   if (dt_c_ == 0.0) {
@@ -257,7 +316,7 @@ void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& tim
   // (dt_prev: the step just taken; the coming one is not known while the interfaces vote).
   if (times.dt_prev > 1.05 * dt_c_) dt_c_ = times.dt_prev;
   search(nodes.x);
-  parallel_for(surface_.segment_count(), [&](Index a) { evaluate(a, nodes, false); });
+  parallel_for(surface_.segment_count(), [&](Index a) { evaluate(a, nodes, false, times.dt_prev); });
   scatter(out);
 }
 
@@ -297,6 +356,7 @@ void SegmentContact::scatter(ContactForceView out) {
     else
       slave_ += rec.force;
     w2 = std::max(w2, rec.dt_inv2);
+    friction_work_ += rec.dissipation;
     if (!transmitted_.empty()) add_transmitted(surface_.part[a], surface_.part[static_cast<std::size_t>(rec.other)], rec.force);
   }
   dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "slideline/contact/contact_algorithm.hpp"
+#include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/search/broad_phase.hpp"
 #include "slideline/mesh/surface.hpp"
 
@@ -50,6 +51,9 @@ struct SegmentContactRecord {
   Real stiffness = 0.0;           ///< k_ab (force / length)
   Real dt_inv2 = 0.0;             ///< omega^2 / 4 of this point's spring (1 / time^2)
   int side = 1;                   ///< s: the side of b the point is on (+1 on a solid face)
+  Real normal_force = 0.0;        ///< f_n after the VDC damping (force, >= 0)
+  Vec3 friction = Vec3::Zero();   ///< the tangential (friction) part of `force` (force)
+  Real dissipation = 0.0;         ///< friction work of this point this cycle (energy, >= 0)
 };
 
 class SegmentContact final : public ContactAlgorithm, public ContactForces {
@@ -66,6 +70,11 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   /// 3); `parts` (ascending deck ids) name the "transmitted_force" channels, the force of the
   /// second part of a pair on the first (as Type 12 reports it), for two parts or more.
   void set_single_surface(std::vector<Id> parts);
+  /// Friction (FS, FD, DC: the exponential Coulomb law on a stick spring per Gauss point, k_t =
+  /// the point's normal spring) and VDC (`viscous_damping` = VDC / 100, of critical, on each
+  /// point's normal spring). Before initialize(); never called: frictionless, undamped.
+  void set_friction(const ExponentialCoulomb& law, Real viscous_damping);
+  Real friction_work() const override { return friction_work_; }
 
   const std::string& name() const override { return name_; }
   void initialize(const ContactContext& context) override;
@@ -94,7 +103,9 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
 
  private:
   void search(const Vec3Field& x);
-  void evaluate(Index a, const NodalFields& nodes, bool baseline);
+  void evaluate(Index a, const NodalFields& nodes, bool baseline, Real dt_prev);
+  void add_damping_and_friction(std::size_t g, Index held, SegmentContactRecord& rec, const Vec3& n, const Index* ca,
+                                const Index* cb, Real inv_m, const NodalFields& nodes, Real dt_prev);
   void scatter(ContactForceView out);
   void add_transmitted(Id on, Id from, const Vec3& force);
 
@@ -125,6 +136,12 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   std::vector<Index> memory_of_;      ///< per Gauss point: the shell segment memory_ refers to
   std::vector<Id> parts_;             ///< single surface: the parts (transmitted forces)
   std::vector<Vec3> transmitted_;     ///< per part pair
+  ExponentialCoulomb friction_;
+  bool frictional_ = false;
+  Real viscous_damping_ = 0.0;        ///< VDC / 100
+  std::vector<Vec3> slip_;            ///< per Gauss point: elastic slip from the sticking point (length)
+  std::vector<Index> slip_on_;        ///< per Gauss point: the segment slip_ refers to (-1: none)
+  Real friction_work_ = 0.0;          ///< accumulated (energy)
 };
 
 }  // namespace slideline
