@@ -298,6 +298,34 @@ TEST(SegmentContactSingleSurface, ShellPlatesCollideStopAtTheThicknessAndLeaveRe
     }
 }
 
+// A one-element-thick layer of hexahedra (2 x 1 x 2, h 0.1 < half a face's diagonal 0.35) in a
+// single surface: its top and bottom faces of one element share no node and face each other; they
+// are not a pair (faces of one element never meet), so nothing penetrates at t = 0 and the layer
+// flies free without a contact force.
+TEST(SegmentContactSingleSurface, ThinSolidLayerDoesNotMeetItself) {
+  for (const bool rotated : {false, true}) {
+    const Frame frame = rotated ? test_support::oblique_frame() : Frame{};
+    model::Model m;
+    add_elastic_part(m, 1, kRho, kE, kNu, 10);
+    const BoxIds layer = add_box(m, 1, Vec3(0.0, 0.0, 0.0), Vec3(kL, 0.1, kL), {2, 1, 2}, frame);
+    for (Id id : layer.node) m.initial_velocity_nodes.push_back({id, frame.map(Vec3(0.3, 0.2, 0.1)), Vec3::Zero(), 0, 0});
+    model::Contact card;
+    card.keyword = "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
+    card.type = model::ContactType::automatic;
+    card.sstyp = 5;
+    card.soft = 2;
+    m.contacts.push_back(card);
+    m.termination.endtim = 0.05;
+    test_support::Run run(m);
+    const auto& seg = dynamic_cast<const SegmentContact&>(run.sim->contacts()[0]);
+    EXPECT_EQ(seg.initial_penetration_count(), 0);
+    Real largest = 0.0;
+    while (run.sim->step())
+      for (const SegmentContactRecord& rec : seg.records()) largest = std::max(largest, rec.force.norm());
+    EXPECT_EQ(largest, 0.0);
+  }
+}
+
 // ---- 3. friction and VDC: a shell plate on an incline --------------------------------------
 
 constexpr Real kMu = 0.3, kT1 = 0.15, kRampF = 0.2, kEndF = 0.6;

@@ -2,8 +2,9 @@
 // the parallel threshold of 4096, so the segments are evaluated in parallel chunks), the upper
 // pressed 1e-3 into the lower and sliding, 40 contact evaluations on 1, 2 and 3 threads: every
 // contact force and the step vote bitwise identical. Slow (4 s of CPU in Release, 3 runs). The
-// same for two shell plates of one part (4901 segments) on *CONTACT_AUTOMATIC_SINGLE_SURFACE,
-// pressed 1e-3 into their thickness offsets (side memory and offsets in the parallel loop).
+// same for two shell plates of one part (4901 segments) on *CONTACT_AUTOMATIC_SINGLE_SURFACE with
+// friction and VDC, pressed 1e-3 into their thickness offsets and sliding (side memory, offsets,
+// stick springs in the parallel loop).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -47,7 +48,8 @@ model::Model two_blocks(int n) {
 }
 
 /// Two shell plates of part 1 (thickness 0.1): n x n at y = 0 and (n-1) x (n-1) on it at y = 0.1
-/// (its nodes over no node), one *CONTACT_AUTOMATIC_SINGLE_SURFACE with SOFT = 2 on every part.
+/// (its nodes over no node), one *CONTACT_AUTOMATIC_SINGLE_SURFACE with SOFT = 2 on every part,
+/// FS 0.3, FD 0.2, DC 1, VDC 20.
 model::Model two_plates(int n) {
   model::Model m;
   m.materials.push_back(model::MatElastic{1, 1.0, 1e4, 0.3, "plates", {}});
@@ -74,6 +76,10 @@ model::Model two_plates(int n) {
   c.type = model::ContactType::automatic;
   c.sstyp = 5;
   c.soft = 2;
+  c.fs = 0.3;  // friction and VDC in the parallel loop too
+  c.fd = 0.2;
+  c.dc = 1.0;
+  c.vdc = 20.0;
   m.contacts.push_back(c);
   return m;
 }
@@ -90,7 +96,10 @@ std::uint64_t run_on(int threads, Real& total, bool shells = false) {
   setup.contacts.initialize(ContactContext{nodes, setup.blocks, &setup.sets, rigid});
   const Index first_upper = static_cast<Index>(shells ? (n + 1) * (n + 1) : (n + 1) * 2 * (n + 1));
   const Index count = static_cast<Index>(nodes.size());
-  for (Index i = first_upper; i < count; ++i) nodes.x.y[i] -= 1e-3;
+  for (Index i = first_upper; i < count; ++i) {
+    nodes.x.y[i] -= 1e-3;
+    nodes.v.x[i] = 13.0;  // the slide below, 0.013 per step of 1e-3 (the friction's slip speed)
+  }
   StepTimes t;
   t.dt_prev = t.dt_avg = t.dt_next = t.dt_initial = 1e-3;
   std::uint64_t h = 1469598103934665603ull;
