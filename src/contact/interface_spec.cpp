@@ -213,7 +213,8 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
     const bool single = card.form == model::ContactForm::dyna3d && !card.automatic_general && !card.eroding;
     if (card.type != T::automatic || !(s2s || single))
       throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact, optional card A) is implemented on "
-                                          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and *CONTACT_AUTOMATIC_SINGLE_SURFACE only");
+                                          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and "
+                                          "*CONTACT_AUTOMATIC_SINGLE_SURFACE only");
     if (card.vc != 0.0 || card.penchk != 0 || card.penalty_coupling != 0)
       throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact) with VC (viscous friction), PENCHK or "
                                           "_MORTAR is not implemented");

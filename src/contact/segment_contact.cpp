@@ -246,7 +246,8 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
     rec.shape_a = shape_a;
     rec.shape_b = best_pr.shape;
     rec.side = best_side;
-    rec.force = best_side > 0 ? Vec3(rec.weight * k * d * best_pr.normal) : Vec3(-(rec.weight * k * d) * best_pr.normal);
+    rec.force = best_side > 0 ? Vec3(rec.weight * k * d * best_pr.normal)
+                              : Vec3(-(rec.weight * k * d) * best_pr.normal);
     // The point's spring between a's and b's interpolated points: omega^2 = k_q sum N^2 / m.
     Real inv_m = 0.0;
     for (int i = 0; i < 4; ++i) {
@@ -305,7 +306,6 @@ void SegmentContact::add_damping_and_friction(std::size_t g, Index held, Segment
   rec.force += u.force;
 }
 
-
 void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
   if (dt_c_ == 0.0) {
     if (!(times.dt_initial > 0.0 && std::isfinite(times.dt_initial)))
@@ -324,8 +324,10 @@ void SegmentContact::add_transmitted(Id on, Id from, const Vec3& force) {
   // rec.force acts on a's part (`on`), its opposite on b's (`from`); pair k = (parts_[i], parts_[j]),
   // i < j, holds the force of parts_[j] on parts_[i].
   if (on == from) return;
-  const auto i = static_cast<std::size_t>(std::lower_bound(parts_.begin(), parts_.end(), std::min(on, from)) - parts_.begin());
-  const auto j = static_cast<std::size_t>(std::lower_bound(parts_.begin(), parts_.end(), std::max(on, from)) - parts_.begin());
+  const auto index = [&](Id part) {
+    return static_cast<std::size_t>(std::lower_bound(parts_.begin(), parts_.end(), part) - parts_.begin());
+  };
+  const std::size_t i = index(std::min(on, from)), j = index(std::max(on, from));
   if (j >= parts_.size()) return;
   const std::size_t n = parts_.size();
   const std::size_t k = i * n - i * (i + 1) / 2 + (j - i - 1);
@@ -357,7 +359,8 @@ void SegmentContact::scatter(ContactForceView out) {
       slave_ += rec.force;
     w2 = std::max(w2, rec.dt_inv2);
     friction_work_ += rec.dissipation;
-    if (!transmitted_.empty()) add_transmitted(surface_.part[a], surface_.part[static_cast<std::size_t>(rec.other)], rec.force);
+    if (!transmitted_.empty())
+      add_transmitted(surface_.part[a], surface_.part[static_cast<std::size_t>(rec.other)], rec.force);
   }
   dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }

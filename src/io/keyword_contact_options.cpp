@@ -49,8 +49,8 @@ std::string field_text(const Context* ctx, int line, const model::Contact& c, co
 /// refused by name (file, line, field, value); LCIDAB (an airbag's thickness curve) is refused.
 void read_segment_based_fields(const Context& ctx, const Line& l, const Card& k, model::Contact& c) {
   const bool s2s = c.form == model::ContactForm::automatic_surface_to_surface;
-  const bool single = c.type == ContactType::automatic && c.form == model::ContactForm::dyna3d && !c.automatic_general &&
-                      !c.eroding;
+  const bool single =
+      c.type == ContactType::automatic && c.form == model::ContactForm::dyna3d && !c.automatic_general && !c.eroding;
   if (!(s2s || single) || !penalty_sliding(c))
     throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "SOFT", 2,
                                          "segment-based penalty contact") +

@@ -308,7 +308,8 @@ TEST(SegmentContactSingleSurface, ThinSolidLayerDoesNotMeetItself) {
     model::Model m;
     add_elastic_part(m, 1, kRho, kE, kNu, 10);
     const BoxIds layer = add_box(m, 1, Vec3(0.0, 0.0, 0.0), Vec3(kL, 0.1, kL), {2, 1, 2}, frame);
-    for (Id id : layer.node) m.initial_velocity_nodes.push_back({id, frame.map(Vec3(0.3, 0.2, 0.1)), Vec3::Zero(), 0, 0});
+    const Vec3 v = frame.map(Vec3(0.3, 0.2, 0.1));
+    for (Id id : layer.node) m.initial_velocity_nodes.push_back({id, v, Vec3::Zero(), 0, 0});
     model::Contact card;
     card.keyword = "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
     card.type = model::ContactType::automatic;
@@ -358,7 +359,8 @@ SlideResult slide(Real theta_deg, const Frame& frame) {
   // The normal part of the weight ramped in over [0, 0.05] (curve 1), the part along the plate over
   // [kT1, kT1 + kRampF] (curve 2), once the plate has settled on its springs.
   m.curves.push_back({1, "on", 0, 1.0, 1.0, 0.0, 0.0, 0, {{0.0, 0.0}, {0.05, 1.0}, {100.0, 1.0}}, {}});
-  m.curves.push_back({2, "ramp", 0, 1.0, 1.0, 0.0, 0.0, 0, {{0.0, 0.0}, {kT1, 0.0}, {kT1 + kRampF, 1.0}, {100.0, 1.0}}, {}});
+  m.curves.push_back(
+      {2, "ramp", 0, 1.0, 1.0, 0.0, 0.0, 0, {{0.0, 0.0}, {kT1, 0.0}, {kT1 + kRampF, 1.0}, {100.0, 1.0}}, {}});
   const Vec3 gn = -kG * std::cos(theta) * up, gt = kG * std::sin(theta) * along;
   const Axis axes[3] = {Axis::x, Axis::y, Axis::z};
   for (int k = 0; k < 3; ++k) {
@@ -421,10 +423,10 @@ TEST(SegmentContactFriction, ShellPlateSticksBelowAndSlidesAboveTheFrictionAngle
   for (const bool rotated : {false, true}) {
     const Frame frame = rotated ? test_support::oblique_frame() : Frame{};
     const SlideResult stuck = slide(10.0, frame), slides = slide(20.0, frame);
-    std::printf("%s: 10 deg slide %.3e (stretch %.3e +- %.1e)  20 deg slide %.6e (closed %.6e)  work %.6e (closed %.6e)  "
-                "energy %.1e %.1e\n",
-                rotated ? "rotated" : "aligned", stuck.slide, stuck.stretch, stuck.ringing, slides.slide, slides.closed, slides.work,
-                slides.closed_work, stuck.energy_error, slides.energy_error);
+    std::printf("%s: 10 deg slide %.3e (stretch %.3e +- %.1e)  20 deg slide %.6e (closed %.6e)  work %.6e "
+                "(closed %.6e)  energy %.1e %.1e\n",
+                rotated ? "rotated" : "aligned", stuck.slide, stuck.stretch, stuck.ringing, slides.slide, slides.closed,
+                slides.work, slides.closed_work, stuck.energy_error, slides.energy_error);
     EXPECT_NEAR(stuck.slide, stuck.stretch, stuck.ringing);
     EXPECT_NEAR(slides.slide / slides.closed, 1.0, 5e-3);
     EXPECT_NEAR(slides.work / slides.closed_work, 1.0, 5e-3);

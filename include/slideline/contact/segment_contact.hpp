@@ -22,9 +22,9 @@
 /// m_s = the sum of the lumped masses of segment s's nodes (solid or shell), dt_c the run's initial
 /// step (StepTimes::dt_initial), replaced by the step just taken when that is more than 5 % above it.
 /// Friction (FS, FD, DC) on a stick spring per Gauss point and VDC on each point's normal spring
-/// (set_friction). The search: every cycle, the broad phase's
-/// segment boxes against each segment's bounding sphere box grown by the offsets; forces per
-/// segment in parallel, scattered serially in segment order (thread-count independent).
+/// (set_friction). The search: every cycle, the broad phase's segment boxes against each
+/// segment's bounding sphere box grown by the offsets; forces per segment in parallel, scattered
+/// serially in segment order (thread-count independent).
 /// docs/contact.md, "Segment-based contact (SOFT = 2)".
 #include <array>
 #include <cstdint>

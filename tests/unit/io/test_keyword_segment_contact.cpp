@@ -1,7 +1,8 @@
 // SOFT = 2 (segment-based contact) in the reader: accepted on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
 // and *CONTACT_AUTOMATIC_SINGLE_SURFACE with SBOPT and DEPTH at their defaults (2; 0 and blank mean
 // 2); every other SBOPT, DEPTH, LCIDAB, the SOFT = 2 fields of optional cards D-F, and SOFT = 2 on
-// another card are refused naming file, line, card, field and value. docs/contact.md, "Segment-based contact (SOFT = 2)".
+// another card are refused naming file, line, card, field and value. docs/contact.md,
+// "Segment-based contact (SOFT = 2)".
 #include <gtest/gtest.h>
 
 #include <string>
