@@ -327,6 +327,86 @@ TEST(SegmentContactSingleSurface, ThinSolidLayerDoesNotMeetItself) {
   }
 }
 
+// One connected strip of part 1 folded like a C: two legs of 5 x 1 shells (1 x 0.2, t 0.1) joined
+// at x = 0 by one shell across the gap (mid-surfaces 0.12 apart), the legs' free parts thrown at
+// each other. The joining shell shares nodes with both legs' first shells, which share none with
+// each other: the part meets itself there and along the legs. No closed form for the bending
+// corners; checked: nothing penetrates at t = 0 (the legs' contact surfaces are 0.02 apart), the
+// legs meet and part without passing through each other (their mid-surfaces never closer than
+// half the thickness), momentum stays 0 and the energy balances with the contact term.
+TEST(SegmentContactSingleSurface, FoldedStripMeetsItselfWithoutPassingThrough) {
+  for (const bool rotated : {false, true}) {
+    const Frame frame = rotated ? test_support::oblique_frame() : Frame{};
+    model::Model m;
+    m.materials.push_back(model::MatElastic{1, kRho, kE, kNu, "strip", {}});
+    model::SectionShell sec;
+    sec.secid = 1;
+    sec.t = {kT, kT, kT, kT};
+    m.shell_sections.push_back(sec);
+    m.parts.push_back({1, "strip", 1, 1, 0, 0, {}});
+    const int n = 5;
+    const Real h = kT + kGap, width = 0.2;
+    const auto id = [&](int leg, int i, int k) { return static_cast<Id>(1 + leg * 2 * (n + 1) + i + (n + 1) * k); };
+    for (int leg = 0; leg < 2; ++leg)
+      for (int k = 0; k <= 1; ++k)
+        for (int i = 0; i <= n; ++i)
+          m.nodes.push_back({id(leg, i, k), frame.map(Vec3(kL * i / n, leg * h, width * k)), 0, 0});
+    Id eid = 1;
+    for (int leg = 0; leg < 2; ++leg)
+      for (int i = 0; i < n; ++i)
+        m.shells.push_back({eid++, 1, {id(leg, i, 0), id(leg, i, 1), id(leg, i + 1, 1), id(leg, i + 1, 0)}, {}});
+    m.shells.push_back({eid++, 1, {id(0, 0, 0), id(1, 0, 0), id(1, 0, 1), id(0, 0, 1)}, {}});  // the fold
+    const Vec3 up = frame.map(Vec3::UnitY());
+    std::vector<Id> lower, upper;
+    for (int k = 0; k <= 1; ++k)
+      for (int i = 0; i <= n; ++i) {
+        lower.push_back(id(0, i, k));
+        upper.push_back(id(1, i, k));
+        if (i == 0) continue;
+        const Real v = kV0 * i / n;  // each leg swung about the fold
+        m.initial_velocity_nodes.push_back({id(0, i, k), v * up, Vec3::Zero(), 0, 0});
+        m.initial_velocity_nodes.push_back({id(1, i, k), -v * up, Vec3::Zero(), 0, 0});
+      }
+    model::Contact card;
+    card.keyword = "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
+    card.type = model::ContactType::automatic;
+    card.sstyp = 5;
+    card.sfs = card.sfm = kSfs;
+    card.soft = 2;
+    m.contacts.push_back(card);
+    m.termination.endtim = 0.3;
+    m.timestep.tssfac = 0.9;
+    test_support::Run run(m);
+    const auto& seg = dynamic_cast<const SegmentContact&>(run.sim->contacts()[0]);
+    EXPECT_EQ(seg.initial_penetration_count(), 0);
+    std::vector<Id> all = lower;
+    all.insert(all.end(), upper.begin(), upper.end());
+    Real closest = std::numeric_limits<Real>::max(), momentum = 0.0, largest = 0.0, last = 0.0;
+    Real mass = 0.0;
+    for (Id i : all) mass += run.mass(i);
+    while (run.sim->step()) {
+      for (std::size_t i = 0; i < lower.size(); ++i)
+        closest = std::min(closest, (run.x(upper[i]) - run.x(lower[i])).dot(up));
+      Vec3 p = Vec3::Zero();
+      for (Id i : all) p += run.mass(i) * run.v(i);
+      momentum = std::max(momentum, p.norm() / (mass * kV0));
+      Real f = 0.0;
+      for (const SegmentContactRecord& rec : seg.records()) f += rec.force.norm();
+      largest = std::max(largest, f);
+      last = f;
+    }
+    const Real energy = std::abs(run.sim->energy().relative_balance_error());
+    std::printf("%s: closest mid-surfaces %.5f (t %.2f)  largest contact force %.4e, at the end %.1e  momentum %.1e  "
+                "energy %.1e\n",
+                rotated ? "rotated" : "aligned", closest, kT, largest, last, momentum, energy);
+    EXPECT_GT(largest, 0.0);      // they met
+    EXPECT_EQ(last, 0.0);         // and parted
+    EXPECT_GT(closest, 0.5 * kT); // never through each other's offsets
+    EXPECT_LT(momentum, 1e-12);
+    EXPECT_LT(energy, 1e-3);
+  }
+}
+
 // ---- 3. friction and VDC: a shell plate on an incline --------------------------------------
 
 constexpr Real kMu = 0.3, kT1 = 0.15, kRampF = 0.2, kEndF = 0.6;
