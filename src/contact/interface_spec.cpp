@@ -211,15 +211,18 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   spec.mortar_coupling = card.penalty_coupling == 1;
   // SOFT = 1 and VC: the reader admits them on the penalty sliding interfaces only.
   if (card.soft == 2) {
-    // Segment-based contact (contact/segment_contact.hpp): the two-sided automatic card, penalty,
-    // frictionless and undamped, without the node-based options.
-    if (card.form != model::ContactForm::automatic_surface_to_surface || card.type != T::automatic)
+    // Segment-based contact (contact/segment_contact.hpp): the two-sided automatic card and the
+    // automatic single surface, penalty, with friction (FS, FD, DC) and VDC, without the
+    // node-based options.
+    const bool s2s = card.form == model::ContactForm::automatic_surface_to_surface;
+    const bool single = card.form == model::ContactForm::dyna3d && !card.automatic_general && !card.eroding;
+    if (card.type != T::automatic || !(s2s || single))
       throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact, optional card A) is implemented on "
-                                          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE only");
-    if (spec.frictional() || card.vdc != 0.0 || card.vc != 0.0 || card.penchk != 0 || card.penalty_coupling != 0 ||
-        card.sst != 0.0 || card.mst != 0.0)
-      throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact) with friction (FS, FD), VC, VDC, PENCHK, "
-                                          "_MORTAR or contact thickness (SST, MST) is not implemented");
+                                          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and "
+                                          "*CONTACT_AUTOMATIC_SINGLE_SURFACE only");
+    if (card.vc != 0.0 || card.penchk != 0 || card.penalty_coupling != 0)
+      throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact) with VC (viscous friction), PENCHK or "
+                                          "_MORTAR is not implemented");
     if (card.sfm != card.sfs)
       throw_contact_not_implemented(card, "SOFT = 2 with SFM other than SFS (one stiffness per segment pair: SFS)");
     spec.segment_based = true;

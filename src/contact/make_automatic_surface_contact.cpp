@@ -194,21 +194,36 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
 
 }  // namespace
 
-std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
-  if (spec.segment_based) {  // SOFT = 2 (contact/segment_contact.hpp): solid faces of both sides
-    if (spec.eroding)
-      throw NotImplementedError(spec.where + ": SOFT = 2 (segment-based contact, optional card A) with eroding parts "
-                                             "is not implemented");
-    std::vector<std::uint8_t> sides;
+std::unique_ptr<ContactAlgorithm> make_segment_contact(InterfaceSpec& spec) {
+  if (spec.eroding)
+    throw NotImplementedError(spec.where + ": SOFT = 2 (segment-based contact, optional card A) with eroding parts "
+                                           "is not implemented");
+  std::vector<std::uint8_t> sides;
+  Surface surface;
+  if (spec.single_surface) {  // *CONTACT_AUTOMATIC_SINGLE_SURFACE: every segment on both sides
+    surface = spec.slave.surface;
+    build_surface_adjacency(surface);
+    sides.assign(static_cast<std::size_t>(surface.segment_count()), 3);
+  } else {
     std::vector<Index> from_slave;
-    Surface surface = merge_sides(spec.slave.surface, spec.master.surface, sides, from_slave);
-    for (Index s = 0; s < surface.segment_count(); ++s)
-      if (surface.kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
-        throw NotImplementedError(spec.where + ": SOFT = 2 (segment-based contact, optional card A) on shell segments "
-                                               "is not implemented (no thickness offsets yet); solid faces only");
-    return std::make_unique<SegmentContact>(spec.title, std::move(surface), std::move(sides),
-                                            std::make_unique<FclBroadPhase>(), spec.slave_stiffness);
+    surface = merge_sides(spec.slave.surface, spec.master.surface, sides, from_slave);
   }
+  std::vector<Id> parts = surface.part;  // the single surface's parts: of its segments
+  std::sort(parts.begin(), parts.end());
+  parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+  // Shells: half the contact thickness off the mid-surface, by each side's rule (SST x SFST,
+  // MST x SFMT, else the section's thickness), as the automatic pass offsets them.
+  std::vector<Real> offsets = segment_offsets(surface, sides, spec);
+  auto contact = std::make_unique<SegmentContact>(spec.title, std::move(surface), std::move(sides),
+                                                  std::make_unique<FclBroadPhase>(), spec.slave_stiffness);
+  contact->set_offsets(std::move(offsets));
+  contact->set_friction(spec.friction, spec.viscous_damping);
+  if (spec.single_surface) contact->set_single_surface(std::move(parts));
+  return contact;
+}
+
+std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
+  if (spec.segment_based) return make_segment_contact(spec);
   AutomaticPass a = make_automatic_pass(spec, ctx);
   return make_penalty_interface<AutomaticSurfaceContact>(spec, std::move(a.pass), std::move(a.sides));
 }

@@ -50,6 +50,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
 
 std::unique_ptr<ContactAlgorithm> make_node_and_automatic_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   if (spec.type != model::ContactType::automatic) return make_nodes_to_surface(spec, ctx);
+  if (spec.segment_based && spec.form == model::ContactForm::dyna3d) return make_segment_contact(spec);
   return spec.form == model::ContactForm::dyna3d ? make_automatic(spec) : make_automatic_surface_contact(spec, ctx);
 }
 

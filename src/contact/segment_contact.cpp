@@ -46,6 +46,40 @@ SegmentContact::SegmentContact(std::string title, Surface surface, std::vector<s
     throw Error("SegmentContact: one side mask per segment");
 }
 
+void SegmentContact::set_offsets(std::vector<Real> offsets) {
+  if (offsets.size() != side_.size()) throw Error("SegmentContact: one offset per segment");
+  offset_ = std::move(offsets);
+  max_offset_ = 0.0;
+  for (Real o : offset_) max_offset_ = std::max(max_offset_, o);
+}
+
+void SegmentContact::set_single_surface(std::vector<Id> parts) {
+  parts_ = std::move(parts);
+  const std::size_t n = parts_.size();
+  transmitted_.assign(n >= 2 ? n * (n - 1) / 2 : 0, Vec3::Zero());
+}
+
+void SegmentContact::set_friction(const ExponentialCoulomb& law, Real viscous_damping) {
+  friction_ = law;
+  frictional_ = std::max(law.mu_s, law.mu_k) > 0.0;
+  viscous_damping_ = viscous_damping;
+}
+
+void SegmentContact::append_output_names(std::vector<std::string>& names) const {
+  if (transmitted_.size() == 1) {
+    names.emplace_back("transmitted_force");
+    return;
+  }
+  for (std::size_t a = 0; a < parts_.size(); ++a)
+    for (std::size_t b = a + 1; b < parts_.size(); ++b)
+      names.push_back("transmitted_force/" + std::to_string(parts_[a]) + "_" + std::to_string(parts_[b]));
+}
+
+void SegmentContact::write_output_values(std::span<Real> out) const {
+  for (std::size_t k = 0; k < transmitted_.size(); ++k)
+    for (int c = 0; c < 3; ++c) out[3 * k + static_cast<std::size_t>(c)] = transmitted_[k][c];
+}
+
 void SegmentContact::initialize(const ContactContext& context) {
   const NodalFields& nodes = context.nodes;
   const Index ns = surface_.segment_count();
@@ -68,13 +102,18 @@ void SegmentContact::initialize(const ContactContext& context) {
   first_.assign(n + 1, 0);
   records_.assign(4 * n, SegmentContactRecord{});
   baseline_.assign(4 * n, 0.0);
+  memory_.assign(4 * n, 0);
+  memory_of_.assign(4 * n, -1);
+  slip_.assign(frictional_ ? 4 * n : 0, Vec3::Zero());
+  slip_on_.assign(frictional_ ? 4 * n : 0, -1);
+  friction_work_ = 0.0;
   BroadPhaseOptions o;
   o.margin = 0.0;  // a new search every cycle
   broad_phase_->build(surface_, nodes.x, o);
   candidates_.reserve(16 * n);
   search(nodes.x);
   // LS-DYNA's SOFT = 2 keeps what penetrates at t = 0 as the baseline (no node is moved).
-  for (Index a = 0; a < ns; ++a) evaluate(a, nodes, true);
+  for (Index a = 0; a < ns; ++a) evaluate(a, nodes, true, 0.0);
   initial_count_ = 0;
   initial_max_ = 0.0;
   for (Real d : baseline_)
@@ -98,6 +137,8 @@ void SegmentContact::search(const Vec3Field& x) {
     for (const Vec3& p : c) r = std::max(r, (p - m).norm());
     centroid_.set(s, m);
     normal_.set(s, segment_normal(surface_, s, x));
+    // A shell's contact surface lies o_s off its mid-surface; the other segment's o_b <= max.
+    if (!offset_.empty()) r += offset_[static_cast<std::size_t>(s)] + max_offset_;
     radius_[static_cast<std::size_t>(s)] = r;
   }
   broad_phase_->update(x);
@@ -107,43 +148,86 @@ void SegmentContact::search(const Vec3Field& x) {
   for (std::size_t s = 0; s + 1 < first_.size(); ++s) first_[s + 1] += first_[s];
 }
 
-void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) {
+void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, Real dt_prev) {
   const auto au = static_cast<std::size_t>(a);
   const Index* ca = &surface_.conn[4 * au];
   const SegmentCorners xa = segment_corners(surface_, a, nodes.x);
   const Vec3 na = normal_.get(a);
   Real jac[4], area = 0.0;
   for (int q = 0; q < 4; ++q) area += (jac[q] = jacobian(xa, kXi[q], kEta[q]));
+  const bool a_shell = surface_.kind[au] == SegmentKind::shell;
+  const Real o_a = offset_.empty() ? 0.0 : offset_[au];
   for (int q = 0; q < 4; ++q) {
-    SegmentContactRecord& rec = records_[4 * au + static_cast<std::size_t>(q)];
+    const std::size_t g = 4 * au + static_cast<std::size_t>(q);
+    SegmentContactRecord& rec = records_[g];
     rec = SegmentContactRecord{};
     const std::array<Real, 4> shape_a = detail::bilinear_shape(kXi[q], kEta[q]);
     const Vec3 p = detail::combine(xa, shape_a);
-    // The nearest admitted segment of the other side that the point lies over.
+    // The least-penetrated admitted segment that the point lies over.
     Index best = -1;
     Projection best_pr;
+    Real best_raw = 0.0;
+    int best_side = 1;
     for (Index k = first_[au]; k < first_[au + 1]; ++k) {
       const Index b = candidates_[static_cast<std::size_t>(k)].segment;
       const auto bu = static_cast<std::size_t>(b);
       const bool cross = ((side_[au] & 1) && (side_[bu] & 2)) || ((side_[au] & 2) && (side_[bu] & 1));
       if (!cross || b == a || share_node(ca, &surface_.conn[4 * bu])) continue;
+      // Faces of one element never meet (a one-element-thick layer's top and bottom share no node).
+      if (surface_.element[au] == surface_.element[bu] && surface_.block[au] == surface_.block[bu]) continue;
+      const bool b_shell = surface_.kind[bu] == SegmentKind::shell;
+      const Real nn = na.dot(normal_.get(b));
       // a must face b: normals within 60 deg of opposite. A point of a face that meets b only
       // at b's edge (a side face beside an end face, n_a . n_b ~ 0) would otherwise read the
       // distance to b's plane as a penetration (x_b - x_q = d n_b, so (x_b - x_q) . n_a < -d / 2
-      // is the same test: b's point lies inside a as well).
-      if (!(na.dot(normal_.get(b)) < -0.5)) continue;
+      // is the same test: b's point lies inside a as well). A shell has two sides: within 60 deg
+      // of parallel or opposite, the side checked below once it is known.
+      if (!a_shell && !b_shell) {
+        if (!(nn < -0.5)) continue;
+      } else if (!(std::abs(nn) > 0.5)) {
+        continue;
+      }
       const Projection pr = project_point_to_segment(p, surface_, b, nodes.x);
       const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
-      if (lateral > 1e-3 * pr.size) continue;                              // beside b
-      if (!(pr.gap < 0.0) || -pr.gap > depth_limit_[bu]) continue;          // not into b, or through it
-      if (best < 0 || -pr.gap < -best_pr.gap) {
+      if (lateral > 1e-3 * pr.size) continue;  // beside b
+      Real raw = -pr.gap;
+      int side = 1;
+      if (b_shell || o_a > 0.0) {
+        const Real o = o_a + (offset_.empty() ? 0.0 : offset_[bu]);
+        if (b_shell) {  // the side of b's mid-surface: remembered while within o of it
+          side = pr.gap >= 0.0 ? 1 : -1;
+          if (memory_of_[g] == b && memory_[g] != 0 && std::abs(pr.gap) < o) side = memory_[g];
+          if (!a_shell && !(side * nn < -0.5)) continue;  // a solid face must face b's side
+        } else if (!(pr.gap > -o_a)) {
+          // A shell's mid-surface at most o_a behind a solid face (penetration < 2 o_a, as a solid
+          // face's behind a shell's mid-surface is bounded by the side memory): deeper, the point
+          // would read the far face of a thin solid (its top, seen from a shell under it) as met.
+          continue;
+        }
+        raw = o - side * pr.gap;
+      }
+      if (!(raw > 0.0) || side * pr.gap < -depth_limit_[bu]) continue;  // not into b, or through it
+      if (best < 0 || raw < best_raw) {
         best = b;
         best_pr = pr;
+        best_raw = raw;
+        best_side = side;
       }
     }
+    // The side memory follows the pair; a point in contact with nothing reads its side again.
+    if (best >= 0 && surface_.kind[static_cast<std::size_t>(best)] == SegmentKind::shell) {
+      memory_of_[g] = best;
+      memory_[g] = static_cast<std::int8_t>(best_side);
+    } else {
+      memory_of_[g] = -1;
+      memory_[g] = 0;
+    }
+    // The stick spring's segment: set again below while the point stays in contact.
+    const Index held = frictional_ ? slip_on_[g] : -1;
+    if (frictional_) slip_on_[g] = -1;
     if (best < 0) continue;
-    const Real raw = -best_pr.gap;  // > 0
-    Real& d0 = baseline_[4 * au + static_cast<std::size_t>(q)];
+    const Real raw = best_raw;  // > 0
+    Real& d0 = baseline_[g];
     if (baseline) {
       if (raw > 1e-9 * best_pr.size) d0 = raw;
       continue;
@@ -161,7 +245,9 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) 
     rec.stiffness = k;
     rec.shape_a = shape_a;
     rec.shape_b = best_pr.shape;
-    rec.force = rec.weight * k * d * best_pr.normal;
+    rec.side = best_side;
+    rec.force = best_side > 0 ? Vec3(rec.weight * k * d * best_pr.normal)
+                              : Vec3(-(rec.weight * k * d) * best_pr.normal);
     // The point's spring between a's and b's interpolated points: omega^2 = k_q sum N^2 / m.
     Real inv_m = 0.0;
     for (int i = 0; i < 4; ++i) {
@@ -171,7 +257,53 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline) 
                nodes.mass[static_cast<std::size_t>(cb[i])];
     }
     rec.dt_inv2 = 0.25 * rec.weight * k * inv_m;
+    rec.normal_force = rec.weight * k * d;
+    if (frictional_ || viscous_damping_ > 0.0)
+      add_damping_and_friction(g, held, rec, best_side > 0 ? Vec3(best_pr.normal) : Vec3(-best_pr.normal), ca, cb,
+                               inv_m, nodes, dt_prev);
   }
+}
+
+void SegmentContact::add_damping_and_friction(std::size_t g, Index held, SegmentContactRecord& rec, const Vec3& n,
+                                              const Index* ca, const Index* cb, Real inv_m, const NodalFields& nodes,
+                                              Real dt_prev) {
+  // Relative velocity of a's point against b's (v^{n-1/2}).
+  Vec3 dv = Vec3::Zero();
+  Real inv_a = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    dv += rec.shape_a[iu] * nodes.v.get(ca[i]) - rec.shape_b[iu] * nodes.v.get(cb[i]);
+    inv_a += rec.shape_a[iu] * rec.shape_a[iu] / nodes.mass[static_cast<std::size_t>(ca[i])];
+  }
+  const Real kq = rec.weight * rec.stiffness;  // the point's normal spring (force / length)
+  Real fn = rec.normal_force;
+  if (viscous_damping_ > 0.0) {
+    // LS-DYNA's VDC as on the penalty passes: c = VDC/100 x 2 m omega, omega^2 = k_q (1/m_a + 1/m_b),
+    // m the smaller of the two points' masses (1 / sum N^2 / m); the normal force stays >= 0.
+    const Real inv_b = inv_m - inv_a;
+    const Real m = std::min(1.0 / inv_a, inv_b > 0.0 ? 1.0 / inv_b : 1.0 / inv_a);
+    const Real c = viscous_damping_ * 2.0 * m * std::sqrt(kq * inv_m);
+    fn = std::max(Real(0), fn - c * n.dot(dv));  // n . dv > 0: separating
+    // Central differences with the velocity half a step behind: omega dt <= 2 (sqrt(1 + z^2) - z).
+    const Real zeta = viscous_damping_ * m * inv_m;
+    const Real factor = std::sqrt(1.0 + zeta * zeta) - zeta;
+    rec.dt_inv2 /= factor * factor;
+  }
+  rec.normal_force = fn;
+  rec.force = fn * n;
+  if (!frictional_) return;
+  // Friction: a stick spring k_t = k_q from the sticking point (kept while the point stays in
+  // contact, also as it slides from one segment b onto the next: released there, the friction
+  // would drop for the steps the spring takes to stretch again), the exponential Coulomb law at
+  // the tangential slip speed.
+  const Vec3 vt = tangential_part(dv, n);
+  const Vec3 ue = (held >= 0 ? rotate_into_plane(slip_[g], n) : Vec3(Vec3::Zero())) + dt_prev * vt;
+  const StickSpringUpdate u = stick_spring_update(ue, kq, fn, friction_.coefficient(vt.norm()));
+  if (u.slipping) rec.dissipation = u.force.norm() * (ue.norm() - u.elastic_displacement.norm());
+  slip_[g] = u.elastic_displacement;
+  slip_on_[g] = rec.other;
+  rec.friction = u.force;
+  rec.force += u.force;
 }
 
 void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
@@ -184,12 +316,30 @@ void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& tim
   // (dt_prev: the step just taken; the coming one is not known while the interfaces vote).
   if (times.dt_prev > 1.05 * dt_c_) dt_c_ = times.dt_prev;
   search(nodes.x);
-  parallel_for(surface_.segment_count(), [&](Index a) { evaluate(a, nodes, false); });
+  parallel_for(surface_.segment_count(), [&](Index a) { evaluate(a, nodes, false, times.dt_prev); });
   scatter(out);
+}
+
+void SegmentContact::add_transmitted(Id on, Id from, const Vec3& force) {
+  // rec.force acts on a's part (`on`), its opposite on b's (`from`); pair k = (parts_[i], parts_[j]),
+  // i < j, holds the force of parts_[j] on parts_[i].
+  if (on == from) return;
+  const auto index = [&](Id part) {
+    return static_cast<std::size_t>(std::lower_bound(parts_.begin(), parts_.end(), part) - parts_.begin());
+  };
+  const std::size_t i = index(std::min(on, from)), j = index(std::max(on, from));
+  if (j >= parts_.size()) return;
+  const std::size_t n = parts_.size();
+  const std::size_t k = i * n - i * (i + 1) / 2 + (j - i - 1);
+  if (on < from)
+    transmitted_[k] += force;
+  else
+    transmitted_[k] -= force;
 }
 
 void SegmentContact::scatter(ContactForceView out) {
   slave_ = Vec3::Zero();
+  for (Vec3& t : transmitted_) t.setZero();
   Real w2 = 0.0;
   for (std::size_t r = 0; r < records_.size(); ++r) {
     const SegmentContactRecord& rec = records_[r];
@@ -208,6 +358,9 @@ void SegmentContact::scatter(ContactForceView out) {
     else
       slave_ += rec.force;
     w2 = std::max(w2, rec.dt_inv2);
+    friction_work_ += rec.dissipation;
+    if (!transmitted_.empty())
+      add_transmitted(surface_.part[a], surface_.part[static_cast<std::size_t>(rec.other)], rec.force);
   }
   dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }

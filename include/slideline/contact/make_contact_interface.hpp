@@ -37,6 +37,10 @@ std::unique_ptr<ContactAlgorithm> make_node_and_automatic_contact(InterfaceSpec&
 /// two sides; *CONTACT_AUTOMATIC_NODES_TO_SURFACE and *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE,
 /// the automatic pass of the slave side's nodes on the master side's segments.
 std::unique_ptr<ContactAlgorithm> make_automatic_surface_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
+/// SOFT = 2 (segment-based contact, segment_contact.hpp) on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
+/// (the cross pairs of its two sides) and *CONTACT_AUTOMATIC_SINGLE_SURFACE (every segment against
+/// every other), solid faces and shells (offset by half their contact thickness).
+std::unique_ptr<ContactAlgorithm> make_segment_contact(InterfaceSpec& spec);
 /// Types 8 (nodes spotwelded: failure per node, NFLF/SFLF forces, NEN/MES exponents) and 9
 /// (tied surfaces with failure: failure per slave segment, NFLF/SFLF stresses): penalty factor
 /// SLSFAC x SFS; friction FS, FD, DC after failure.

@@ -8,6 +8,7 @@
 
 #include "slideline/contact/interface_spec.hpp"
 #include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/contact/segment_contact.hpp"
 #include "slideline/mesh/mesh_sets.hpp"
 #include "slideline/contact/shell_offset.hpp"
 #include "slideline/core/error.hpp"
@@ -145,6 +146,33 @@ TEST(InterfaceSpec, MortarCouplingIsRefusedWhereItIsNotBuilt) {
   EXPECT_NE(refusal("sslide9ps", 1, NotImplementedError("")).find("tied, tiebreak or sliding-only"), std::string::npos);
   EXPECT_NE(refusal("sslide5p", 1, NotImplementedError("")).find("node-set slave side (SSTYP 4)"), std::string::npos);
   EXPECT_NE(refusal("sslide3p", 2, InputError("")).find("neither 0 (DYNA3D's rule) nor 1 (mortar)"), std::string::npos);
+}
+
+// SOFT = 2 (segment-based contact): built on the automatic single surface (Type 12 without MSID,
+// here with friction and VDC: a SegmentContact), refused by name with VC, on _GENERAL and on
+// Type 3.
+TEST(InterfaceSpec, SegmentBasedContactRunsOnTheSingleSurfaceAndIsRefusedElsewhere) {
+  model::Model m = scenarios::make_sslide_problem("sslide12p").model;
+  model::Contact& c = m.contacts.front();
+  c.src = {"deck.k", 12};
+  c.soft = 2;
+  c.fs = 0.2;
+  c.vdc = 10.0;
+  const std::unique_ptr<Simulation> sim = build_simulation(m);
+  int segment_based = 0;  // the card set to SOFT = 2, of the problem's interfaces
+  for (std::size_t i = 0; i < sim->contacts().size(); ++i)
+    segment_based += dynamic_cast<const SegmentContact*>(&sim->contacts()[i]) != nullptr;
+  EXPECT_EQ(segment_based, 1);
+  c.vc = 1.0;
+  EXPECT_NE(build_error<NotImplementedError>(m).find("deck.k:12: "), std::string::npos);
+  EXPECT_NE(build_error<NotImplementedError>(m).find("SOFT = 2 (segment-based contact) with VC"), std::string::npos);
+  c.vc = 0.0;
+  c.automatic_general = true;
+  EXPECT_NE(build_error<NotImplementedError>(m).find("*CONTACT_AUTOMATIC_SINGLE_SURFACE only"), std::string::npos);
+  model::Model t3 = scenarios::make_sslide_problem("sslide3p").model;
+  t3.contacts.front().soft = 2;
+  EXPECT_NE(build_error<NotImplementedError>(t3).find("SOFT = 2 (segment-based contact, optional card A)"),
+            std::string::npos);
 }
 
 // *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK on shell segments (the tie has no thickness

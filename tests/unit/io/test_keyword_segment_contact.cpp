@@ -1,7 +1,8 @@
 // SOFT = 2 (segment-based contact) in the reader: accepted on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
-// with SBOPT and DEPTH at their defaults (2; 0 and blank mean 2); every other SBOPT, DEPTH, LCIDAB,
-// the SOFT = 2 fields of optional cards D-F, and SOFT = 2 on another card are refused naming file,
-// line, card, field and value. docs/contact.md, "Segment-based contact (SOFT = 2)".
+// and *CONTACT_AUTOMATIC_SINGLE_SURFACE with SBOPT and DEPTH at their defaults (2; 0 and blank mean
+// 2); every other SBOPT, DEPTH, LCIDAB, the SOFT = 2 fields of optional cards D-F, and SOFT = 2 on
+// another card are refused naming file, line, card, field and value. docs/contact.md,
+// "Segment-based contact (SOFT = 2)".
 #include <gtest/gtest.h>
 
 #include <string>
@@ -45,6 +46,9 @@ TEST(KeywordSegmentContact, SoftTwoIsReadWithItsDefaultOptions) {
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_EQ(m.contacts[0].soft, 2) << a;
   }
+  const model::Model m = read_keyword_string(deck(card({"2"}), "", "AUTOMATIC_SINGLE_SURFACE"), "u.k", nullptr);
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_EQ(m.contacts[0].soft, 2);
 }
 
 TEST(KeywordSegmentContact, OtherOptionsAndCardsAreRefusedNamingFileLineFieldAndValue) {
@@ -64,7 +68,8 @@ TEST(KeywordSegmentContact, OtherOptionsAndCardsAreRefusedNamingFileLineFieldAnd
       {deck(card({"2"}), blank + blank + card({"1"})), "u.k:9: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card D: field Q2TRI = 1"},
       {deck(card({"2"}), blank + blank + blank + card({"", "", "", "", "0.5"})), "optional card E: field FRICSF = 0.5"},
       {deck(card({"2"}), "", "SURFACE_TO_SURFACE"), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
-      {deck(card({"2"}), "", "AUTOMATIC_SINGLE_SURFACE"), "optional card A: field SOFT = 2"},
+      {deck(card({"2"}), "", "AUTOMATIC_GENERAL"), "u.k:6: *CONTACT_AUTOMATIC_GENERAL optional card A: field SOFT = 2"},
+      {deck(card({"2", "", "", "", "1"}), "", "AUTOMATIC_SINGLE_SURFACE"), "u.k:6: *CONTACT_AUTOMATIC_SINGLE_SURFACE optional card A: field SBOPT = 1"},
   };
   for (const Case& c : cases) {
     const std::string msg = refusal(c.deck);
