@@ -29,6 +29,9 @@ class HexBlock final : public ElementBlock {
  public:
   /// The law's state of one batch of kLanes elements.
   using State = typename Material::template State<Lanes>;
+  /// Whether the law's state carries each element's sound speed (a null solid's EOS): the bulk
+  /// viscosity and the step then read it instead of the law's constant wave speed.
+  static constexpr bool kStateSpeed = requires(const State& s) { s.sound_speed; };
 
   /// `damping.beta` > 0 adds the stiffness-proportional damping stress
   /// beta (lambda tr(D) I + 2 mu D) with the material's small-strain Lame constants.
@@ -280,6 +283,7 @@ class HexBlock final : public ElementBlock {
     Tensor3<Lanes> sigma;
     Tensor3<Lanes> law;  ///< the law's stress alone: set only when an erosion criterion reads it
     Lanes visc, damp, qdt, len;
+    Lanes c;  ///< the elements' sound speeds: set only when the law's state has them (kStateSpeed)
   };
 
   /// Nodal forces of a batch (residual form), hourglass power, sum of the force components (to
@@ -350,11 +354,13 @@ class HexBlock final : public ElementBlock {
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
       const Real q = st.qdt[l];
-      Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c * c)) : 0.0;
+      const Real c_l = kStateSpeed ? st.c[l] : c;
+      Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c_l * c_l)) : 0.0;
       if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
       const SymTensor6 law = needs_stress_ ? sym6(st.law, l) : SymTensor6{};
       const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e,
-                                              crit.needs_strain() ? solid_erosion::log_strains(F, l) : std::array<Real, 3>{});
+                                              crit.needs_strain() ? solid_erosion::log_strains(F, l) : std::array<Real, 3>{}) ||
+                         solid_erosion::volume_fails(crit, bt.vol[l] / volume0_[static_cast<std::size_t>(e0 + l)]);
       if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
@@ -396,11 +402,24 @@ class HexBlock final : public ElementBlock {
     const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
     const LaneMask compressing = trd < 0.0;
     const Lanes rho = kc.rho0 * vol0 * bt.inv_vol;
-    const Lanes q = compressing.select(
-        rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * kc.c * trd), 0.0);
+    Lanes q;
+    if constexpr (kStateSpeed) {  // the element's own sound speed, from its state after the update
+      State& state = state_[e0 / kLanes];
+      st.c = state.sound_speed;
+      q = compressing.select(rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * st.c * trd), 0.0);
+      // The viscous deviatoric stress 2 MU D' damps the dilatational mode as stiffness damping of
+      // beta (lambda + 2 mu) = 4/3 MU would: the step's viscous term gains 4/3 MU / (rho len).
+      st.qdt = compressing.select(bulk_.linear * st.c + bulk_.quadratic * len * (-trd), 0.0) +
+               (4.0 / 3.0 * mat_.viscosity()) / (rho * len);
+      // The shock heating: the bulk viscosity's work per unit reference volume, -q dJ = -q J trD dt,
+      // goes into the EOS's internal energy (its ledger entry stays the bulk-viscosity energy).
+      state.e -= q * (bt.vol / vol0) * trd * dt_law;
+    } else {
+      q = compressing.select(rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * kc.c * trd), 0.0);
+      st.qdt = compressing.select(bulk_.linear * kc.c + bulk_.quadratic * len * (-trd), 0.0);
+    }
     for (int i = 0; i < 3; ++i) st.sigma[i][i] -= q;
     st.visc = -q * trd * bt.vol;
-    st.qdt = compressing.select(bulk_.linear * kc.c + bulk_.quadratic * len * (-trd), 0.0);
     st.damp = Lanes::Zero();
     if constexpr (damped) add_damping(st, d, trd, bt.vol, kc);
     return st;
@@ -520,7 +539,11 @@ class HexBlock final : public ElementBlock {
   template <bool damped>
   static void accumulate(ChunkSums& s, const Batch& bt, BatchStress& st, BatchForces& f, Index e0,
                          int valid, Real c, const Real* step_factor, Real* raw_steps) {
-    Lanes dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
+    Lanes dt;
+    if constexpr (kStateSpeed)
+      dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + st.c * st.c));
+    else
+      dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
     if (raw_steps) Lanes::Map(raw_steps + e0) = dt;  // mass scaling every cycle (enable_mass_rescaling)
     if (step_factor) dt *= Lanes::Map(step_factor + e0);  // mass scaling (scale_element_masses)
     const LaneMask failed = !(bt.vol > 0.0) || !f.fsum.isFinite();

@@ -33,6 +33,9 @@ void check_element_by_element(const ErosionCriteria& k, Id part_id, const char* 
   const std::string part = "part " + std::to_string(part_id);
   if constexpr (!requires(const State& s) { s.eps; })
     if (k.plastic_strain > 0.0) throw NotImplementedError(part + ": a failure strain needs a plastic law");
+  if (k.max_relative_volume > 0.0 || k.min_relative_volume > 0.0)
+    throw NotImplementedError(part + ": TEROD / CEROD of *MAT_NULL on " + form +
+                              " are not implemented (one-point hexahedra have them)");
   if (k.has_thresholds())
     throw NotImplementedError(part + ": the criteria of *MAT_ADD_EROSION on " + form +
                               " are not implemented (one-point hexahedra and Belytschko-Tsay shells have them)");
@@ -57,6 +60,13 @@ inline bool fails(const ErosionCriteria& k, Real eps, const SymTensor6& law, Rea
   if (k.plastic_strain > 0.0 && eps >= k.plastic_strain) return true;
   if (k.has_thresholds() && k.point_fails(law, t, e)) return true;
   return k.min_step > 0.0 && dt_e < k.min_step;
+}
+
+/// Whether an element of relative volume `j` = V/V0 goes by TEROD / CEROD of *MAT_NULL
+/// (ErosionCriteria::max_relative_volume, min_relative_volume; 0: not used).
+inline bool volume_fails(const ErosionCriteria& k, Real j) {
+  return (k.max_relative_volume > 0.0 && j > k.max_relative_volume) ||
+         (k.min_relative_volume > 0.0 && j < k.min_relative_volume);
 }
 
 }  // namespace slideline::solid_erosion
