@@ -60,7 +60,7 @@ TEST(KeywordEos, CardsReadAndRoundTrip) {
   EXPECT_EQ(nl.terod, 2.0);
   EXPECT_EQ(nl.cerod, 0.2);
   const auto again = read_keyword_string(write_keyword_string(m), "again.k", nullptr);
-  EXPECT_EQ(model_difference(m, again), "");
+  EXPECT_EQ(test::model_difference(m, again), "");
   // The registry makes the null solid of each EOS (the part's EOSID picks it).
   for (const auto& eos : m.eos) {
     const MaterialLaws laws = material_laws(m.materials.at(0), {}, &eos);
