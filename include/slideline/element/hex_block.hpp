@@ -14,6 +14,7 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/solid_erosion.hpp"
+#include "slideline/element/state_speed.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/hex_hourglass_stiffness.hpp"
@@ -107,7 +108,9 @@ class HexBlock final : public ElementBlock {
       const Tensor3<Lanes> F = inverse(inverse_deformation_gradient(bt));
       const State& held = state_[e0 / kLanes];
       State copy = held;
-      const Tensor3<Lanes> sigma = mat_.update(copy, F, no_rate, 0.0);
+      Tensor3<Lanes> sigma;
+      if constexpr (kStateSpeed) sigma = mat_.update_volume(copy, Lanes(bt.vol / Lanes::Map(volume0_.data() + e0)), no_rate, 0.0);
+      else sigma = mat_.update(copy, F, no_rate, 0.0);
       Lanes w = Lanes::Zero();
       if constexpr (requires { { mat_.energy_density(F) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(F);
       else if constexpr (requires { { mat_.energy_density(held) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(held);
@@ -282,8 +285,7 @@ class HexBlock final : public ElementBlock {
   struct BatchStress {
     Tensor3<Lanes> sigma;
     Tensor3<Lanes> law;  ///< the law's stress alone: set only when an erosion criterion reads it
-    Lanes visc, damp, qdt, len;
-    Lanes c;  ///< the elements' sound speeds: set only when the law's state has them (kStateSpeed)
+    Lanes visc, damp, qdt, len, c;  ///< c: the elements' sound speeds, set when kStateSpeed
   };
 
   /// Nodal forces of a batch (residual form), hourglass power, sum of the force components (to
@@ -316,7 +318,7 @@ class HexBlock final : public ElementBlock {
       bt.y0[k] = gather_lanes(nodes.x0.y.data(), ik);
       bt.z0[k] = gather_lanes(nodes.x0.z.data(), ik);
     }
-    if (erosion_.active()) freeze_deleted(bt, e0);
+    if (erosion_.active()) solid_erosion::freeze_deleted(bt, e0, erosion_, element_count());
     hex8::volume_gradient(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz);
     bt.vol = Lanes::Zero();
     for (int k = 0; k < 8; ++k) bt.vol += bt.x[k] * bt.bx[k] + bt.y[k] * bt.by[k] + bt.z[k] * bt.bz[k];
@@ -326,20 +328,6 @@ class HexBlock final : public ElementBlock {
       bt.bx[k] *= bt.inv_vol;
       bt.by[k] *= bt.inv_vol;
       bt.bz[k] *= bt.inv_vol;
-    }
-  }
-
-  /// A deleted element is evaluated at its reference geometry at rest (its forces are discarded):
-  /// its nodes may have gone anywhere since, and an inverted deleted element must not stop the run.
-  void freeze_deleted(Batch& bt, Index e0) const {
-    for (int l = 0; l < kLanes; ++l) {
-      if (!erosion_.deleted(std::min(e0 + l, element_count() - 1))) continue;  // spare lanes: the last element
-      for (int k = 0; k < 8; ++k) {
-        bt.x[k][l] = bt.x0[k][l];
-        bt.y[k][l] = bt.y0[k][l];
-        bt.z[k][l] = bt.z0[k][l];
-        bt.vx[k][l] = bt.vy[k][l] = bt.vz[k][l] = 0.0;
-      }
     }
   }
 
@@ -393,7 +381,10 @@ class HexBlock final : public ElementBlock {
   BatchStress batch_stress(const Batch& bt, Index e0, Real dt_law, const KernelConstants& kc) {
     const Tensor3<Lanes> d = hex8::rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
     BatchStress st;
-    st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
+    if constexpr (kStateSpeed)  // an EOS reads the element's volume ratio
+      st.sigma = mat_.update_volume(state_[e0 / kLanes], Lanes(bt.vol / Lanes::Map(volume0_.data() + e0)), d, dt_law);
+    else
+      st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
     if (needs_stress_) st.law = st.sigma;  // the law's stress, for *MAT_ADD_EROSION's thresholds
     Lanes trd = Lanes::Zero();
     for (int k = 0; k < 8; ++k) trd += bt.vx[k] * bt.bx[k] + bt.vy[k] * bt.by[k] + bt.vz[k] * bt.bz[k];
@@ -403,17 +394,8 @@ class HexBlock final : public ElementBlock {
     const LaneMask compressing = trd < 0.0;
     const Lanes rho = kc.rho0 * vol0 * bt.inv_vol;
     Lanes q;
-    if constexpr (kStateSpeed) {  // the element's own sound speed, from its state after the update
-      State& state = state_[e0 / kLanes];
-      st.c = state.sound_speed;
-      q = compressing.select(rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * st.c * trd), 0.0);
-      // The viscous deviatoric stress 2 MU D' damps the dilatational mode as stiffness damping of
-      // beta (lambda + 2 mu) = 4/3 MU would: the step's viscous term gains 4/3 MU / (rho len).
-      st.qdt = compressing.select(bulk_.linear * st.c + bulk_.quadratic * len * (-trd), 0.0) +
-               (4.0 / 3.0 * mat_.viscosity()) / (rho * len);
-      // The shock heating: the bulk viscosity's work per unit reference volume, -q dJ = -q J trD dt,
-      // goes into the EOS's internal energy (its ledger entry stays the bulk-viscosity energy).
-      state.e -= q * (bt.vol / vol0) * trd * dt_law;
+    if constexpr (kStateSpeed) {  // the elements' own sound speeds (state_speed.hpp)
+      q = state_speed::bulk_viscosity(state_[e0 / kLanes], mat_.viscosity(), bulk_, rho, len, trd, compressing, bt.vol / vol0, dt_law, st.qdt, st.c);
     } else {
       q = compressing.select(rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * kc.c * trd), 0.0);
       st.qdt = compressing.select(bulk_.linear * kc.c + bulk_.quadratic * len * (-trd), 0.0);
@@ -540,10 +522,8 @@ class HexBlock final : public ElementBlock {
   static void accumulate(ChunkSums& s, const Batch& bt, BatchStress& st, BatchForces& f, Index e0,
                          int valid, Real c, const Real* step_factor, Real* raw_steps) {
     Lanes dt;
-    if constexpr (kStateSpeed)
-      dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + st.c * st.c));
-    else
-      dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
+    if constexpr (kStateSpeed) dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + st.c * st.c));
+    else dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
     if (raw_steps) Lanes::Map(raw_steps + e0) = dt;  // mass scaling every cycle (enable_mass_rescaling)
     if (step_factor) dt *= Lanes::Map(step_factor + e0);  // mass scaling (scale_element_masses)
     const LaneMask failed = !(bt.vol > 0.0) || !f.fsum.isFinite();

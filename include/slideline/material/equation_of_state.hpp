@@ -85,10 +85,12 @@ class EquationOfState {
       }
       case Kind::tabulated: {
         // eps = ln(V/V0), the table descending: the segment [EV(i+1), EV(i)] holding eps, the end
-        // segments extended beyond the table (linear extrapolation).
+        // segments extended beyond the table (linear extrapolation). At a point the segment on its
+        // compression side: the reference state's slope (eps = 0 is usually a point) is then the
+        // compressive one (the tension side is mostly cut by PC).
         const Real eps = std::log(j);
         std::size_t i = 0;
-        while (i < 8 && eps < ev_[i + 1]) ++i;
+        while (i < 8 && eps <= ev_[i + 1]) ++i;
         const Real h = ev_[i + 1] - ev_[i];
         const Real w = (eps - ev_[i]) / h;
         const Real gamma = k_[0];

@@ -71,9 +71,17 @@ class NullSolid {
     return s.e + eos_.initial_energy();
   }
 
+  /// SolidMaterial::update: the relative volume J = det F.
   template <class T>
   Tensor3<T> update(State<T>& s, const Tensor3<T>& F, const Tensor3<T>& D, Real dt) const {
-    const T j = determinant(F);
+    return update_volume(s, determinant(F), D, dt);
+  }
+
+  /// The update at relative volume `j` = V/V0: the one-point hexahedron hands its volume ratio
+  /// (exact for any shape) rather than det F of its centroid's gradient, which departs from it in
+  /// an element with hourglass deformation (hex_block.hpp).
+  template <class T>
+  Tensor3<T> update_volume(State<T>& s, const T& j, const Tensor3<T>& D, Real dt) const {
     const T mean = (D[0][0] + D[1][1] + D[2][2]) / 3.0;
     Tensor3<T> sigma;
     T power = lane_math::zero<T>();

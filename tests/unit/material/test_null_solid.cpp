@@ -158,9 +158,15 @@ TEST(NullSolid, TabulatedInterpolatesInLogVolumeAndExtrapolates) {
   const Real gamma = 0.5, e0 = 3.0;
   const NullSolid law(kRho, kNoCutoff, 0.0, EquationOfState::tabulated(ev, cc, tt, gamma, e0));
   EXPECT_TRUE(law.eos().problem().empty());
+  // The reference state sits on EV2 = 0: its slopes are the compression side's, dC/d eps = 20 / -0.05
+  // and dT/d eps = 0.1 / -0.05, so dA/dmu = 400, dB/dmu = GAMA 2 = 1 (d eps / d mu = -1 at J = 1);
+  // c0^2 = (dA/dmu + dB/dmu E0 + B p0) / rho0 with B = GAMA T = 0.5, p0 = B E0 = 1.5.
+  const Real p0 = gamma * 1.0 * e0;
+  EXPECT_DOUBLE_EQ(law.reference_pressure(), p0);
+  EXPECT_NEAR(law.wave_speed() * law.wave_speed(), (400.0 + 1.0 * e0 + gamma * p0) / kRho, 1e-9 * 400.0 / kRho);
   const auto table = [&](Real eps, const std::array<Real, 10>& y) {
     std::size_t i = 0;
-    while (i < 8 && eps < ev[i + 1]) ++i;
+    while (i < 8 && eps <= ev[i + 1]) ++i;
     return y[i] + (eps - ev[i]) * (y[i + 1] - y[i]) / (ev[i + 1] - ev[i]);
   };
   // Inside the table (ln 0.9 = -0.10536: between EV4 = -0.1 and EV5 = -0.15), beyond EV10 and
