@@ -2,9 +2,11 @@
 // the one place TetBlock<law> and FullHexBlock<law> are instantiated for build_simulation, once
 // per alternative of SolidLaw.
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <variant>
 
+#include "slideline/core/error.hpp"
 #include "slideline/element/block_factory.hpp"
 #include "slideline/element/full_hex_block.hpp"
 #include "slideline/element/tet_block.hpp"
@@ -19,8 +21,15 @@ std::unique_ptr<ElementBlock> make_for_law(Id part_id, const SolidLaw& material,
                                            StiffnessDamping damping) {
   return std::visit(
       [&](const auto& law) -> std::unique_ptr<ElementBlock> {
-        return std::make_unique<Block<std::decay_t<decltype(law)>>>(part_id, law, bulk, std::move(connectivity),
-                                                                    std::move(element_ids), damping);
+        using Law = std::decay_t<decltype(law)>;
+        // A null solid's step reads its state's sound speed, which only the one-point hexahedron
+        // does (validate_parts refuses the other forms first, by name).
+        if constexpr (std::is_same_v<Law, NullSolid>)
+          throw NotImplementedError("part " + std::to_string(part_id) +
+                                    ": *MAT_NULL solids run as one-point hexahedra (ELFORM 1) only");
+        else
+          return std::make_unique<Block<Law>>(part_id, law, bulk, std::move(connectivity), std::move(element_ids),
+                                              damping);
       },
       material);
 }

@@ -259,6 +259,10 @@ void read_mat_rigid(const Context& ctx, Block& block, model::Model& model, bool 
 void read_mat_plastic_kinematic(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_piecewise_linear(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_mat_null(const Context& ctx, Block& block, model::Model& model, bool titled);
+/// *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN, *EOS_TABULATED (keyword_eos.cpp).
+void read_eos_linear_polynomial(const Context& ctx, Block& block, model::Model& model);
+void read_eos_gruneisen(const Context& ctx, Block& block, model::Model& model);
+void read_eos_tabulated(const Context& ctx, Block& block, model::Model& model);
 /// *MAT_ADD_EROSION (keyword_add_erosion.cpp).
 void read_mat_add_erosion(const Context& ctx, Block& block, model::Model& model, bool titled);
 void read_hourglass(const Context& ctx, Block& block, model::Model& model, bool titled);

@@ -104,15 +104,12 @@ void read_mat_null(const Context& ctx, Block& b, Model& m, bool titled) {
   read_material<model::MatNull>(ctx, b, m, titled, [&](const Card& c, model::MatNull& mat) {
     c.get(0, "MID", mat.mid);
     c.get(1, "RO", mat.ro);
-    // PC (pressure cutoff), MU (viscosity), TEROD / CEROD (erosion) act through an equation of
-    // state, which no part here has (a solid of *MAT_NULL is refused; a null shell has no stress).
-    for (auto [i, name] : {std::pair{2, "PC"}, std::pair{3, "MU"}, std::pair{4, "TEROD"}, std::pair{5, "CEROD"}}) {
-      Real v = 0.0;
-      c.get(i, name, v);
-      if (v != 0.0)
-        throw NotImplementedError(ctx.where(c.line()) + b.keyword + ": field " + name +
-                                  " is not implemented (it needs an equation of state); leave it blank");
-    }
+    // PC, MU, TEROD, CEROD act on solids (with an equation of state), YM and PR on shells:
+    // validate_parts refuses each on the other kind.
+    c.get(2, "PC", mat.pc);
+    c.get(3, "MU", mat.mu);
+    c.get(4, "TEROD", mat.terod);
+    c.get(5, "CEROD", mat.cerod);
     c.get(6, "YM", mat.ym);
     c.get(7, "PR", mat.pr);
   });

@@ -162,7 +162,7 @@ void write_materials(const model::Model& m, std::string& o) {
                    [&](const model::MatNull& nl) {
                      o += nl.title.empty() ? "*MAT_NULL\n" : "*MAT_NULL_TITLE\n" + heading(nl.title);
                      o += "$#     MID        RO        PC        MU     TEROD     CEROD        YM        PR\n";
-                     o += CardOut().i(nl.mid).r(nl.ro).blank().blank().blank().blank().r(nl.ym).r(nl.pr).str();
+                     o += CardOut().i(nl.mid).r(nl.ro).r(nl.pc).r(nl.mu).r(nl.terod).r(nl.cerod).r(nl.ym).r(nl.pr).str();
                    },
                    [&](const model::MatRigid& rg) {
                      o += rg.title.empty() ? "*MAT_RIGID\n" : "*MAT_RIGID_TITLE\n" + heading(rg.title);
@@ -183,6 +183,34 @@ void write_materials(const model::Model& m, std::string& o) {
     o += CardOut().r(th(a.mnpres)).r(th(a.sigp1)).r(th(a.sigvm)).r(th(a.mxeps)).r(th(a.epssh)).r(a.excl).r(a.excl)
              .r(th(a.failtm)).str();
   }
+  // Equations of state (the parts' EOSID).
+  static constexpr int kTableCard[] = {16, 16, 16, 16, 16};
+  for (const auto& eos : m.eos)
+    std::visit(Overloaded{
+                   [&](const model::EosLinearPolynomial& e) {
+                     o += "*EOS_LINEAR_POLYNOMIAL\n$#   EOSID        C0        C1        C2        C3        C4        C5        C6\n";
+                     CardOut c;
+                     c.i(e.eosid);
+                     for (Real v : e.c) c.r(v);
+                     o += c.str() + "$#      E0        V0\n" + CardOut().r(e.e0).r(e.v0).str();
+                   },
+                   [&](const model::EosGruneisen& e) {
+                     o += "*EOS_GRUNEISEN\n$#   EOSID         C        S1        S2        S3     GAMAO         A        E0\n";
+                     o += CardOut().i(e.eosid).r(e.c).r(e.s1).r(e.s2).r(e.s3).r(e.gamma0).r(e.a).r(e.e0).str();
+                     o += "$#      V0\n" + CardOut().r(e.v0).str();
+                   },
+                   [&](const model::EosTabulated& e) {
+                     o += "*EOS_TABULATED\n$#   EOSID      GAMA        E0        V0\n";
+                     o += CardOut().i(e.eosid).r(e.gama).r(e.e0).r(e.v0).str();
+                     for (const auto* t : {&e.ev, &e.c, &e.t})
+                       for (int half = 0; half < 2; ++half) {
+                         CardOut c(kTableCard);
+                         for (int k = 0; k < 5; ++k) c.r((*t)[static_cast<std::size_t>(5 * half + k)]);
+                         o += c.str();
+                       }
+                   },
+               },
+               eos);
 }
 
 /// The card's row of the contact keyword table.

@@ -131,7 +131,11 @@ struct Builder {
       }
 
       // Stiffness damping has nothing to act on in a rigid part: build_rigid_part does not take it.
-      const MaterialLaws laws = material_laws(*mit->second, m.curves);
+      const model::Eos* eos = part.eosid != 0 ? model::find_eos(m.eos, part.eosid) : nullptr;
+      if (part.eosid != 0 && !eos)
+        throw InputError(describe(part.src) + ": *PART " + std::to_string(pid) + " refers to undefined equation of state " +
+                         std::to_string(part.eosid));
+      const MaterialLaws laws = material_laws(*mit->second, m.curves, eos);
       const std::size_t first_block = setup.blocks.size();
       const auto dit = damped.find(pid);
       const StiffnessDamping damping = dit == damped.end() ? StiffnessDamping{} : dit->second;

@@ -52,7 +52,7 @@ class References {
  private:
   const model::Model& m_;
   Checker ck_;
-  IdSet nodes_, parts_, sections_, materials_, hourglasses_, node_sets_, segment_sets_, part_sets_, curves_, boxes_;
+  IdSet nodes_, parts_, sections_, materials_, eos_, hourglasses_, node_sets_, segment_sets_, part_sets_, curves_, boxes_;
 
   /// Every id each card kind defines; duplicates reported.
   void collect_ids() {
@@ -68,6 +68,11 @@ class References {
       const Id mid = model::material_id(mat);
       const auto src = std::visit([](const auto& mm) { return mm.src; }, mat);
       if (!materials_.insert(mid).second) ck_.add(src, "material " + std::to_string(mid) + " is defined more than once");
+    }
+    for (const auto& e : m_.eos) {
+      const auto src = std::visit([](const auto& x) { return x.src; }, e);
+      if (!eos_.insert(model::eos_id(e)).second)
+        ck_.add(src, "equation of state " + std::to_string(model::eos_id(e)) + " is defined more than once");
     }
     hourglasses_ = ck_.collect(m_.hourglasses, "hourglass", [](const auto& h) { return h.hgid; }, [](const auto& h) { return h.src; });
     node_sets_ = ck_.collect(m_.node_sets, "node set", [](const auto& s) { return s.sid; }, [](const auto& s) { return s.src; });
@@ -124,7 +129,8 @@ class References {
         ck_.add(p.src, who + " refers to undefined material " + std::to_string(p.mid));
       if (p.hgid != 0 && !hourglasses_.count(p.hgid) && !dropped(p.src, part, "hourglass", p.hgid))
         ck_.add(p.src, who + " refers to undefined hourglass " + std::to_string(p.hgid));
-      if (p.eosid != 0) dropped(p.src, part, "equation of state", p.eosid);
+      if (p.eosid != 0 && !eos_.count(p.eosid) && !dropped(p.src, part, "equation of state", p.eosid))
+        ck_.add(p.src, who + " refers to undefined equation of state " + std::to_string(p.eosid));
     }
     for (const auto& s : m_.node_sets)
       for (Id n : s.nodes)

@@ -30,6 +30,8 @@ ErosionCriteria erosion_criteria(const MaterialLaws& laws, const model::MatAddEr
   ErosionCriteria k;
   k.plastic_strain = laws.failure_strain;
   k.min_step = laws.min_step;
+  k.max_relative_volume = laws.max_relative_volume;
+  k.min_relative_volume = laws.min_relative_volume;
   if (!add) return k;
   const auto set = [](ErosionCriteria::Threshold& t, const std::optional<Real>& v) {
     t.on = v.has_value();
@@ -56,6 +58,12 @@ std::string erosion_description(const MaterialLaws& laws, const model::MatAddEro
     s += std::string(laws.failure_field) + " = " + std::to_string(laws.failure_strain) + " of " + laws.keyword;
   if (laws.min_step > 0.0)
     s += (s.empty() ? "" : ", ") + std::string("TDEL = ") + std::to_string(laws.min_step) + " of " + laws.keyword;
+  if (laws.max_relative_volume > 0.0)
+    s += (s.empty() ? "" : ", ") + std::string("TEROD = ") + std::to_string(laws.max_relative_volume) + " of " +
+         laws.keyword;
+  if (laws.min_relative_volume > 0.0)
+    s += (s.empty() ? "" : ", ") + std::string("CEROD = ") + std::to_string(laws.min_relative_volume) + " of " +
+         laws.keyword;
   if (add) s += (s.empty() ? "" : ", ") + std::string("*MAT_ADD_EROSION (") + describe(add->src) + ")";
   return s;
 }

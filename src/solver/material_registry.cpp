@@ -38,7 +38,20 @@ PiecewisePlasticity piecewise_law(const model::MatPiecewiseLinearPlasticity& m, 
 
 }  // namespace
 
-MaterialLaws material_laws(const model::Material& material, std::span<const model::Curve> curves) {
+EquationOfState equation_of_state(const model::Eos& eos, Real rho0) {
+  return std::visit(
+      Overloaded{
+          [](const model::EosLinearPolynomial& e) { return EquationOfState::linear_polynomial(e.c, e.e0); },
+          [&](const model::EosGruneisen& e) {
+            return EquationOfState::gruneisen(rho0, e.c, e.s1, e.s2, e.s3, e.gamma0, e.a, e.e0);
+          },
+          [](const model::EosTabulated& e) { return EquationOfState::tabulated(e.ev, e.c, e.t, e.gama, e.e0); },
+      },
+      eos);
+}
+
+MaterialLaws material_laws(const model::Material& material, std::span<const model::Curve> curves,
+                           const model::Eos* eos) {
   return std::visit(
       Overloaded{
           [](const model::MatElastic& m) {
@@ -60,8 +73,12 @@ MaterialLaws material_laws(const model::Material& material, std::span<const mode
             return MaterialLaws{std::move(law), std::move(shell), false, "*MAT_PIECEWISE_LINEAR_PLASTICITY", m.fail,
                                 "FAIL", m.tdel};
           },
-          [](const model::MatNull& m) {
-            return MaterialLaws{std::nullopt, NullShell(m.ro, m.ym, m.pr), false, "*MAT_NULL"};
+          [&](const model::MatNull& m) {
+            MaterialLaws laws{std::nullopt, NullShell(m.ro, m.ym, m.pr), false, "*MAT_NULL"};
+            if (eos) laws.solid = NullSolid(m.ro, m.pc, m.mu, equation_of_state(*eos, m.ro));
+            laws.max_relative_volume = m.terod;
+            laws.min_relative_volume = m.cerod;
+            return laws;
           },
           [](const model::MatRigid&) {
             return MaterialLaws{std::nullopt, std::nullopt, true, "*MAT_RIGID"};

@@ -118,10 +118,21 @@ void check_materials(const model::Model& m, Problems& p) {
             },
             [&](const model::MatPlasticKinematic& x) { check_plastic_kinematic(x, p); },
             [&](const model::MatPiecewiseLinearPlasticity& x) { check_piecewise_linear(m, x, p); },
-            [&](const model::MatNull& x) {  // shells only: YM, PR set their step and contact stiffness
-              positive(p, x.src, "*MAT_NULL", "RO", x.ro);
-              positive(p, x.src, "*MAT_NULL", "YM", x.ym);
-              poisson(p, x.src, "*MAT_NULL", x.pr);
+            [&](const model::MatNull& x) {  // YM, PR: shells (validate_parts); PC, MU, TEROD, CEROD: solids
+              const char* card = "*MAT_NULL";
+              positive(p, x.src, card, "RO", x.ro);
+              if (!(x.pc <= 0.0) || !std::isfinite(x.pc))
+                p.bad(x.src, std::string("field PC of ") + card + " is a pressure cutoff in tension and must not be "
+                                                                  "positive (got " + num(x.pc) + ")");
+              for (const auto& [name, v] : {std::pair{"MU", x.mu}, std::pair{"TEROD", x.terod}, std::pair{"CEROD", x.cerod}})
+                if (!(v >= 0.0) || !std::isfinite(v))
+                  p.bad(x.src, std::string("field ") + name + " of " + card + " must not be negative (got " + num(v) + ")");
+              if (x.terod > 0.0 && !(x.terod > 1.0))
+                p.bad(x.src, std::string("field TEROD of ") + card + " is the relative volume V/V0 of erosion in tension "
+                                                                     "and must exceed 1 (got " + num(x.terod) + ")");
+              if (x.cerod > 0.0 && !(x.cerod < 1.0))
+                p.bad(x.src, std::string("field CEROD of ") + card + " is the relative volume V/V0 of erosion in "
+                                                                     "compression and must be below 1 (got " + num(x.cerod) + ")");
             },
             [&](const model::MatRigid& x) {
               positive(p, x.src, "*MAT_RIGID", "RO", x.ro);

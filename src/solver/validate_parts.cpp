@@ -2,8 +2,11 @@
 // material (the checks build_elements relies on), and the nodes' constraint codes. A dangling id
 // is check_references' to report (and the builder's lookup's): it is passed over here.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
+#include <string>
+#include <tuple>
 #include <unordered_map>
 #include <variant>
 #include <vector>
@@ -130,6 +133,63 @@ void check_solid_part(const model::Part& part, const model::SectionSolid* sec, c
            ", which is not implemented");
 }
 
+/// The equation of state of a part (EOSID, `eos` its card or null) and the *MAT_NULL fields that
+/// act on one element kind only: an EOS goes with *MAT_NULL solids (the other laws have their own
+/// pressure); YM, PR with null shells (LS-DYNA: "used for null beams and shells only"); PC, MU,
+/// TEROD, CEROD with null solids.
+void check_eos_use(const model::Part& part, const model::Material& mat, const model::Eos* eos, bool solids,
+                   const model::SectionSolid* sec, int ihq, Problems& p) {
+  const std::string who = "part " + std::to_string(part.pid);
+  const auto* null = std::get_if<model::MatNull>(&mat);
+  if (eos && (!null || !solids)) {
+    p.bad(part.src, who + ": field EOSID = " + std::to_string(part.eosid) + " of *PART: an equation of state goes "
+                    "with *MAT_NULL solids; " + (null ? std::string("a null shell has no pressure")
+                                                      : "material " + std::to_string(part.mid) + " has its own pressure"));
+    return;
+  }
+  if (!null) return;
+  if (!solids) {
+    // YM and PR set a null shell's step and contact stiffness.
+    if (!(null->ym > 0.0) || !std::isfinite(null->ym))
+      p.bad(null->src, "field YM of *MAT_NULL must be positive (got " + num(null->ym) + ")");
+    if (!(null->pr > -1.0 && null->pr < 0.5))
+      p.bad(null->src, "field PR of *MAT_NULL must be in (-1, 0.5) (got " + num(null->pr) + ")");
+    for (const auto& [name, v] : {std::pair{"PC", null->pc}, std::pair{"MU", null->mu}, std::pair{"TEROD", null->terod},
+                                  std::pair{"CEROD", null->cerod}})
+      if (v != 0.0)
+        p.todo(null->src, std::string("field ") + name + " = " + num(v) + " of *MAT_NULL acts on solids (with an "
+                          "equation of state); shell " + who + " has no pressure: leave it blank");
+    return;
+  }
+  if (!eos) return;  // check_solid_part: a null solid needs an equation of state
+  for (const auto& [name, v] : {std::pair{"YM", null->ym}, std::pair{"PR", null->pr}})
+    if (v != 0.0)
+      p.todo(null->src, std::string("field ") + name + " = " + num(v) + " of *MAT_NULL is used for null shells and "
+                        "beams only; solid " + who + " takes its stiffness from its equation of state: leave it blank");
+  const int elform = sec ? sec->elform : 1;
+  if (elform != 0 && elform != 1)
+    p.todo(sec->src, "field ELFORM of *SECTION_SOLID: " + std::to_string(elform) + " with *MAT_NULL (" + who +
+                         ") is not implemented (null solids run as one-point hexahedra, ELFORM 1)");
+  if ((elform == 0 || elform == 1) && (ihq == 6 || ihq == 10))
+    p.todo(part.src, "hourglass type IHQ=" + std::to_string(ihq) + " of *MAT_NULL " + who + " is not implemented "
+                     "(it needs a Young's modulus; a null solid takes 1-3 viscous or 4-5 stiffness, on the EOS's bulk modulus)");
+  const auto [card, v0, src] = std::visit(
+      [](const auto& x) { return std::tuple{model::eos_keyword(x), x.v0, x.src}; }, *eos);
+  if (v0 != 0.0 && v0 != 1.0)
+    p.todo(src, std::string("field V0 = ") + num(v0) + " of " + card + " is not implemented (an initial relative "
+                "volume other than 1: give 0 or 1)");
+  const EquationOfState law = equation_of_state(*eos, null->ro);
+  if (const std::string why = law.problem(); !why.empty()) {
+    p.bad(src, why);
+    return;
+  }
+  const NullSolid solid(null->ro, null->pc, null->mu, law);
+  if (!(solid.bulk_modulus() > 0.0) || !std::isfinite(solid.bulk_modulus()))
+    p.bad(src, std::string(card) + " " + std::to_string(part.eosid) + ": the sound speed at the reference state "
+               "(V = V0, E = E0) must be positive (dp/drho = " + num(solid.bulk_modulus() / null->ro) +
+               "): a null solid's step, hourglass and contact stiffness read it");
+}
+
 /// *BOUNDARY_PRESCRIBED_MOTION_RIGID drives a *MAT_RIGID part with elements. `unresolved`: parts
 /// with elements whose card or material is missing (check_references reports them).
 void check_rigid_motions(const model::Model& m, const std::set<Id>& in_use, const std::set<Id>& rigid,
@@ -254,7 +314,13 @@ void check_parts(const model::Model& m, Problems& p) {
       }
       ihq = h->ihq;
     }
-    const MaterialLaws laws = material_laws(*mat, m.curves);
+    const model::Eos* eos = part->eosid != 0 ? model::find_eos(m.eos, part->eosid) : nullptr;
+    if (part->eosid != 0 && !eos) {  // check_references names it
+      unresolved.insert(pid);
+      continue;
+    }
+    check_eos_use(*part, *mat, eos, use.solids, use.solids ? find(ssec, part->secid) : nullptr, ihq, p);
+    const MaterialLaws laws = material_laws(*mat, m.curves, eos);
     const model::SectionShell* shell_sec = use.shells ? find(shsec, part->secid) : nullptr;
     if (laws.rigid) {
       rigid.insert(pid);

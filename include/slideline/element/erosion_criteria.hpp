@@ -54,6 +54,10 @@ struct ErosionCriteria {
   /// TSMIN / TSSFAC; min_step is raised to that once the first step is known
   /// (ElementErosion::set_step_floor).
   bool erode_below_tsmin = false;
+  /// TEROD / CEROD of *MAT_NULL (solids): the element is deleted when its relative volume V/V0
+  /// exceeds max_relative_volume or falls below min_relative_volume; 0: not used.
+  Real max_relative_volume = 0.0;
+  Real min_relative_volume = 0.0;
 
   /// Whether a *MAT_ADD_EROSION threshold is on.
   bool has_thresholds() const { return mxpres.on || mnpres.on || sigp1.on || sigvm.on || failtm.on || needs_strain(); }
@@ -62,7 +66,10 @@ struct ErosionCriteria {
   /// Whether a threshold reads the stress.
   bool needs_stress() const { return mxpres.on || mnpres.on || sigp1.on || sigvm.on; }
   /// Whether anything can delete an element.
-  bool any() const { return plastic_strain > 0.0 || has_thresholds() || min_step > 0.0 || erode_below_tsmin; }
+  bool any() const {
+    return plastic_strain > 0.0 || has_thresholds() || min_step > 0.0 || erode_below_tsmin ||
+           max_relative_volume > 0.0 || min_relative_volume > 0.0;
+  }
 
   /// The number of *MAT_ADD_EROSION thresholds that hold at a point of stress `s` and principal
   /// logarithmic strains `e` (descending; read only when needs_strain()) at time `t`. A threshold

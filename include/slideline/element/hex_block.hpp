@@ -14,6 +14,7 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/solid_erosion.hpp"
+#include "slideline/element/state_speed.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/hex_hourglass_stiffness.hpp"
@@ -29,6 +30,9 @@ class HexBlock final : public ElementBlock {
  public:
   /// The law's state of one batch of kLanes elements.
   using State = typename Material::template State<Lanes>;
+  /// Whether the law's state carries each element's sound speed (a null solid's EOS): the bulk
+  /// viscosity and the step then read it instead of the law's constant wave speed.
+  static constexpr bool kStateSpeed = requires(const State& s) { s.sound_speed; };
 
   /// `damping.beta` > 0 adds the stiffness-proportional damping stress
   /// beta (lambda tr(D) I + 2 mu D) with the material's small-strain Lame constants.
@@ -104,7 +108,9 @@ class HexBlock final : public ElementBlock {
       const Tensor3<Lanes> F = inverse(inverse_deformation_gradient(bt));
       const State& held = state_[e0 / kLanes];
       State copy = held;
-      const Tensor3<Lanes> sigma = mat_.update(copy, F, no_rate, 0.0);
+      Tensor3<Lanes> sigma;
+      if constexpr (kStateSpeed) sigma = mat_.update_volume(copy, Lanes(bt.vol / Lanes::Map(volume0_.data() + e0)), no_rate, 0.0);
+      else sigma = mat_.update(copy, F, no_rate, 0.0);
       Lanes w = Lanes::Zero();
       if constexpr (requires { { mat_.energy_density(F) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(F);
       else if constexpr (requires { { mat_.energy_density(held) } -> std::convertible_to<Lanes>; }) w = mat_.energy_density(held);
@@ -279,7 +285,7 @@ class HexBlock final : public ElementBlock {
   struct BatchStress {
     Tensor3<Lanes> sigma;
     Tensor3<Lanes> law;  ///< the law's stress alone: set only when an erosion criterion reads it
-    Lanes visc, damp, qdt, len;
+    Lanes visc, damp, qdt, len, c;  ///< c: the elements' sound speeds, set when kStateSpeed
   };
 
   /// Nodal forces of a batch (residual form), hourglass power, sum of the force components (to
@@ -312,7 +318,7 @@ class HexBlock final : public ElementBlock {
       bt.y0[k] = gather_lanes(nodes.x0.y.data(), ik);
       bt.z0[k] = gather_lanes(nodes.x0.z.data(), ik);
     }
-    if (erosion_.active()) freeze_deleted(bt, e0);
+    if (erosion_.active()) solid_erosion::freeze_deleted(bt, e0, erosion_, element_count());
     hex8::volume_gradient(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz);
     bt.vol = Lanes::Zero();
     for (int k = 0; k < 8; ++k) bt.vol += bt.x[k] * bt.bx[k] + bt.y[k] * bt.by[k] + bt.z[k] * bt.bz[k];
@@ -322,20 +328,6 @@ class HexBlock final : public ElementBlock {
       bt.bx[k] *= bt.inv_vol;
       bt.by[k] *= bt.inv_vol;
       bt.bz[k] *= bt.inv_vol;
-    }
-  }
-
-  /// A deleted element is evaluated at its reference geometry at rest (its forces are discarded):
-  /// its nodes may have gone anywhere since, and an inverted deleted element must not stop the run.
-  void freeze_deleted(Batch& bt, Index e0) const {
-    for (int l = 0; l < kLanes; ++l) {
-      if (!erosion_.deleted(std::min(e0 + l, element_count() - 1))) continue;  // spare lanes: the last element
-      for (int k = 0; k < 8; ++k) {
-        bt.x[k][l] = bt.x0[k][l];
-        bt.y[k][l] = bt.y0[k][l];
-        bt.z[k][l] = bt.z0[k][l];
-        bt.vx[k][l] = bt.vy[k][l] = bt.vz[k][l] = 0.0;
-      }
     }
   }
 
@@ -350,11 +342,13 @@ class HexBlock final : public ElementBlock {
     for (int l = 0; l < valid; ++l) {
       const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
       const Real q = st.qdt[l];
-      Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c * c)) : 0.0;
+      const Real c_l = kStateSpeed ? st.c[l] : c;
+      Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c_l * c_l)) : 0.0;
       if (!step_factor_.empty()) dt_e *= step_factor_[static_cast<std::size_t>(e0 + l)];
       const SymTensor6 law = needs_stress_ ? sym6(st.law, l) : SymTensor6{};
       const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e,
-                                              crit.needs_strain() ? solid_erosion::log_strains(F, l) : std::array<Real, 3>{});
+                                              crit.needs_strain() ? solid_erosion::log_strains(F, l) : std::array<Real, 3>{}) ||
+                         solid_erosion::volume_fails(crit, bt.vol[l] / volume0_[static_cast<std::size_t>(e0 + l)]);
       if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
@@ -387,7 +381,10 @@ class HexBlock final : public ElementBlock {
   BatchStress batch_stress(const Batch& bt, Index e0, Real dt_law, const KernelConstants& kc) {
     const Tensor3<Lanes> d = hex8::rate_of_deformation(bt.vx, bt.vy, bt.vz, bt.bx, bt.by, bt.bz);
     BatchStress st;
-    st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
+    if constexpr (kStateSpeed)  // an EOS reads the element's volume ratio
+      st.sigma = mat_.update_volume(state_[e0 / kLanes], Lanes(bt.vol / Lanes::Map(volume0_.data() + e0)), d, dt_law);
+    else
+      st.sigma = mat_.update(state_[e0 / kLanes], inverse(inverse_deformation_gradient(bt)), d, dt_law);
     if (needs_stress_) st.law = st.sigma;  // the law's stress, for *MAT_ADD_EROSION's thresholds
     Lanes trd = Lanes::Zero();
     for (int k = 0; k < 8; ++k) trd += bt.vx[k] * bt.bx[k] + bt.vy[k] * bt.by[k] + bt.vz[k] * bt.bz[k];
@@ -396,11 +393,15 @@ class HexBlock final : public ElementBlock {
     const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
     const LaneMask compressing = trd < 0.0;
     const Lanes rho = kc.rho0 * vol0 * bt.inv_vol;
-    const Lanes q = compressing.select(
-        rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * kc.c * trd), 0.0);
+    Lanes q;
+    if constexpr (kStateSpeed) {  // the elements' own sound speeds (state_speed.hpp)
+      q = state_speed::bulk_viscosity(state_[e0 / kLanes], mat_.viscosity(), bulk_, rho, len, trd, compressing, bt.vol / vol0, dt_law, st.qdt, st.c);
+    } else {
+      q = compressing.select(rho * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * kc.c * trd), 0.0);
+      st.qdt = compressing.select(bulk_.linear * kc.c + bulk_.quadratic * len * (-trd), 0.0);
+    }
     for (int i = 0; i < 3; ++i) st.sigma[i][i] -= q;
     st.visc = -q * trd * bt.vol;
-    st.qdt = compressing.select(bulk_.linear * kc.c + bulk_.quadratic * len * (-trd), 0.0);
     st.damp = Lanes::Zero();
     if constexpr (damped) add_damping(st, d, trd, bt.vol, kc);
     return st;
@@ -520,7 +521,9 @@ class HexBlock final : public ElementBlock {
   template <bool damped>
   static void accumulate(ChunkSums& s, const Batch& bt, BatchStress& st, BatchForces& f, Index e0,
                          int valid, Real c, const Real* step_factor, Real* raw_steps) {
-    Lanes dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
+    Lanes dt;
+    if constexpr (kStateSpeed) dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + st.c * st.c));
+    else dt = st.len / (st.qdt + lane_sqrt(st.qdt * st.qdt + c * c));
     if (raw_steps) Lanes::Map(raw_steps + e0) = dt;  // mass scaling every cycle (enable_mass_rescaling)
     if (step_factor) dt *= Lanes::Map(step_factor + e0);  // mass scaling (scale_element_masses)
     const LaneMask failed = !(bt.vol > 0.0) || !f.fsum.isFinite();

@@ -28,6 +28,8 @@ void check(const ErosionCriteria& k, Id part_id, Index quads, Index elements, in
     if (k.needs_strain())
       throw NotImplementedError(part + ": its material carries no stress, so the normal strain of plane stress is not"
                                 " defined: the strain criteria of *MAT_ADD_EROSION are not implemented on it");
+  if (k.max_relative_volume > 0.0 || k.min_relative_volume > 0.0)
+    throw NotImplementedError(part + ": TEROD / CEROD of *MAT_NULL erode solids; a shell has no relative volume");
   if (quads < elements) throw NotImplementedError(part + ": erosion of C0 triangles is not implemented");
   if (k.has_thresholds() && k.points_needed(points) > points)
     throw InputError(part + ": NUMFIP of *MAT_ADD_EROSION asks for " + std::to_string(k.points_needed(points)) +

@@ -2,12 +2,15 @@
 /// Erosion of one-point hexahedra (element_erosion.hpp, erosion_criteria.hpp): the checks the
 /// block makes when erosion is enabled and the verdict on one element. Kept apart from
 /// hex_block.hpp (its size).
+#include <algorithm>
 #include <array>
 #include <string>
 
 #include "slideline/core/error.hpp"
 #include "slideline/core/tensor3.hpp"
+#include "slideline/core/lanes.hpp"
 #include "slideline/element/cell_output.hpp"
+#include "slideline/element/element_erosion.hpp"
 #include "slideline/element/erosion_criteria.hpp"
 
 namespace slideline::solid_erosion {
@@ -33,6 +36,9 @@ void check_element_by_element(const ErosionCriteria& k, Id part_id, const char* 
   const std::string part = "part " + std::to_string(part_id);
   if constexpr (!requires(const State& s) { s.eps; })
     if (k.plastic_strain > 0.0) throw NotImplementedError(part + ": a failure strain needs a plastic law");
+  if (k.max_relative_volume > 0.0 || k.min_relative_volume > 0.0)
+    throw NotImplementedError(part + ": TEROD / CEROD of *MAT_NULL on " + form +
+                              " are not implemented (one-point hexahedra have them)");
   if (k.has_thresholds())
     throw NotImplementedError(part + ": the criteria of *MAT_ADD_EROSION on " + form +
                               " are not implemented (one-point hexahedra and Belytschko-Tsay shells have them)");
@@ -57,6 +63,30 @@ inline bool fails(const ErosionCriteria& k, Real eps, const SymTensor6& law, Rea
   if (k.plastic_strain > 0.0 && eps >= k.plastic_strain) return true;
   if (k.has_thresholds() && k.point_fails(law, t, e)) return true;
   return k.min_step > 0.0 && dt_e < k.min_step;
+}
+
+/// A deleted element of a batch `bt` (from element e0; `ne` elements, the spare lanes of a last
+/// partial batch repeat the last) is evaluated at its reference geometry at rest (its forces are
+/// discarded): its nodes may have gone anywhere since, and an inverted deleted element must not
+/// stop the run.
+template <class Batch>
+void freeze_deleted(Batch& bt, Index e0, const ElementErosion& erosion, Index ne) {
+  for (int l = 0; l < kLanes; ++l) {
+    if (!erosion.deleted(std::min(e0 + l, ne - 1))) continue;
+    for (int k = 0; k < 8; ++k) {
+      bt.x[k][l] = bt.x0[k][l];
+      bt.y[k][l] = bt.y0[k][l];
+      bt.z[k][l] = bt.z0[k][l];
+      bt.vx[k][l] = bt.vy[k][l] = bt.vz[k][l] = 0.0;
+    }
+  }
+}
+
+/// Whether an element of relative volume `j` = V/V0 goes by TEROD / CEROD of *MAT_NULL
+/// (ErosionCriteria::max_relative_volume, min_relative_volume; 0: not used).
+inline bool volume_fails(const ErosionCriteria& k, Real j) {
+  return (k.max_relative_volume > 0.0 && j > k.max_relative_volume) ||
+         (k.min_relative_volume > 0.0 && j < k.min_relative_volume);
 }
 
 }  // namespace slideline::solid_erosion

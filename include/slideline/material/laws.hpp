@@ -9,6 +9,7 @@
 #include "slideline/material/j2_plasticity.hpp"
 #include "slideline/material/mooney_rivlin.hpp"
 #include "slideline/material/null_shell.hpp"
+#include "slideline/material/null_solid.hpp"
 #include "slideline/material/piecewise_plasticity.hpp"
 #include "slideline/material/shell_material.hpp"
 #include "slideline/material/shell_plasticity.hpp"
@@ -17,7 +18,7 @@
 namespace slideline {
 
 /// The law of a hexahedron block.
-using SolidLaw = std::variant<ElasticSolid, MooneyRivlin, J2Plasticity, PiecewisePlasticity>;
+using SolidLaw = std::variant<ElasticSolid, MooneyRivlin, J2Plasticity, PiecewisePlasticity, NullSolid>;
 
 /// The law of a shell block.
 using ShellLaw = std::variant<ElasticShell, NullShell, ShellPlasticity<J2Plasticity>, ShellPlasticity<PiecewisePlasticity>>;

@@ -94,8 +94,10 @@ struct MatPiecewiseLinearPlasticity {
   bool operator==(const MatPiecewiseLinearPlasticity&) const = default;
 };
 
-/// *MAT_NULL (type 9): no deviatoric stiffness; on shells a surface with mass only. YM and PR set
-/// the contact stiffness and time step of such shells.
+/// *MAT_NULL (type 9): no deviatoric stiffness; on shells a surface with mass only (YM and PR set
+/// the contact stiffness and time step of such shells); on solids a fluid-like material whose
+/// pressure is the part's equation of state (*EOS_..., EosId of *PART) plus the viscous
+/// deviatoric stress 2 MU dev(D).
 struct MatNull {
   Id mid = 0;
   Real ro = 0.0;
@@ -103,6 +105,11 @@ struct MatNull {
   Real pr = 0.0;
   std::string title;
   Source src;
+  // Solids only (after the title and source, so that the shells' aggregate initialisations hold):
+  Real pc = 0.0;     ///< PC: pressure cutoff in tension (<= 0; the pressure never falls below it)
+  Real mu = 0.0;     ///< MU: dynamic viscosity (force time/length^2)
+  Real terod = 0.0;  ///< TEROD: erosion when V/V0 exceeds it (0: not used)
+  Real cerod = 0.0;  ///< CEROD: erosion when V/V0 falls below it (0: not used)
   bool operator==(const MatNull&) const = default;
 };
 
@@ -128,6 +135,64 @@ struct MatAddErosion {
   Source src;
   bool operator==(const MatAddErosion&) const = default;
 };
+
+/// *EOS_LINEAR_POLYNOMIAL (form 1): p = C0 + C1 mu + C2 mu^2 + C3 mu^3 + (C4 + C5 mu + C6 mu^2) E,
+/// mu = rho / rho0 - 1, E internal energy per unit reference volume; C2 mu^2 and C6 mu^2 are left
+/// out in tension (mu < 0).
+struct EosLinearPolynomial {
+  Id eosid = 0;
+  std::array<Real, 7> c{};  ///< C0..C6
+  Real e0 = 0.0;            ///< E0: initial internal energy per unit reference volume
+  Real v0 = 0.0;            ///< V0: initial relative volume (0 and blank: 1)
+  Source src;
+  bool operator==(const EosLinearPolynomial&) const = default;
+};
+
+/// *EOS_GRUNEISEN (form 4): the Mie-Gruneisen form on the shock Hugoniot Us = C + S1 up + S2 up^2/Us
+/// + S3 up^3/Us^2 (compressed) and rho0 C^2 mu + (GAMAO + A mu) E (expanded).
+struct EosGruneisen {
+  Id eosid = 0;
+  Real c = 0.0;       ///< C: the Hugoniot's intercept (velocity)
+  Real s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  Real gamma0 = 0.0;  ///< GAMAO
+  Real a = 0.0;       ///< A: first-order volume correction of GAMAO
+  Real e0 = 0.0;
+  Real v0 = 0.0;      ///< 0 and blank: 1
+  Id lcid = 0;        ///< card 2 LCID (refused when given)
+  Source src;
+  bool operator==(const EosGruneisen&) const = default;
+};
+
+/// *EOS_TABULATED (form 9): p = C(eps_V) + GAMA T(eps_V) E, eps_V = ln(V/V0), C and T linear
+/// between the 10 points EV1 > EV2 > ... > EV10 and extrapolated from the end segments.
+struct EosTabulated {
+  Id eosid = 0;
+  Real gama = 0.0;
+  Real e0 = 0.0;
+  Real v0 = 0.0;  ///< 0 and blank: 1
+  std::array<Real, 10> ev{}, c{}, t{};
+  Source src;
+  bool operator==(const EosTabulated&) const = default;
+};
+
+using Eos = std::variant<EosLinearPolynomial, EosGruneisen, EosTabulated>;
+
+/// The id of an equation of state card.
+inline Id eos_id(const Eos& e) {
+  return std::visit([](const auto& x) { return x.eosid; }, e);
+}
+
+/// The keyword of an equation of state card, for messages.
+inline const char* eos_keyword(const EosLinearPolynomial&) { return "*EOS_LINEAR_POLYNOMIAL"; }
+inline const char* eos_keyword(const EosGruneisen&) { return "*EOS_GRUNEISEN"; }
+inline const char* eos_keyword(const EosTabulated&) { return "*EOS_TABULATED"; }
+
+/// The card of id `id` in `all`; null when none.
+inline const Eos* find_eos(const std::vector<Eos>& all, Id id) {
+  for (const Eos& e : all)
+    if (eos_id(e) == id) return &e;
+  return nullptr;
+}
 
 using Material = std::variant<MatElastic, MatMooneyRivlin, MatRigid, MatPlasticKinematic,
                               MatPiecewiseLinearPlasticity, MatNull>;

@@ -469,6 +469,7 @@ struct Model {
   std::vector<SectionShell> shell_sections;
   std::vector<Material> materials;
   std::vector<MatAddErosion> add_erosions;
+  std::vector<Eos> eos;  ///< *EOS_... cards (the parts' EOSID)
   std::vector<Hourglass> hourglasses;
   ControlHourglass control_hourglass;
   ControlBulkViscosity bulk_viscosity;

@@ -147,8 +147,13 @@ TEST(KeywordPlasticity, NullMaterialFieldsAndRefusals) {
   for (Real v : law.update(s, ShellRate{1.0, 2.0, 3.0, 4.0, 5.0}, 0.1, 1.0)) EXPECT_EQ(v, 0.0);
   EXPECT_DOUBLE_EQ(law.wave_speed(), std::sqrt(1000.0 / (0.1 * 0.99)));
   EXPECT_TRUE(law.problem().empty());
-  EXPECT_EQ(thrown("*MAT_009\n4,0.1,,0.5\n"),
-            "p.k:2: *MAT_009: field MU is not implemented (it needs an equation of state); leave it blank");
+  // PC, MU, TEROD, CEROD are read for solids (tests/unit/solver/test_null_solid_model.cpp: refused on shells).
+  const auto solid = read_keyword_string("*MAT_009\n4,0.1,-5.0,0.5,2.0,0.5\n", "p.k", nullptr);
+  const auto& ns = std::get<model::MatNull>(solid.materials.at(0));
+  EXPECT_EQ(ns.pc, -5.0);
+  EXPECT_EQ(ns.mu, 0.5);
+  EXPECT_EQ(ns.terod, 2.0);
+  EXPECT_EQ(ns.cerod, 0.5);
 }
 
 // The writer gives the cards back: read -> write -> read keeps every field.
