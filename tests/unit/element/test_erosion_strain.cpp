@@ -66,30 +66,31 @@ TEST(ErosionStrain, PrincipalLogStrainsOfStretchesAndShear) {
   EXPECT_NEAR(e[0] + e[1] + e[2], (1.0 - 2.0 * nu) * std::log(L), 1e-14);
 }
 
-// Each strain threshold and its sign rule on the principal strains (e1, e2, e3).
+// Each strain threshold and its sign rule on the principal strains (e1, e2, e3); a threshold holds
+// once passed, strictly (a strain equal to it does not delete).
 TEST(ErosionStrain, ThresholdsAndSigns) {
   const std::array<Real, 6> no_stress{};
   const std::array<Real, 3> tension{0.2, -0.05, -0.05}, compression{0.05, 0.05, -0.2};
   ErosionCriteria k;
-  k.mxeps = {true, 0.2};
+  k.mxeps = {true, 0.19};
   EXPECT_TRUE(k.needs_strain());
   EXPECT_TRUE(k.point_fails(no_stress, 0.0, tension));
   EXPECT_FALSE(k.point_fails(no_stress, 0.0, compression));
   k.mxeps = {};
-  k.mneps = {true, -0.2};
+  k.mneps = {true, -0.19};
   EXPECT_FALSE(k.point_fails(no_stress, 0.0, tension));
   EXPECT_TRUE(k.point_fails(no_stress, 0.0, compression));
   k.mneps = {};
-  k.voleps = {true, 0.1};  // tension: ln J >= 0.1
+  k.voleps = {true, 0.099};  // tension: ln J > 0.099
   EXPECT_TRUE(k.point_fails(no_stress, 0.0, {0.1, 0.0, 0.0}));
-  EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.1, 0.0, -0.001}));
+  EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.1, 0.0, -0.002}));
   EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.0, 0.0, -0.5}));
-  k.voleps = {true, -0.1};  // compression: ln J <= -0.1
+  k.voleps = {true, -0.099};  // compression: ln J < -0.099
   EXPECT_TRUE(k.point_fails(no_stress, 0.0, {0.0, 0.0, -0.1}));
-  EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.0, 0.0, -0.099}));
+  EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.0, 0.0, -0.098}));
   EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.5, 0.0, 0.0}));
   k.voleps = {};
-  k.epssh = {true, 0.125};  // (e1 - e3)/2
+  k.epssh = {true, 0.12};  // (e1 - e3)/2: 0.125 in tension and in compression
   EXPECT_TRUE(k.point_fails(no_stress, 0.0, tension));
   EXPECT_TRUE(k.point_fails(no_stress, 0.0, compression));
   EXPECT_FALSE(k.point_fails(no_stress, 0.0, {0.1, 0.0, -0.1}));
