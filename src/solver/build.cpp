@@ -345,17 +345,6 @@ struct Builder {
     return setup.sets.part_set(sid, describe(from) + ": " + field);
   }
 
-  /// The global axes and components of local axis `a` of system `cid` (0: `a` itself, 1): the
-  /// nonzero entries of column a of the system's rotation, in axis order.
-  std::vector<std::pair<Axis, Real>> global_components(Axis a, Id cid, const model::Source& src) const {
-    if (cid == 0) return {{a, 1.0}};
-    const Mat3 r = local_axes(m, cid, describe(src) + ": field CID").r;
-    std::vector<std::pair<Axis, Real>> out;
-    for (int k = 0; k < 3; ++k)
-      if (const Real c = r(k, static_cast<int>(a)); c != 0.0) out.emplace_back(static_cast<Axis>(k), c);
-    return out;
-  }
-
   void build_boundaries() {
     for (const auto& spc : m.spcs) {
       SupportGroup g;  // DOF flags 0 or 1, a CID whose axes are global axes, no rigid node (validate_model)
@@ -368,14 +357,7 @@ struct Builder {
       std::array<int, 3> global_axis{0, 1, 2};
       if (spc.cid != 0)
         global_axis = *axis_permutation(local_axes(m, spc.cid, describe(spc.src) + ": field CID").r);
-      for (int d = 0; d < 6; ++d) {
-        if (spc.dof[d] == 0) continue;
-        Support s;
-        s.axis = static_cast<Axis>(global_axis[static_cast<std::size_t>(d % 3)]);
-        s.rotational = d >= 3;
-        s.nodes = nodes;
-        g.supports.push_back(std::move(s));
-      }
+      add_fixed_components(g, nodes, spc.dof, global_axis);
       setup.supports.push_back(std::move(g));
     }
     build_node_constraint_codes();
@@ -417,14 +399,7 @@ struct Builder {
       g.name = "node_tc" + std::to_string(code.first) + "_rc" + std::to_string(code.second);
       const auto t = rigid_constraint_code(code.first).value();
       const auto r = rigid_constraint_code(code.second).value();
-      for (int d = 0; d < 6; ++d) {
-        if ((d < 3 ? t[d] : r[d - 3]) == 0) continue;
-        Support s;
-        s.axis = static_cast<Axis>(d % 3);
-        s.rotational = d >= 3;
-        s.nodes = nodes;
-        g.supports.push_back(std::move(s));
-      }
+      add_fixed_components(g, nodes, {t[0], t[1], t[2], r[0], r[1], r[2]});
       setup.supports.push_back(std::move(g));
     }
   }
@@ -468,7 +443,7 @@ struct Builder {
     }
     for (const auto& lb : m.body_loads) {
       // CID: the acceleration is along the local axis, its global components one load each.
-      for (const auto& [axis, c] : global_components(lb.axis, lb.cid, lb.src)) {
+      for (const auto& [axis, c] : global_components(m, lb.axis, lb.cid, describe(lb.src) + ": field CID")) {
         BodyLoad b;
         b.axis = axis;
         // LS-DYNA body loads are base accelerations: the inertial force opposes them.
@@ -492,7 +467,8 @@ struct Builder {
       nl.nodes.erase(std::unique(nl.nodes.begin(), nl.nodes.end()), nl.nodes.end());
       nl.source = describe(l.src) + ": " + card;
       // CID: the force (moment) is along the local axis, its global components one load each.
-      for (const auto& [axis, c] : global_components(static_cast<Axis>(nl.moment ? l.dof - 5 : l.dof - 1), l.cid, l.src)) {
+      const Axis local = static_cast<Axis>(nl.moment ? l.dof - 5 : l.dof - 1);
+      for (const auto& [axis, c] : global_components(m, local, l.cid, describe(l.src) + ": field CID")) {
         nl.axis = axis;
         nl.scale = l.sf * c;
         setup.nodal_loads.push_back(nl);

@@ -10,6 +10,18 @@ namespace slideline {
 /// The one scale factor of LS-DYNA's per-direction damping factors STX..SRZ when they all agree
 /// (all blank/0 means 1, as LS-DYNA reads them), else nothing: directions damped differently are
 /// not implemented.
+void add_fixed_components(SupportGroup& g, const std::vector<Index>& nodes, const std::array<int, 6>& dof,
+                          const std::array<int, 3>& axis_of) {
+  for (int d = 0; d < 6; ++d) {
+    if (dof[static_cast<std::size_t>(d)] == 0) continue;
+    Support s;
+    s.axis = static_cast<Axis>(axis_of[static_cast<std::size_t>(d % 3)]);
+    s.rotational = d >= 3;
+    s.nodes = nodes;
+    g.supports.push_back(std::move(s));
+  }
+}
+
 std::optional<Real> common_direction_factor(const std::array<Real, 6>& stf) {
   if (std::all_of(stf.begin(), stf.end(), [](Real s) { return s == 0.0; })) return 1.0;
   if (std::all_of(stf.begin(), stf.end(), [&](Real s) { return s == stf[0]; })) return stf[0];

@@ -20,6 +20,12 @@
 
 namespace slideline {
 
+/// Appends to `g` one zero-displacement support of `nodes` per nonzero flag of `dof` (x, y, z,
+/// rx, ry, rz), the translation or rotation about global axis `axis_of[d % 3]` (a *BOUNDARY_SPC
+/// CID whose axes are global axes permutes them; *NODE TC/RC codes do not).
+void add_fixed_components(SupportGroup& g, const std::vector<Index>& nodes, const std::array<int, 6>& dof,
+                          const std::array<int, 3>& axis_of = {0, 1, 2});
+
 /// The one scale factor of LS-DYNA's per-direction damping factors STX..SRZ when they all agree
 /// (all blank/0 means 1, as LS-DYNA reads them), else nothing: directions damped differently are
 /// not implemented.

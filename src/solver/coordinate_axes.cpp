@@ -95,6 +95,15 @@ LocalAxes resolve(const model::Model& m, Id cid, const std::string& user, int de
 
 LocalAxes local_axes(const model::Model& m, Id cid, const std::string& user) { return resolve(m, cid, user, 0); }
 
+std::vector<std::pair<Axis, Real>> global_components(const model::Model& m, Axis a, Id cid, const std::string& user) {
+  if (cid == 0) return {{a, 1.0}};
+  const Mat3 r = local_axes(m, cid, user).r;
+  std::vector<std::pair<Axis, Real>> out;
+  for (int k = 0; k < 3; ++k)
+    if (const Real c = r(k, static_cast<int>(a)); c != 0.0) out.emplace_back(static_cast<Axis>(k), c);
+  return out;
+}
+
 std::optional<std::array<int, 3>> axis_permutation(const Mat3& r) {
   std::array<int, 3> to{};
   for (int j = 0; j < 3; ++j) {

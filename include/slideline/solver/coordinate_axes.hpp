@@ -3,6 +3,8 @@
 /// model/coordinate_system.hpp) at t = 0, as the builder and the model validation resolve them.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "slideline/core/types.hpp"
 #include "slideline/model/model.hpp"
@@ -23,6 +25,11 @@ struct LocalAxes {
 /// a plane (coincident, collinear or zero), when a node it names is not defined, or when CIDL
 /// chains loop.
 LocalAxes local_axes(const model::Model& m, Id cid, const std::string& user);
+
+/// The global components of local axis `a` of system `cid` (0: `a` itself, 1): the nonzero
+/// entries of column a of the system's rotation, in axis order, as (global axis, direction
+/// cosine). A load along a local axis is built as one load per entry.
+std::vector<std::pair<Axis, Real>> global_components(const model::Model& m, Axis a, Id cid, const std::string& user);
 
 /// When `r` maps each local axis onto a global axis (a signed permutation, to 1e-12), the global
 /// axis of each local one; empty otherwise.
