@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "slideline/io/keyword_reader.hpp"
+#include "test_support/kuhn_tets.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/simulation.hpp"
 
@@ -65,16 +66,28 @@ Real svk_energy(Real L) {
 
 /// One unit cube (nodes 1-8), material `mat` (its MID 1, part 1) and the cards `extra`; x = 0
 /// held in x, and y = 0 in y, z = 0 in z (uniaxial stress) or every node in y and z (`lateral`:
-/// uniaxial strain); the face x = 1 moved by `pull`.
+/// uniaxial strain); the face x = 1 moved by `pull`. `elform` 1 or 2: one hexahedron of that
+/// form; 10: six tetrahedra (tests/test_support/kuhn_tets.hpp).
 std::string cube(const std::string& mat, const std::string& extra, const Pull& pull, Real end_time,
-                 bool lateral = false) {
+                 bool lateral = false, int elform = 1) {
   std::ostringstream o;
-  o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << end_time << ",\n*SECTION_SOLID\n1,1\n"
-    << mat << extra << "*PART\ncube\n1,1,1\n*NODE\n";
+  o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << end_time << ",\n*SECTION_SOLID\n1," << elform
+    << "\n" << mat << extra << "*PART\ncube\n1,1,1\n*NODE\n";
   for (int k = 0; k <= 1; ++k)
     for (int j = 0; j <= 1; ++j)
       for (int i = 0; i <= 1; ++i) o << 1 + i + 2 * j + 4 * k << "," << i << "," << j << "," << k << "\n";
-  o << "*ELEMENT_SOLID\n1,1,1,2,4,3,5,6,8,7\n*SET_NODE_LIST\n1\n1,3,5,7\n*SET_NODE_LIST\n2\n"
+  o << "*ELEMENT_SOLID\n";
+  if (elform == 10) {
+    for (int t = 0; t < 6; ++t) {
+      const auto tet = test_support::kuhn_tets()[static_cast<std::size_t>(t)];
+      o << t + 1 << ",1," << tet[0] + 1 << "," << tet[1] + 1 << "," << tet[2] + 1;
+      for (int r = 0; r < 5; ++r) o << "," << tet[3] + 1;
+      o << "\n";
+    }
+  } else {
+    o << "1,1,1,2,4,3,5,6,8,7\n";
+  }
+  o << "*SET_NODE_LIST\n1\n1,3,5,7\n*SET_NODE_LIST\n2\n"
     << (lateral ? "1,2,3,4,5,6,7,8" : "1,2,5,6") << "\n*SET_NODE_LIST\n3\n" << (lateral ? "1,2,3,4,5,6,7,8" : "1,2,3,4")
     << "\n*SET_NODE_LIST\n4\n2,4,6,8\n*BOUNDARY_SPC_SET\n1,0,1,0,0\n*BOUNDARY_SPC_SET\n2,0,0,1,0\n"
     << "*BOUNDARY_SPC_SET\n3,0,0,0,1\n*BOUNDARY_PRESCRIBED_MOTION_SET\n4,1,2,1\n"
@@ -143,8 +156,8 @@ CubeRun run(const std::string& text, const char* held) {
 /// Runs the cube with `add` under `pull`, expecting deletion within one step of `t_expected`;
 /// returns the run.
 CubeRun expect_deleted_at(const std::string& add, const Pull& pull, Real t_expected, const char* what,
-                      bool lateral = false) {
-  const CubeRun r = run(cube(elastic(), add, pull, t_expected + 0.01, lateral), "spc_1");
+                      bool lateral = false, int elform = 1) {
+  const CubeRun r = run(cube(elastic(), add, pull, t_expected + 0.01, lateral, elform), "spc_1");
   const Real dt = r.judging_step(t_expected);
   std::printf("%s: deleted at t = %.7f, closed form %.7f (%.2f steps of %.3g)\n", what, r.deleted_at, t_expected,
               (r.deleted_at - t_expected) / dt, dt);
@@ -247,6 +260,38 @@ TEST(AddErosion, StrainThresholds) {
   EXPECT_LT(run(cube(elastic(), add_erosion("1", ",,,0.02"), push, t_end), "spc_1").deleted_at, 0.0);
   EXPECT_LT(run(cube(elastic(), add_erosion("1,,,,,0.025", ""), push, t_end), "spc_1").deleted_at, 0.0);
   EXPECT_LT(run(cube(elastic(), add_erosion("1,,,-0.02", ""), pull, t_end), "spc_1").deleted_at, 0.0);
+}
+
+// The thresholds on the other solid forms, the same cube and closed forms: one fully integrated
+// hexahedron (ELFORM 2: its 8 Gauss points judged, NUMFIP of them must fail) and six tetrahedra
+// (ELFORM 10, one point each). The state is uniform, so every point fails at once: NUMFIP = 8
+// deletes the hexahedron at the same time as NUMFIP = 1 (8 of 8 points), and the eroded energy is
+// the strain energy of the whole cube at L whatever the form.
+TEST(AddErosion, FullyIntegratedHexahedronAndTetrahedra) {
+  const Pull pull{0.1, 0.05};
+  const Real L_vm = svk_stretch(20.0), L_eps = std::exp(0.02);
+  for (int elform : {2, 10}) {
+    const std::string form = "ELFORM " + std::to_string(elform);
+    CubeRun r = expect_deleted_at(add_erosion("1", ",,20.0"), pull, pull.time_of(L_vm - 1.0),
+                                  (form + ": SIGVM 20").c_str(), false, elform);
+    const Real w = svk_energy(L_vm);
+    std::printf("%s: eroded %.7g, closed form %.7g (rel %.2e); balance error %.3g\n", form.c_str(), r.energy.eroded(),
+                w, r.energy.eroded() / w - 1.0, r.energy.balance_error());
+    EXPECT_NEAR(r.energy.eroded(), w, 0.01 * w) << form;
+    EXPECT_NEAR(r.energy.internal, 0.0, 1e-3 * w) << form;
+    EXPECT_LT(std::abs(r.energy.balance_error()), 1e-3 * w) << form;
+    expect_deleted_at(add_erosion("1", ",,,0.02"), pull, pull.time_of(L_eps - 1.0), (form + ": MXEPS 0.02").c_str(),
+                      false, elform);
+  }
+  expect_deleted_at(add_erosion("1,,,,,,8", ",,20.0"), pull, pull.time_of(L_vm - 1.0), "ELFORM 2: SIGVM 20, NUMFIP 8",
+                    false, 2);
+  expect_deleted_at(add_erosion("1,,,,,,-100", ",,20.0"), pull, pull.time_of(L_vm - 1.0),
+                    "ELFORM 2: SIGVM 20, NUMFIP -100 (every point)", false, 2);
+  // A threshold of the other sign never holds: the hexahedron pushed past the same stretch stays.
+  const Pull push{-0.1, 0.05};
+  EXPECT_LT(run(cube(elastic(), add_erosion("1", ",,,0.02"), push, pull.time_of(L_eps - 1.0) + 0.02, false, 2), "spc_1")
+                .deleted_at,
+            0.0);
 }
 
 // TDEL of *MAT_PIECEWISE_LINEAR_PLASTICITY (SIGY far above the stress: elastic) on the cube

@@ -149,7 +149,8 @@ R eroding_element(ElementErosion& erosion, Index e, Real dt, Forces&& forces, St
   R r = forces(e);
   if (r.failed) return r;
   const ErosionCriteria& k = erosion.criteria();
-  const bool fails = (k.plastic_strain > 0.0 && strain(e) >= k.plastic_strain) || (k.min_step > 0.0 && r.dt < k.min_step);
+  bool fails = (k.plastic_strain > 0.0 && strain(e) >= k.plastic_strain) || (k.min_step > 0.0 && r.dt < k.min_step);
+  if constexpr (requires { r.erodes; }) fails = fails || r.erodes;  // the element's own verdict (thresholds)
   if (erosion.update_failed(e, e / kChunkSize, fails, r.power - r.visc - r.damp, 0.0, dt)) return deleted();
   return r;
 }

@@ -182,7 +182,7 @@ class FullHexBlock final : public ElementBlock {
 
   /// ElementBlock::enable_erosion (refusals: solid_erosion::check_element_by_element).
   void enable_erosion(const ErosionCriteria& criteria) override {
-    solid_erosion::check_element_by_element<State>(criteria, part_id(), "fully integrated hexahedra (ELFORM 2)");
+    solid_erosion::check_element_by_element<State>(criteria, part_id(), "fully integrated hexahedra (ELFORM 2)", 8);
     erosion_.enable(criteria, element_count(), element_count());
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
@@ -241,6 +241,7 @@ class FullHexBlock final : public ElementBlock {
   struct Sums {
     Real dt = 0.0, visc = 0.0, damp = 0.0, power = 0.0;
     bool failed = false;
+    bool erodes = false;  ///< NUMFIP of the 8 points fail the *MAT_ADD_EROSION thresholds, or TEROD / CEROD
   };
 
   /// The current geometry of an element at its Gauss points: the gradient operators B_g (8x3,
@@ -292,12 +293,15 @@ class FullHexBlock final : public ElementBlock {
     Sums s;
     Real qdt = 0.0;
     hex8::NodeMat f = hex8::NodeMat::Zero();
+    const ErosionCriteria* crit = erosion_.active() ? &erosion_.criteria() : nullptr;
+    int failed_points = 0;
     for (int p = 0; p < 8; ++p) {
       const Mat3 l = v.transpose() * g.b[p];  // L_ij = sum_I v_Ii B_Ij
       Tensor3<Real> d = solid_terms::symmetric_part(to_tensor3(l));
       const Real shift = (trd_mean - l.trace()) / 3.0;
       for (int i = 0; i < 3; ++i) d[i][i] += shift;
       Tensor3<Real> sigma = mat_.update(state_[8 * e + p], g.fbar[p], d, dt);
+      if (crit && solid_erosion::point_verdict(*crit, sigma, g.fbar[p], erosion_.time())) ++failed_points;
       const solid_terms::Added a = solid_terms::add_viscous_stress(sigma, d, trd_mean, g.detj[p], rho, len, k_);
       s.visc += a.visc;
       s.damp += a.damp;
@@ -313,6 +317,9 @@ class FullHexBlock final : public ElementBlock {
     s.power = -(f.cwiseProduct(v)).sum();
     s.dt = solid_terms::stable_step(len, qdt, k_.c);
     s.failed = !g.positive || !std::isfinite(f.sum());
+    if (crit)
+      s.erodes = (crit->has_thresholds() && failed_points >= crit->points_needed(8)) ||
+                 solid_erosion::volume_fails(*crit, g.vol / volume0_[e]);
     return s;
   }
 

@@ -28,20 +28,35 @@ void check(const ErosionCriteria& k, Id part_id) {
 }
 
 /// Refuses what a part (`part_id`) of element-by-element solids (`form`: "fully integrated
-/// hexahedra (ELFORM 2)", "tetrahedra (ELFORM 10)") of law state `State` cannot erode by: a
-/// failure strain without a plastic law, and the *MAT_ADD_EROSION thresholds (built on one-point
-/// hexahedra and Belytschko-Tsay shells only). TDEL (the element's step) works with any law.
+/// hexahedra (ELFORM 2)", "tetrahedra (ELFORM 10)") with `points` integration points, of law state
+/// `State`, cannot erode by: a failure strain without a plastic law, NUMFIP asking for more failed
+/// points than the element has. The *MAT_ADD_EROSION thresholds, TEROD / CEROD and TDEL are judged
+/// by the block (point_verdict, volume_fails).
 template <class State>
-void check_element_by_element(const ErosionCriteria& k, Id part_id, const char* form) {
+void check_element_by_element(const ErosionCriteria& k, Id part_id, const char* form, int points) {
   const std::string part = "part " + std::to_string(part_id);
   if constexpr (!requires(const State& s) { s.eps; })
     if (k.plastic_strain > 0.0) throw NotImplementedError(part + ": a failure strain needs a plastic law");
-  if (k.max_relative_volume > 0.0 || k.min_relative_volume > 0.0)
-    throw NotImplementedError(part + ": TEROD / CEROD of *MAT_NULL on " + form +
-                              " are not implemented (one-point hexahedra have them)");
-  if (k.has_thresholds())
-    throw NotImplementedError(part + ": the criteria of *MAT_ADD_EROSION on " + form +
-                              " are not implemented (one-point hexahedra and Belytschko-Tsay shells have them)");
+  if (k.has_thresholds() && k.points_needed(points) > points)
+    throw InputError(part + ": NUMFIP of *MAT_ADD_EROSION asks for " + std::to_string(k.points_needed(points)) +
+                     " failed points, but " + form + " have " + std::to_string(points));
+}
+
+/// Whether an integration point fails the *MAT_ADD_EROSION thresholds (ErosionCriteria::point_fails)
+/// at time `t`: `sigma` the law's Cauchy stress (without bulk viscosity and damping), `F` the
+/// deformation gradient the law saw (its principal logarithmic strains are computed only when a
+/// strain threshold is on).
+inline bool point_verdict(const ErosionCriteria& k, const Tensor3<Real>& sigma, const Tensor3<Real>& F, Real t) {
+  if (!k.has_thresholds()) return false;
+  const SymTensor6 s{sigma[0][0], sigma[1][1], sigma[2][2], sigma[0][1], sigma[1][2], sigma[0][2]};
+  std::array<Real, 3> e{};
+  if (k.needs_strain()) {
+    Mat3 f;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) f(i, j) = F[i][j];
+    e = ErosionCriteria::principal_log_strains(f);
+  }
+  return k.point_fails(s, t, e);
 }
 
 /// The principal logarithmic strains (erosion_criteria.hpp) of lane `l` of a batch's deformation

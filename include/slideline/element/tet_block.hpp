@@ -166,7 +166,7 @@ class TetBlock final : public ElementBlock {
 
   /// ElementBlock::enable_erosion (refusals: solid_erosion::check_element_by_element).
   void enable_erosion(const ErosionCriteria& criteria) override {
-    solid_erosion::check_element_by_element<State>(criteria, part_id(), "tetrahedra (ELFORM 10)");
+    solid_erosion::check_element_by_element<State>(criteria, part_id(), "tetrahedra (ELFORM 10)", 1);
     erosion_.enable(criteria, element_count(), element_count());
   }
   const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
@@ -210,6 +210,7 @@ class TetBlock final : public ElementBlock {
   struct Point {
     Real dt, visc, damp, power;
     bool failed;
+    bool erodes = false;  ///< the point fails the *MAT_ADD_EROSION thresholds, or TEROD / CEROD
   };
 
   /// Stress of element e (law at F = edges(x) edges(X)^-1 with D = sym(sum v_I (x) grad N_I),
@@ -223,12 +224,16 @@ class TetBlock final : public ElementBlock {
     Mat3 l = Mat3::Zero();
     for (int k = 0; k < 4; ++k) l += v[k] * g.row(k);
     const Tensor3<Real> d = solid_terms::symmetric_part(to_tensor3(l));
-    Tensor3<Real> sigma = mat_.update(state_[e], to_tensor3(ed * edges0_inverse_[e]), d, dt);
+    const Tensor3<Real> F = to_tensor3(ed * edges0_inverse_[e]);
+    Tensor3<Real> sigma = mat_.update(state_[e], F, d, dt);
+    const bool erodes = erosion_.active() &&
+                        (solid_erosion::point_verdict(erosion_.criteria(), sigma, F, erosion_.time()) ||
+                         solid_erosion::volume_fails(erosion_.criteria(), vol / volume0_[e]));
     const Real len = 3.0 * vol / tet4::max_face_area(x);
     const Real rho = k_.rho0 * volume0_[e] / vol;
     const solid_terms::Added a = solid_terms::add_viscous_stress(sigma, d, l.trace(), vol, rho, len, k_);
     const Mat3 s = to_mat3(sigma);
-    Point p{solid_terms::stable_step(len, a.qdt, k_.c), a.visc, a.damp, 0.0, !(vol > 0.0)};
+    Point p{solid_terms::stable_step(len, a.qdt, k_.c), a.visc, a.damp, 0.0, !(vol > 0.0), erodes};
     const std::size_t s0 = 4 * static_cast<std::size_t>(e);
     Real fsum = 0.0;
     for (int k = 0; k < 4; ++k) {

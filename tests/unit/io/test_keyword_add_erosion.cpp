@@ -165,6 +165,15 @@ TEST(KeywordAddErosion, RefusedAtTheBuild) {
   EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1,,,-0.1,0.2,0.1\n,,,0.3,0.2\n"), true), "(no error)");
   // The strain criteria on shells are built (element/shell_erosion.hpp).
   EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1\n,,20,0.3\n", 1, true), true), "(no error)");
-  what = thrown(deck("*MAT_ADD_EROSION\n1\n,,20\n", 10), true);
-  EXPECT_NE(what.find("*MAT_ADD_EROSION on tetrahedra (ELFORM 10) are not implemented"), std::string::npos) << what;
+  // The thresholds on tetrahedra (ELFORM 10, one point) and fully integrated hexahedra (ELFORM 2,
+  // 8 points) are built (element/solid_erosion.hpp); NUMFIP beyond their points is refused.
+  EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1\n,,20\n", 10), true), "(no error)");
+  EXPECT_EQ(thrown(deck("*MAT_ADD_EROSION\n1,,,,,,8\n,,20\n", 2), true), "(no error)");
+  what = thrown(deck("*MAT_ADD_EROSION\n1,,,,,,2\n,,20\n", 10), true);
+  EXPECT_NE(what.find("NUMFIP of *MAT_ADD_EROSION asks for 2 failed points, but tetrahedra (ELFORM 10) have 1"),
+            std::string::npos)
+      << what;
+  what = thrown(deck("*MAT_ADD_EROSION\n1,,,,,,9\n,,20\n", 2), true);
+  EXPECT_NE(what.find("asks for 9 failed points, but fully integrated hexahedra (ELFORM 2) have 8"), std::string::npos)
+      << what;
 }
