@@ -206,6 +206,7 @@ struct Hdf5Writer::Impl {
       state_field("plastic_strain", s, set, c.plastic_strain, mask);
       state_field("energy_density", s, set, c.energy_density, mask);
       state_field("deleted", s, set, c.deleted, mask);
+      state_field("current_thickness", s, set, c.current_thickness, mask);
     }
   }
 

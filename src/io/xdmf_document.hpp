@@ -42,6 +42,7 @@ inline constexpr Field kFields[] = {
     {"material_id", Center::cell, 1, "deck material id (*PART MID)", false, true, true},
     {"thickness", Center::cell, 1, "length", true, true},
     {"deleted", Center::cell, 1, "1: deleted by erosion, 0: not"},
+    {"current_thickness", Center::cell, 1, "length (shells whose thickness changes: *CONTROL_SHELL ISTUPD)", true},
 };
 inline constexpr std::size_t kFieldCount = sizeof(kFields) / sizeof(kFields[0]);
 

@@ -145,6 +145,13 @@ void OutputRecorder::begin(const std::vector<OutputSink*>& sinks, const MeshDesc
     f.energy_density.assign(n, 0.0);
     if (erodes) f.deleted.assign(n, 0.0);
   }
+  // The current shell thickness, where a part changes it: every shell cell of the topology starts
+  // at its section's (collect_state overwrites the changing parts').
+  if (std::any_of(blocks.begin(), blocks.end(), [](const auto& b) { return !b->current_thickness().empty(); })) {
+    const std::vector<TopologyCellInfo> info = output_cell_info(blocks, mesh.cells);
+    for (std::size_t t = 0; t < mesh.cells.size(); ++t)
+      if (mesh.cells[t].topology->dimension == 2) cell_fields_[t].current_thickness = info[t].thickness;
+  }
   for (auto* s : sinks) s->begin(channels_, mesh);
   sinks_ = &sinks;
 }
@@ -166,6 +173,7 @@ void OutputRecorder::collect_state(const OutputSources& src) {
   }
   for (std::size_t b = 0; b < src.blocks.size(); ++b) {
     src.blocks[b]->cell_outputs(nodes, block_cells_[b]);
+    const std::span<const Real> thickness = src.blocks[b]->current_thickness();
     for (std::size_t e = 0; e < block_cells_[b].size(); ++e) {
       const CellOutput& c = block_cells_[b][e];
       const CellSlot s = slots_[b][e];
@@ -180,6 +188,7 @@ void OutputRecorder::collect_state(const OutputSources& src) {
       f.plastic_strain[k] = c.plastic_strain;
       f.energy_density[k] = c.energy_density;
       if (!f.deleted.empty()) f.deleted[k] = c.deleted ? 1.0 : 0.0;
+      if (!thickness.empty() && !f.current_thickness.empty()) f.current_thickness[k] = thickness[e];
     }
   }
 }

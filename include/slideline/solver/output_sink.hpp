@@ -51,6 +51,9 @@ struct TopologyCellFields {
   std::vector<Real> plastic_strain;  ///< 1 per cell (dimensionless)
   std::vector<Real> energy_density;  ///< 1 per cell (energy per reference volume)
   std::vector<Real> deleted;         ///< 1 per cell: 1 deleted by erosion, 0 not; empty: no part erodes
+  /// 1 per cell (surface topologies, length): the shell's current thickness; empty unless a part
+  /// changes its thickness (*CONTROL_SHELL ISTUPD; the others keep their section's).
+  std::vector<Real> current_thickness;
 };
 
 /// One output state. Nodal vectors hold 3 values per node (x, y, z interleaved); an empty span

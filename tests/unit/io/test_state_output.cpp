@@ -244,6 +244,27 @@ TEST(StateOutput, StretchedShellPlateHasThePlaneStressClosedForm) {
   for (double x : read(h5, g + "von_mises", {9})) EXPECT_NEAR(x, vm, 1e-6 * vm);
   const Real w = 0.5 * (sxx * sxx - 2 * nu * sxx * szz + szz * szz) / E;  // sigma : C^-1 : sigma / 2
   for (double x : read(h5, g + "energy_density", {9})) EXPECT_NEAR(x, w, 1e-5 * w);
+  // The thickness does not change here: no current_thickness field, the section's under /mesh.
+  EXPECT_FALSE(hdf5_exists(h5.string(), g + "current_thickness"));
+
+  // With *CONTROL_SHELL ISTUPD = 1 the elastic plane-stress thinning d ln t = -nu / (1 - nu)
+  // (d_xx + d_zz) integrates to t = t0 exp(-nu / (1 - nu) (ln(1 + a) + ln(1 + c))) (the plate's
+  // in-plane strains are uniform): each state's current_thickness holds it (to 1e-3 of the change,
+  // the rate's midpoint integration), the section's t0 stays under /mesh, and the XDMF lists it.
+  m.shell_istupd = 1;
+  const fs::path h5u = run(m, T, "plate_istupd");
+  const Real t0 = read(h5u, "/mesh/quadrilaterals_thickness", {9})[0];
+  const Real t_cf = t0 * std::exp(-nu / (1.0 - nu) * (exx + ezz));
+  const auto first = read(h5u, "/states/state_0/quadrilaterals/current_thickness", {9});
+  const auto last = read(h5u, g + "current_thickness", {9});
+  std::printf("thickness t0 %.12g, after %.12g (closed form %.12g, change %.3g)\n", t0, last[0], t_cf, t_cf - t0);
+  for (std::size_t e = 0; e < 9; ++e) {
+    EXPECT_EQ(first[e], t0);
+    EXPECT_NEAR(last[e], t_cf, 1e-3 * std::abs(t_cf - t0));
+  }
+  for (double x : read(h5u, "/mesh/quadrilaterals_thickness", {9})) EXPECT_EQ(x, t0);
+  const std::string xml = slurp(fs::path(h5u).replace_extension(".xdmf"));
+  EXPECT_NE(xml.find("Name=\"current_thickness\""), std::string::npos);
 }
 
 TEST(StateOutput, NodalContactForcesAddUpToTheInterfaceForce) {
