@@ -24,8 +24,7 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/element_block.hpp"
-#include "slideline/element/element_chunks.hpp"
-#include "slideline/element/mass_scaling_once.hpp"
+#include "slideline/element/element_by_element_solid.hpp"
 #include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/hex8.hpp"
 #include "slideline/element/solid_point_terms.hpp"
@@ -78,7 +77,7 @@ class FullHexBlock final : public ElementBlock {
         k_{mat_.wave_speed(), mat_.density(), mat_.lame_lambda(), mat_.shear_modulus(), bulk, damping.beta},
         conn_(std::move(connectivity)),
         ids_(std::move(element_ids)),
-        chunks_(static_cast<Index>(ids_.size())) {
+        common_(static_cast<Index>(ids_.size())) {
     if (!(damping.beta >= 0.0))
       throw InputError("solid part " + std::to_string(part_id_) +
                        ": the stiffness damping coefficient beta must not be negative");
@@ -124,22 +123,12 @@ class FullHexBlock final : public ElementBlock {
     const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
                                    corners.force.y.data() + force_slot_base(),
                                    corners.force.z.data() + force_slot_base()};
-    // Erosion (element_erosion.hpp) at the mean plastic strain of the 8 points, the cell output's.
-    Real* raw = rescaling_.raw_steps();
-    const Real* factor = step_factor_.empty() ? nullptr : step_factor_.data();
-    chunks_.scan(element_count(), [&](Index e) {
-      const Sums r = eroding_element<Sums>(
-          erosion_, e, dt, [&](Index k) { return with_step_factor(element_forces(nodes, k, dt, out), k, raw, factor); },
-          [&](Index k) { return mean_plastic_strain(k); },
-          [&](Index k) {
-            for (int i = 0; i < 3; ++i) std::fill_n(out[i] + 8 * static_cast<std::size_t>(k), 8, 0.0);
-          });
-      if (raw && r.dt == std::numeric_limits<Real>::max()) raw[e] = r.dt;  // deleted: adds no mass
-      return r;
-    });
-    if (erosion_.active()) energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
-    return chunks_.reduce(energy, "solid", ids_, part_id_,
-                                 "inverted (non-positive Jacobian at a Gauss point or non-finite force)");
+    // Erosion (element_erosion.hpp) by a failure strain at the mean plastic strain of the 8 points
+    // (the cell output's), by the thresholds at each point (element_forces).
+    return common_.template forces<Sums>(
+        element_count(), dt, out, energy, "solid", ids_, part_id_,
+        "inverted (non-positive Jacobian at a Gauss point or non-finite force)",
+        [&](Index k) { return element_forces(nodes, k, dt, out); }, [&](Index k) { return mean_plastic_strain(k); });
   }
 
   /// ElementBlock::reference_steps: the element loop's step at the reference geometry at rest,
@@ -153,39 +142,29 @@ class FullHexBlock final : public ElementBlock {
 
   /// ElementBlock::scale_element_masses (MS1ST = 1): element e's rho V0 / 8 per corner times factor[e].
   Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
-    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
-    const Real rho = mat_.density();
-    const auto share = [&](Index e) {
-      return ElementMassScaling::CornerShare{rho * volume0_[e] / 8.0, 0.0, 8 * e, 8};
-    };
-    return scale_corner_masses(element_count(), factor, conn_.data(), share, nodes, step_factor_.data());
+    return common_.scale_masses(factor, conn_.data(), mat_.density(), volume0_, nodes);
   }
 
   /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.
-  void enable_mass_rescaling() override {
-    rescaling_.enable(element_count(), element_count());
-    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
-  }
+  void enable_mass_rescaling() override { common_.enable_rescaling(element_count()); }
   /// ElementBlock::rescale_element_masses (MS1ST = 0): element e's physical mass rho V0 over its
   /// 8 corners.
   RescaledBlock rescale_element_masses(Real dt2ms, bool at_reference, const NodalFields& nodes,
                                        std::span<Real> corner_added, std::span<Real> /*corner_inertia*/) override {
-    if (at_reference) reference_steps(nodes, rescaling_.raw_steps_span(element_count()));
-    const Real rho = mat_.density();
-    return rescaling_.rescale(element_count(), 8, dt2ms, [&](Index e) { return rho * volume0_[e]; },
-                              step_factor_.data(), corner_added);
+    if (at_reference) reference_steps(nodes, common_.raw_steps(element_count()));
+    return common_.rescale(dt2ms, mat_.density(), volume0_, corner_added);
   }
 
-  Id smallest_step_element() const override {
-    return chunks_.smallest_step_element(ids_);
-  }
+  Id smallest_step_element() const override { return common_.smallest_step_element(ids_); }
 
   /// ElementBlock::enable_erosion (refusals: solid_erosion::check_element_by_element).
   void enable_erosion(const ErosionCriteria& criteria) override {
     solid_erosion::check_element_by_element<State>(criteria, part_id(), "fully integrated hexahedra (ELFORM 2)", 8);
-    erosion_.enable(criteria, element_count(), element_count());
+    common_.erosion().enable(criteria, element_count(), element_count());
   }
-  const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
+  const ElementErosion* erosion() const override {
+    return common_.erosion().active() ? &common_.erosion() : nullptr;
+  }
 
   /// The mean of element e's 8 points' plastic strains.
   Real mean_plastic_strain(Index e) const {
@@ -211,7 +190,7 @@ class FullHexBlock final : public ElementBlock {
           c.energy_density += mat_.energy_density(g.fbar[p]) / 8.0;
       }
       c.plastic_strain = mean_plastic_strain(e);
-      c.deleted = erosion_.active() && erosion_.deleted(e);
+      c.deleted = common_.erosion().active() && common_.erosion().deleted(e);
       if (c.deleted) c.stress = SymTensor6{}, c.energy_density = 0.0;
       c.stress_bottom = c.stress_top = c.stress;
     }
@@ -293,7 +272,8 @@ class FullHexBlock final : public ElementBlock {
     Sums s;
     Real qdt = 0.0;
     hex8::NodeMat f = hex8::NodeMat::Zero();
-    const ErosionCriteria* crit = erosion_.active() ? &erosion_.criteria() : nullptr;
+    const ElementErosion& er = common_.erosion();
+    const ErosionCriteria* crit = er.active() ? &er.criteria() : nullptr;
     int failed_points = 0;
     for (int p = 0; p < 8; ++p) {
       const Mat3 l = v.transpose() * g.b[p];  // L_ij = sum_I v_Ii B_Ij
@@ -301,7 +281,7 @@ class FullHexBlock final : public ElementBlock {
       const Real shift = (trd_mean - l.trace()) / 3.0;
       for (int i = 0; i < 3; ++i) d[i][i] += shift;
       Tensor3<Real> sigma = mat_.update(state_[8 * e + p], g.fbar[p], d, dt);
-      if (crit && solid_erosion::point_verdict(*crit, sigma, g.fbar[p], erosion_.time())) ++failed_points;
+      if (crit && solid_erosion::point_verdict(*crit, sigma, g.fbar[p], er.time())) ++failed_points;
       const solid_terms::Added a = solid_terms::add_viscous_stress(sigma, d, trd_mean, g.detj[p], rho, len, k_);
       s.visc += a.visc;
       s.damp += a.damp;
@@ -335,10 +315,7 @@ class FullHexBlock final : public ElementBlock {
   std::vector<Mat3> jacobian0_inverse_;  ///< per Gauss point (8 e + p), the reference dX/dxi inverted
   std::vector<Real> volume0_;
   std::vector<State> state_;  ///< the law's state, per Gauss point (8 e + p)
-  ElementChunks chunks_;  ///< per-chunk steps, failures and powers (sized at construction)
-  ElementErosion erosion_;  ///< inactive unless enable_erosion
-  std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
-  ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
+  ElementByElementSolid<8> common_;  ///< the element loop, erosion and mass scaling
 };
 
 }  // namespace slideline

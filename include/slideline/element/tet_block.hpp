@@ -18,8 +18,7 @@
 #include "slideline/element/block_options.hpp"
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/element_block.hpp"
-#include "slideline/element/element_chunks.hpp"
-#include "slideline/element/mass_scaling_once.hpp"
+#include "slideline/element/element_by_element_solid.hpp"
 #include "slideline/element/solid_erosion.hpp"
 #include "slideline/element/solid_point_terms.hpp"
 #include "slideline/material/solid_material.hpp"
@@ -70,7 +69,7 @@ class TetBlock final : public ElementBlock {
         k_{mat_.wave_speed(), mat_.density(), mat_.lame_lambda(), mat_.shear_modulus(), bulk, damping.beta},
         conn_(std::move(connectivity)),
         ids_(std::move(element_ids)),
-        chunks_(static_cast<Index>(ids_.size())) {
+        common_(static_cast<Index>(ids_.size())) {
     if (!(damping.beta >= 0.0))
       throw InputError("solid part " + std::to_string(part_id_) +
                        ": the stiffness damping coefficient beta must not be negative");
@@ -109,20 +108,11 @@ class TetBlock final : public ElementBlock {
     const std::array<Real*, 3> out{corners.force.x.data() + force_slot_base(),
                                    corners.force.y.data() + force_slot_base(),
                                    corners.force.z.data() + force_slot_base()};
-    Real* raw = rescaling_.raw_steps();
-    const Real* factor = step_factor_.empty() ? nullptr : step_factor_.data();
-    chunks_.scan(element_count(), [&](Index e) {
-      const Point r = eroding_element<Point>(
-          erosion_, e, dt, [&](Index k) { return with_step_factor(element_forces(nodes, k, dt, out), k, raw, factor); },
-          [&](Index k) { return plastic_strain_of(state_[k]); },
-          [&](Index k) {
-            for (int i = 0; i < 3; ++i) std::fill_n(out[i] + 4 * static_cast<std::size_t>(k), 4, 0.0);
-          });
-      if (raw && r.dt == std::numeric_limits<Real>::max()) raw[e] = r.dt;  // deleted: adds no mass
-      return r;
-    });
-    if (erosion_.active()) energy.eroded_elements += erosion_.reduce(energy.eroded_internal, energy.eroded_hourglass);
-    return chunks_.reduce(energy, "tetrahedron", ids_, part_id_, "inverted (non-positive volume or non-finite force)");
+    return common_.template forces<Point>(
+        element_count(), dt, out, energy, "tetrahedron", ids_, part_id_,
+        "inverted (non-positive volume or non-finite force)",
+        [&](Index k) { return element_forces(nodes, k, dt, out); },
+        [&](Index k) { return plastic_strain_of(state_[k]); });
   }
 
   /// ElementBlock::reference_steps: the element loop's step at the reference geometry at rest,
@@ -137,39 +127,29 @@ class TetBlock final : public ElementBlock {
 
   /// ElementBlock::scale_element_masses (MS1ST = 1): element e's rho V0 / 4 per corner times factor[e].
   Real scale_element_masses(std::span<const Real> factor, NodalFields& nodes) override {
-    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
-    const Real rho = mat_.density();
-    const auto share = [&](Index e) {
-      return ElementMassScaling::CornerShare{rho * volume0_[e] / 4.0, 0.0, 4 * e, 4};
-    };
-    return scale_corner_masses(element_count(), factor, conn_.data(), share, nodes, step_factor_.data());
+    return common_.scale_masses(factor, conn_.data(), mat_.density(), volume0_, nodes);
   }
 
   /// ElementBlock::enable_mass_rescaling: the element loop keeps its steps before the factors.
-  void enable_mass_rescaling() override {
-    rescaling_.enable(element_count(), element_count());
-    step_factor_.assign(static_cast<std::size_t>(element_count()), 1.0);
-  }
+  void enable_mass_rescaling() override { common_.enable_rescaling(element_count()); }
   /// ElementBlock::rescale_element_masses (MS1ST = 0): element e's physical mass rho V0 over its
   /// 4 corners.
   RescaledBlock rescale_element_masses(Real dt2ms, bool at_reference, const NodalFields& nodes,
                                        std::span<Real> corner_added, std::span<Real> /*corner_inertia*/) override {
-    if (at_reference) reference_steps(nodes, rescaling_.raw_steps_span(element_count()));
-    const Real rho = mat_.density();
-    return rescaling_.rescale(element_count(), 4, dt2ms, [&](Index e) { return rho * volume0_[e]; },
-                              step_factor_.data(), corner_added);
+    if (at_reference) reference_steps(nodes, common_.raw_steps(element_count()));
+    return common_.rescale(dt2ms, mat_.density(), volume0_, corner_added);
   }
 
-  Id smallest_step_element() const override {
-    return chunks_.smallest_step_element(ids_);
-  }
+  Id smallest_step_element() const override { return common_.smallest_step_element(ids_); }
 
   /// ElementBlock::enable_erosion (refusals: solid_erosion::check_element_by_element).
   void enable_erosion(const ErosionCriteria& criteria) override {
     solid_erosion::check_element_by_element<State>(criteria, part_id(), "tetrahedra (ELFORM 10)", 1);
-    erosion_.enable(criteria, element_count(), element_count());
+    common_.erosion().enable(criteria, element_count(), element_count());
   }
-  const ElementErosion* erosion() const override { return erosion_.active() ? &erosion_ : nullptr; }
+  const ElementErosion* erosion() const override {
+    return common_.erosion().active() ? &common_.erosion() : nullptr;
+  }
 
   /// The law's stress at the current geometry (its state advanced over a zero step on a copy),
   /// the state's plastic strain and, for a law with W(F), W per reference volume.
@@ -185,7 +165,7 @@ class TetBlock final : public ElementBlock {
       c.plastic_strain = plastic_strain_of(state_[e]);
       if constexpr (requires { { mat_.energy_density(F) } -> std::convertible_to<Real>; })
         c.energy_density = mat_.energy_density(F);
-      c.deleted = erosion_.active() && erosion_.deleted(e);
+      c.deleted = common_.erosion().active() && common_.erosion().deleted(e);
       if (c.deleted) c.stress = c.stress_bottom = c.stress_top = SymTensor6{}, c.energy_density = 0.0;
     }
   }
@@ -226,9 +206,9 @@ class TetBlock final : public ElementBlock {
     const Tensor3<Real> d = solid_terms::symmetric_part(to_tensor3(l));
     const Tensor3<Real> F = to_tensor3(ed * edges0_inverse_[e]);
     Tensor3<Real> sigma = mat_.update(state_[e], F, d, dt);
-    const bool erodes = erosion_.active() &&
-                        (solid_erosion::point_verdict(erosion_.criteria(), sigma, F, erosion_.time()) ||
-                         solid_erosion::volume_fails(erosion_.criteria(), vol / volume0_[e]));
+    const ElementErosion& er = common_.erosion();
+    const bool erodes = er.active() && (solid_erosion::point_verdict(er.criteria(), sigma, F, er.time()) ||
+                                        solid_erosion::volume_fails(er.criteria(), vol / volume0_[e]));
     const Real len = 3.0 * vol / tet4::max_face_area(x);
     const Real rho = k_.rho0 * volume0_[e] / vol;
     const solid_terms::Added a = solid_terms::add_viscous_stress(sigma, d, l.trace(), vol, rho, len, k_);
@@ -260,10 +240,7 @@ class TetBlock final : public ElementBlock {
   std::vector<Mat3> edges0_inverse_;  ///< per element, the reference edge matrix inverted
   std::vector<Real> volume0_;
   std::vector<State> state_;          ///< the law's state, one per element
-  ElementChunks chunks_;  ///< per-chunk steps, failures and powers (sized at construction)
-  ElementErosion erosion_;  ///< inactive unless enable_erosion
-  std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
-  ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
+  ElementByElementSolid<4> common_;  ///< the element loop, erosion and mass scaling
 };
 
 }  // namespace slideline
