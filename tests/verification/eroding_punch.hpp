@@ -77,7 +77,9 @@ struct Deck {
     const auto p = [&](int i, int j, int k) { return punch_node(i, j, k); };
     o << "101,3," << p(0, 0, 0) << "," << p(1, 0, 0) << "," << p(1, 1, 0) << "," << p(0, 1, 0) << "," << p(0, 0, 1)
       << "," << p(1, 0, 1) << "," << p(1, 1, 1) << "," << p(0, 1, 1) << "\n";
+    // Node set 3: every node of the column (a node-set slave side, SSTYP 4).
     o << "*SET_NODE_LIST\n1\n1,2,3,4\n*SET_NODE_LIST\n2\n101,102,103,104,105,106,107,108\n"
+      << "*SET_NODE_LIST_GENERATE\n3\n1,16\n"
       << "*BOUNDARY_SPC_SET\n1,0,1,1,1\n*SET_PART_LIST\n1\n1,2\n";
     // The punch's velocity -v a, one constant curve per component (VAD 0).
     const Vec3 vel = -v * axis();
