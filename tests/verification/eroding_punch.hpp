@@ -35,6 +35,7 @@ struct Deck {
   std::string sides = "1,3,2,3";  ///< card 1: SSID MSID SSTYP MSTYP (single surface: ",,5", every part)
   int erosop = 1;
   int iadj = 0;  ///< card 4's IADJ (1: also the faces between parts: the top cube's bottom)
+  std::string optional_cards;  ///< after card 4: optional cards A-F as written (blank: none)
   Real fail = 0.05;     ///< FS of both column parts (0: no erosion)
   Real v = 5.0;         ///< punch speed (length / time)
   Real gap = 0.01;      ///< initial gap between the punch face and the column top (length)
@@ -88,6 +89,7 @@ struct Deck {
         << "\n0," << vel[c] << "\n1," << vel[c] << "\n";
     o << card << "\n" << sides << "\n\n\n";
     if (card.find("ERODING") != std::string::npos) o << "0," << erosop << "," << iadj << "\n";
+    o << optional_cards;
     o << "*END\n";
     return o.str();
   }

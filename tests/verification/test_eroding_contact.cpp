@@ -307,10 +307,12 @@ TEST(ErodingContact, OtherCardsRefuseErodingParts) {
   d.card = "*CONTACT_ERODING_SURFACE_TO_SURFACE_LAGRANGE";
   w = refusal(d);
   EXPECT_NE(w.find("penalty enforcement only"), std::string::npos) << w;
-  d.card = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE";
-  d.sides = "1,3,4,3";  // node set 1: the column's base, on eroding part 2 (runs on the one-way cards)
+  // SNLOG = 1 (optional card B) would turn off the sudden-penetration rule the eroding passes have.
+  d.card = "*CONTACT_ERODING_NODES_TO_SURFACE";
+  d.optional_cards = "\n0,0,0,1\n";
   w = refusal(d);
-  EXPECT_NE(w.find("node set (SSTYP 4): not implemented on this card"), std::string::npos) << w;
+  EXPECT_NE(w.find("punch.k:"), std::string::npos) << w;
+  EXPECT_NE(w.find("SNLOG = 1 turns off the shooting-node logic"), std::string::npos) << w;
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 // spring's zero, and only further penetration is resisted (LS-DYNA's shooting-node logic, SNLOG = 0,
 // and IGNORE = 1 behave so).
 //
-// Deck: a unit plate block (part 2, elastic, base held) whose master side is its top face alone (a
+// Deck: a plate block 2 x 1 x 1 (part 2, elastic, every node held: its top face stays at z = 0) whose master side is its top face alone (a
 // segment set: no side face to meet); a cube of edge 0.5 (part 1, *MAT_PLASTIC_KINEMATIC with a
 // failure strain of 10, so the contact is an eroding one while nothing erodes) whose nodes are the
 // slaves (a node set), its bottom a depth d = 0.1 below the plate's top, moving along the plate at
@@ -14,6 +14,10 @@
 // Closed form: nothing pushes the cube, so every node keeps the velocity u, every contact force is
 // zero, and the kinetic energy stays m u^2 / 2. A vertical speed w added after the entry would be
 // resisted from the entry depth on: checked by the force on the bottom nodes, k (depth - d_entry).
+// TSSFAC 0.6: a bottom node's spring (k = SLSFAC K A^2 / V = 16.7 from the plate's 2 x 1 face, mass
+// rho 0.5^3 / 8: omega_c = 1034) and its element (omega_e ~ 2 / dt_e = 1470) together allow
+// TSSFAC 0.82 only; at the default 0.9 the node chatters and its element inverts (measured; the
+// step vote sees each spring alone: docs/contact_erosion.md, "The step and light slave nodes").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,7 +42,7 @@ struct SideEntry {
 
   std::string text() const {
     std::ostringstream o;
-    o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n0.1,\n*SECTION_SOLID\n1,1\n"
+    o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TIMESTEP\n0,0.6\n*CONTROL_TERMINATION\n0.1,\n*SECTION_SOLID\n1,1\n"
       << "*MAT_PLASTIC_KINEMATIC\n1," << kRho << "," << kE << "," << kNu << ",1.0,1.0,1.0\n0,0,10.0\n"
       << "*PART\ncube\n1,1,1\n*MAT_ELASTIC\n2," << kRho << "," << kE << "," << kNu << "\n*PART\nplate\n2,1,2\n*NODE\n";
     const auto node = [&](int id, Real x, Real y, Real z) {
@@ -52,7 +56,7 @@ struct SideEntry {
           node(101 + i + 2 * j + 4 * k, 2.0 * i, 1.0 * j, -1.0 + 1.0 * k);                 // plate
         }
     o << "*ELEMENT_SOLID\n1,1,1,2,4,3,5,6,8,7\n2,2,101,102,104,103,105,106,108,107\n"
-      << "*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8\n*SET_NODE_LIST\n2\n101,102,103,104\n"
+      << "*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8\n*SET_NODE_LIST\n2\n101,102,103,104,105,106,107,108\n"
       << "*SET_SEGMENT\n1\n105,106,108,107\n*BOUNDARY_SPC_SET\n2,0,1,1,1\n";
     const Vec3 v = rotation * Vec3(kU, 0.0, -w);
     o << "*INITIAL_VELOCITY\n1\n" << v.x() << "," << v.y() << "," << v.z() << "\n";
@@ -65,7 +69,7 @@ struct EntryRun {
   Real t_entry = -1.0;          ///< first step end with the leading bottom nodes over the plate
   Real worst_force = 0.0;       ///< largest contact force on any node (w = 0)
   Real worst_speed_error = 0.0; ///< largest |v - u e_x| of any cube node (w = 0)
-  Real kinetic0 = 0.0, kinetic1 = 0.0;
+  Real kinetic0 = 0.0, kinetic1 = 0.0;  ///< m u^2 / 2 (closed form) and the ledger's at the end
   Real worst_spring_error = 0.0;  ///< w > 0: largest |F - k (depth - d_entry)| on a bottom node
   Real largest_force = 0.0;
 };
@@ -81,7 +85,7 @@ EntryRun run(const SideEntry& deck) {
   const Mat3 back = deck.rotation.transpose();  // global -> the deck's own frame
   const Real k = 0.1 * kE / (3.0 * (1.0 - 2.0 * kNu)) * 4.0 / 2.0;  // SLSFAC K A^2 / V of the plate
   EntryRun r;
-  r.kinetic0 = sim->energy().kinetic;
+  r.kinetic0 = 0.5 * kRho * 0.125 * kU * kU;  // m u^2 / 2 of the cube
   std::array<Real, 4> entry_depth{-1.0, -1.0, -1.0, -1.0};
   while (sim->step()) {
     for (int id = 1; id <= 8; ++id) {
@@ -94,13 +98,14 @@ EntryRun run(const SideEntry& deck) {
       }
       if (id > 4) continue;  // the bottom nodes
       const bool over = x.x() > 0.0 && x.x() < 2.0;
+      const Real depth = -x.z();  // below the plate's top face (held at z = 0)
       auto& d0 = entry_depth[static_cast<std::size_t>(id - 1)];
       if (over && d0 < 0.0) {
-        d0 = -x.z();
+        d0 = depth;
         if (id == 2 && r.t_entry < 0.0) r.t_entry = sim->time();
       } else if (over) {
         // Beyond the entry depth the spring pushes with k (depth - d_entry), none short of it.
-        const Real expected = k * std::max(Real(0), -x.z() - d0);
+        const Real expected = k * std::max(Real(0), depth - d0);
         r.worst_spring_error = std::max(r.worst_spring_error, std::abs(f.z() - expected));
       }
     }
