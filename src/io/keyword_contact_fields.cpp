@@ -525,19 +525,6 @@ Real read_xpene(const Context& ctx, const Block& b) {
 
 void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c) {
   read_contact_card_a(ctx, b, c);
-  // SNLOG != 0 turns off the shooting-node logic, which the passes of a contact with eroding parts
-  // have (docs/contact_erosion.md, "Sudden penetrations"): refused on the eroding cards; on the
-  // others warned (check_remaining), where it acts only if a part erodes.
-  if (c.eroding && b.next + 1 < b.cards.size()) {
-    const Line& l = b.cards[b.next + 1];
-    int snlog = 0;
-    Card(ctx, l, b.keyword, kStandard).get(3, "SNLOG", snlog);
-    if (snlog != 0)
-      throw NotImplementedError(ctx.where(l.number) + b.keyword + " optional card B: SNLOG = " +
-                                std::to_string(snlog) + " turns off the shooting-node logic, which the eroding "
-                                "contacts always have here (sudden penetrations kept as the springs' zero; "
-                                "docs/contact_erosion.md): not implemented");
-  }
   c.ignore = read_ignore(ctx, b, 2, 1, "optional card C");
   if (c.ignore != 0) {
     // Penalty sliding interfaces keep the penetrations; Lagrange is refused when the model is
