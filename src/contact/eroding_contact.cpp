@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "slideline/contact/make_contact_interface.hpp"
+#include "slideline/contact/search/contact_erosion.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/element_erosion.hpp"
@@ -106,6 +107,49 @@ void drop_symmetry_faces(ContactSide& side, const ContactBuildContext& ctx) {
 
 }  // namespace
 
+Surface eroding_node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& where) {
+  ContactSide side;
+  side.surface = node_set_faces(nodes, ctx, where);
+  for (const auto& [pid, part_nodes] : ctx.sets.part_nodes)
+    if (std::any_of(nodes.begin(), nodes.end(),
+                    [&](Index n) { return std::binary_search(part_nodes.begin(), part_nodes.end(), n); }))
+      side.parts.push_back(pid);
+  add_interior_faces(side, ctx, where, false);
+  return std::move(side.surface);
+}
+
+void set_node_set_slave_elements(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx) {
+  // Per node: the erodible elements that hold it, and whether one that cannot erode does.
+  const std::size_t n_nodes = ctx.nodes.size();
+  std::vector<std::uint8_t> fixed(n_nodes, 0);
+  std::vector<std::vector<std::array<Index, 2>>> held(n_nodes);
+  for (std::size_t b = 0; b < ctx.blocks.size(); ++b) {
+    const ElementBlock& block = *ctx.blocks[b];
+    const Index count = block.element_count();
+    const std::span<const Index> conn = block.connectivity();
+    if (count == 0) continue;
+    const std::size_t per = conn.size() / static_cast<std::size_t>(count);
+    const bool erodes = block_erodes(ctx, static_cast<Index>(b));
+    for (Index e = 0; e < count; ++e)
+      for (std::size_t a = 0; a < per; ++a) {
+        const auto n = static_cast<std::size_t>(conn[static_cast<std::size_t>(e) * per + a]);
+        if (!erodes) {
+          fixed[n] = 1;
+        } else if (held[n].empty() || held[n].back() != std::array<Index, 2>{static_cast<Index>(b), e}) {
+          held[n].push_back({static_cast<Index>(b), e});  // a degenerate element repeats a node
+        }
+      }
+  }
+  std::vector<Index> row(slaves.size() + 1, 0);
+  std::vector<std::array<Index, 2>> elements;
+  for (std::size_t i = 0; i < slaves.size(); ++i) {
+    const auto n = static_cast<std::size_t>(slaves[i]);
+    if (!fixed[n]) elements.insert(elements.end(), held[n].begin(), held[n].end());
+    row[i + 1] = static_cast<Index>(elements.size());
+  }
+  erosion.set_slave_elements(std::move(row), std::move(elements));
+}
+
 void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx, const std::vector<Id>& eroding_part) {
   if (spec.symmetry_faces_out) {
     // ISYM = 1, eroding parts or not: the exterior faces now, the interior ones as they are added.
@@ -137,11 +181,13 @@ void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx
     throw NotImplementedError(spec.where + ": " + part + "the mortar coupling (_MORTAR) with eroding parts is not "
                                                          "implemented (the slave surface's weights would not follow "
                                                          "the erosion)");
-  if (spec.node_set_slaves)
+  if (spec.node_set_slaves && spec.form != F::automatic_nodes_to_surface)
     for (Index n : spec.slave.nodes)
       if (eroding_part[static_cast<std::size_t>(n)] != 0)
         throw NotImplementedError(spec.where + ": part " + std::to_string(eroding_part[static_cast<std::size_t>(n)]) +
-                                  " can erode and holds slave nodes of a node set (SSTYP 4): not implemented; "
+                                  " can erode and holds slave nodes of a node set (SSTYP 4): not implemented on this "
+                                  "card (a node-set slave side with eroding parts runs on "
+                                  "*CONTACT_ERODING_NODES_TO_SURFACE and *CONTACT_AUTOMATIC_NODES_TO_SURFACE); "
                                   "select the slave side by part (SSTYP 2 or 3)");
   if (spec.interior_faces) {
     add_interior_faces(spec.slave, ctx, spec.where + ": SSID", spec.interior_faces_between_parts_only);

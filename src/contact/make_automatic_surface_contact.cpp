@@ -171,9 +171,13 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
   std::vector<Real> offsets = segment_offsets(master, out.sides, spec);
   // Orientation of a solid node: its own faces (the union, the slave surface, or for a node set
   // the faces of the parts it lies on).
-  const Surface own = two_sided              ? master
-                      : spec.node_set_slaves ? node_set_faces(pass_side.nodes, ctx, spec.where + ": SSID")
-                                             : spec.slave.surface;
+  // With eroding parts a node set's own faces include the interior faces of its erodible solids
+  // (eroding_node_set_faces), so that the faces a deletion lays bare orient it.
+  const Surface own = two_sided ? master
+                      : spec.node_set_slaves
+                          ? (spec.eroding ? eroding_node_set_faces(pass_side.nodes, ctx, spec.where + ": SSID")
+                                          : node_set_faces(pass_side.nodes, ctx, spec.where + ": SSID"))
+                          : spec.slave.surface;
   // The automatic pass (skip incident segments and a shell part's own segments, orientation of
   // solid faces, re-pick among the candidates between searches) at SLSFAC x SFS (the reader
   // refuses SFM != SFS for a one-pass interface).
@@ -187,8 +191,12 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
                                    followed_segment_offsets(master, out.sides, spec));
   // Eroding parts (docs/contact_erosion.md): two-sided, the slaves lie on the pass's surface; one
   // way, on their own side's.
-  if (spec.eroding)
-    out.pass->set_erosion(ContactErosion(master, two_sided ? nullptr : &own, pass_side.nodes));
+  // A node set's slaves stay while an element holds them (set_node_set_slave_elements).
+  if (spec.eroding) {
+    ContactErosion erosion(master, two_sided ? nullptr : &own, pass_side.nodes);
+    if (spec.node_set_slaves && !two_sided) set_node_set_slave_elements(erosion, pass_side.nodes, ctx);
+    out.pass->set_erosion(std::move(erosion));
+  }
   return out;
 }
 

@@ -32,6 +32,19 @@ void read_eroding_card4(const Context& ctx, Block& b, model::Contact& c) {
       throw InputError(at + std::to_string(i + 1) + " = " + std::to_string(v) +
                        " is not a field of this card (ISYM EROSOP IADJ)");
   }
+  // Optional card B (after card A, the next card still in the block): SNLOG != 0 turns off the
+  // shooting-node logic, which the eroding passes always have (docs/contact_erosion.md, "Sudden
+  // penetrations"): refused here; on the other cards it is warned (keyword_contact_fields.cpp).
+  if (b.next + 1 < b.cards.size()) {
+    const Line& lb = b.cards[b.next + 1];
+    int snlog = 0;
+    Card(ctx, lb, b.keyword, kStandard).get(3, "SNLOG", snlog);
+    if (snlog != 0)
+      throw NotImplementedError(ctx.where(lb.number) + c.keyword + " optional card B: SNLOG = " +
+                                std::to_string(snlog) + " turns off the shooting-node logic, which the eroding "
+                                "contacts always have here (sudden penetrations kept as the springs' zero; "
+                                "docs/contact_erosion.md): not implemented");
+  }
 }
 
 }  // namespace slideline::keyword

@@ -69,7 +69,8 @@ constexpr Rule kCardB[] = {
     {"PENMAX", 0, Use::refuse, "maximum penetration before a node is released"},
     {"THKOPT", 0, Use::refuse, "per-contact thickness option"},
     {"SHLTHK", 0, Use::refuse, "per-contact shell thickness option"},
-    {"SNLOG", 0, Use::inert, "disables shooting-node logic, which this code does not have"},
+    {"SNLOG", 0, Use::inert, "disables shooting-node logic, which this code has only on contacts with eroding "
+                             "parts (where it stays on; refused on the *CONTACT_ERODING_ cards)"},
     {"ISYM", 0, Use::refuse, "symmetry plane option"},
     {"I2D3D", 0, Use::refuse, "segment search preference of shells over solids"},
     {"SLDTHK", 0, Use::refuse, "solid element contact thickness"},

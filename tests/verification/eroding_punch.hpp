@@ -35,6 +35,7 @@ struct Deck {
   std::string sides = "1,3,2,3";  ///< card 1: SSID MSID SSTYP MSTYP (single surface: ",,5", every part)
   int erosop = 1;
   int iadj = 0;  ///< card 4's IADJ (1: also the faces between parts: the top cube's bottom)
+  std::string optional_cards;  ///< after card 4: optional cards A-F as written (blank: none)
   Real fail = 0.05;     ///< FS of both column parts (0: no erosion)
   Real v = 5.0;         ///< punch speed (length / time)
   Real gap = 0.01;      ///< initial gap between the punch face and the column top (length)
@@ -77,7 +78,9 @@ struct Deck {
     const auto p = [&](int i, int j, int k) { return punch_node(i, j, k); };
     o << "101,3," << p(0, 0, 0) << "," << p(1, 0, 0) << "," << p(1, 1, 0) << "," << p(0, 1, 0) << "," << p(0, 0, 1)
       << "," << p(1, 0, 1) << "," << p(1, 1, 1) << "," << p(0, 1, 1) << "\n";
+    // Node set 3: every node of the column (a node-set slave side, SSTYP 4).
     o << "*SET_NODE_LIST\n1\n1,2,3,4\n*SET_NODE_LIST\n2\n101,102,103,104,105,106,107,108\n"
+      << "*SET_NODE_LIST_GENERATE\n3\n1,16\n"
       << "*BOUNDARY_SPC_SET\n1,0,1,1,1\n*SET_PART_LIST\n1\n1,2\n";
     // The punch's velocity -v a, one constant curve per component (VAD 0).
     const Vec3 vel = -v * axis();
@@ -86,6 +89,7 @@ struct Deck {
         << "\n0," << vel[c] << "\n1," << vel[c] << "\n";
     o << card << "\n" << sides << "\n\n\n";
     if (card.find("ERODING") != std::string::npos) o << "0," << erosop << "," << iadj << "\n";
+    o << optional_cards;
     o << "*END\n";
     return o.str();
   }

@@ -133,6 +133,59 @@ TEST(ErodingContact, NodesToSurfaceAndSingleSurfaceCardsAgree) {
   check_punch(deck, run(deck));
 }
 
+// A node-set slave side (SSTYP 4: node set 3, every node of the column) on the one-way cards: each
+// node stays a slave while an element holding it is live (LS-DYNA ENMASS = 0), oriented by the
+// faces of the body as it is now (the interior faces its erodible solids uncover). Here that is
+// what the part side does (every column node is on its surface), so the closed forms of
+// check_punch hold and the histories are those of SSTYP 2 to the bit. The top cube's four top
+// nodes, held by it alone, leave the contact in the cycle it is deleted: at the end they are still
+// behind the punch face (they went on with the punch's speed, at the penalty depth F_f / (4 k) they
+// had), with no force since the deletion until the next cube's top meets the punch.
+TEST(ErodingContact, NodeSetSlavesLeaveWithTheirLastElement) {
+  for (const char* card : {"*CONTACT_ERODING_NODES_TO_SURFACE", "*CONTACT_AUTOMATIC_NODES_TO_SURFACE"}) {
+    SCOPED_TRACE(card);
+    Deck parts;
+    parts.card = card;
+    Deck set = parts;
+    set.sides = "3,3,4,3";
+    const PunchRun by_set = run(set), by_part = run(parts);
+    check_punch(set, by_set);
+    EXPECT_EQ(by_set.force, by_part.force);
+    EXPECT_EQ(by_set.final_x, by_part.final_x);
+    // The freed nodes (internal index = deck id - 1 here: ids 1..16 then 101..108, in order) behind
+    // the punch face at the end, by about the penalty depth they were released at.
+    const Vec3 a = set.axis();
+    Real punch_face = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t u = 3 * static_cast<std::size_t>(16 + k);
+      punch_face += 0.25 * Vec3(by_set.final_x[u], by_set.final_x[u + 1], by_set.final_x[u + 2]).dot(a);
+    }
+    for (int j = 0; j <= 1; ++j)
+      for (int i = 0; i <= 1; ++i) {
+        const std::size_t u = 3 * static_cast<std::size_t>(Deck::column_node(i, j, 3) - 1);
+        const Real behind = Vec3(by_set.final_x[u], by_set.final_x[u + 1], by_set.final_x[u + 2]).dot(a) - punch_face;
+        std::printf("freed node %d: %.4g behind the punch face at the end (F_f / (4 k) = %.4g)\n",
+                    Deck::column_node(i, j, 3), behind, failure_force() / (4.0 * node_stiffness()));
+        EXPECT_GT(behind, 0.0);
+      }
+  }
+}
+
+// The node-set side turned about an oblique axis: the same deletion, contact times and depths.
+TEST(ErodingContact, RotatedNodeSetSlavesGiveTheSameAnswers) {
+  Deck deck;
+  deck.card = "*CONTACT_ERODING_NODES_TO_SURFACE";
+  deck.sides = "3,3,4,3";
+  const PunchRun straight = run(deck);
+  Deck turned_deck = deck;
+  turned_deck.rotation = Eigen::AngleAxis<Real>(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  const PunchRun turned = run(turned_deck);
+  const Checked a = check_punch(deck, straight), b = check_punch(turned_deck, turned);
+  EXPECT_NEAR(b.t_del, a.t_del, 1.01 * straight.max_dt);
+  EXPECT_NEAR(b.t_first, a.t_first, 1.01 * straight.max_dt);
+  EXPECT_NEAR(b.deepest, a.deepest, 1e-3);
+}
+
 // The same through *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE: the automatic cards update their
 // surfaces too (interior faces included, as EROSOP = 1).
 TEST(ErodingContact, AutomaticSurfaceToSurfaceUpdatesItsSurface) {
@@ -254,10 +307,12 @@ TEST(ErodingContact, OtherCardsRefuseErodingParts) {
   d.card = "*CONTACT_ERODING_SURFACE_TO_SURFACE_LAGRANGE";
   w = refusal(d);
   EXPECT_NE(w.find("penalty enforcement only"), std::string::npos) << w;
-  d.card = "*CONTACT_AUTOMATIC_NODES_TO_SURFACE";
-  d.sides = "1,3,4,3";  // node set 1: the column's base, on eroding part 2
+  // SNLOG = 1 (optional card B) would turn off the sudden-penetration rule the eroding passes have.
+  d.card = "*CONTACT_ERODING_NODES_TO_SURFACE";
+  d.optional_cards = "\n0,0,0,1\n";
   w = refusal(d);
-  EXPECT_NE(w.find("node set (SSTYP 4)"), std::string::npos) << w;
+  EXPECT_NE(w.find("punch.k:"), std::string::npos) << w;
+  EXPECT_NE(w.find("SNLOG = 1 turns off the shooting-node logic"), std::string::npos) << w;
 }
 
 }  // namespace

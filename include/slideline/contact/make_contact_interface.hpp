@@ -3,12 +3,16 @@
 /// ContactAlgorithm class: src/contact/make_contact_interface.cpp dispatches on the DYNA3D type
 /// and enforcement; each family of interfaces has its own factory file, which reads only the spec.
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/interface_spec.hpp"
 
 namespace slideline {
+
+class ContactErosion;
 
 /// Contact with eroding parts (docs/contact_erosion.md), before make_contact_interface():
 /// `eroding_part` holds, per internal node, the deck id of an eroding part that holds it (0:
@@ -17,6 +21,15 @@ namespace slideline {
 /// faces of its sides' solids (InterfaceSpec::interior_faces) and spec.eroding; any other is
 /// refused (NotImplementedError naming the card, the part and the cards that support it).
 void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx, const std::vector<Id>& eroding_part);
+
+/// A node-set slave side with eroding parts (SSTYP 4; docs/contact_erosion.md): the faces that
+/// orient its nodes, the exterior faces of the parts its nodes lie on and every interior face of
+/// their erodible solids (each once per owning element, as EROSOP = 1 adds them), so that a node
+/// is oriented by the faces of the body as it is now.
+Surface eroding_node_set_faces(const std::vector<Index>& nodes, const ContactBuildContext& ctx, const std::string& where);
+/// Keeps each slave of a node set active while an element that holds it is live
+/// (ContactErosion::set_slave_elements).
+void set_node_set_slave_elements(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx);
 
 /// Builds the interface of a resolved card (resolve_interface); takes the spec's sides.
 std::unique_ptr<ContactAlgorithm> make_contact_interface(InterfaceSpec& spec, const ContactBuildContext& ctx);

@@ -268,6 +268,9 @@ class PenaltyPass {
   std::vector<Real> soft_mass_seg_;     ///< SOFT = 1: per master segment, its smallest nodal mass
   std::vector<Real> friction_cap_seg_;  ///< VC: per master segment, VC x its area (force)
   std::vector<Real> g0_;                ///< initial-penetration allowance (length)
+  /// Eroding passes: per slave, the segment it was on last cycle in contact or at its spring's zero
+  /// (gap <= 0), -1 none: the sudden-penetration rule (docs/contact_erosion.md) acts on a change.
+  std::vector<Index> held_segment_;
   std::vector<Real> gap_;
   std::vector<PenaltyRecord> records_;
   Real dt_ = std::numeric_limits<Real>::max();

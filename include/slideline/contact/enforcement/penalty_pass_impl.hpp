@@ -69,6 +69,7 @@ inline void PenaltyPass::initialize(const NodalFields& nodes, std::vector<Real> 
   touched_.assign(n, 0);
   ue_.assign(n, Vec3::Zero());
   g0_.assign(n, 0.0);
+  held_segment_.assign(eroding_ ? n : 0, -1);
   gap_.assign(n, std::numeric_limits<Real>::infinity());
   records_.assign(n, PenaltyRecord{});
   initial_count_ = detect_initial_penetrations(nodes, initial_max_);
@@ -172,6 +173,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   if (s < 0) {
     gap_[i] = std::numeric_limits<Real>::infinity();
     ue_[i] = Vec3::Zero();
+    if (eroding_) held_segment_[i] = -1;
     return;
   }
   const Surface& master = pairs_.master();
@@ -205,6 +207,18 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   // deeper than its depth limit (ContactPairs::depth_limit) is not in contact with it.
   const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
   Real gap = raw - point.offset;
+  // Eroding passes (docs/contact_erosion.md, "Sudden penetrations"): a slave behind a segment it
+  // was not on last cycle (free then, or on another segment), deeper than the penetration it had
+  // there plus twice its approach over the step, came in from the side or was laid bare inside (a
+  // node out of a crater under its rim, a face uncovered in a body), not through this face: the
+  // excess becomes the spring's zero, as LS-DYNA's shooting-node logic and IGNORE = 1 do, and only
+  // further penetration is resisted. On a change of segment the old zero goes.
+  if (eroding_ && gap < 0.0 && s != held_segment_[i] && times.dt_prev > 0.0) {
+    const Real reach = std::max(Real(0), -n.dot(cp.dv)) * times.dt_prev;
+    const Real before = held_segment_[i] >= 0 ? std::max(Real(0), -gap_[i]) : 0.0;
+    const Real excess = -gap - before;
+    g0_[i] = excess > 2.0 * reach ? excess : 0.0;
+  }
   if (g0_[i] > 0.0) {
     g0_[i] = std::min(g0_[i], std::max(Real(0), -gap));
     gap += g0_[i];
@@ -217,9 +231,11 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
     ue_[i] = Vec3::Zero();
     if (!beside && gap > 0.0 && !touched_[i]) pairs_.forget_side(i);  // free: re-detect the side
     if (beside || too_deep) gap_[i] = std::numeric_limits<Real>::infinity();
+    if (eroding_) held_segment_[i] = gap_[i] <= 0.0 ? s : -1;
     return;
   }
   touched_[i] = 1;
+  if (eroding_) held_segment_[i] = s;
   Real fn = -k * gap;  // > 0 compressive
   Real step_factor = 1.0;
   if (opt_.viscous_damping > 0.0) {

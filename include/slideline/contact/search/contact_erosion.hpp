@@ -12,7 +12,9 @@
 /// - a slave node is active while it lies on an active face of its own surface (the surface that
 ///   orients it), or when it has no face there at all (a node that no element of a tracked part
 ///   holds). A node freed of all its elements leaves the contact (LS-DYNA ENMASS = 0); so does a
-///   node still inside the body (all its faces interior).
+///   node still inside the body (all its faces interior). A node-set slave side
+///   (set_slave_elements) instead keeps every node of the set while an element holding it is
+///   live: the set names its slaves; its own faces only orient them.
 /// update() re-reads the deletions once per cycle, before the search (the elements of the cycle
 /// have run: src/solver/simulation_forces.cpp); it allocates nothing, and each flag is a pure
 /// function of the deletion states, so nothing depends on the thread count.
@@ -130,10 +132,23 @@ class ContactErosion {
     slave_active_.assign(slaves.size(), 1);
   }
 
+  /// Node-set slaves (SSTYP 4): slave i is active while one of the elements that hold it is live,
+  /// faces or not (the set names its nodes; LS-DYNA ENMASS = 0 drops a node when its last element
+  /// goes). `row` (per slave + 1) indexes `elements`, {block, element} of the erodible elements
+  /// that hold slave i; a slave with none (held by an element that cannot erode, or by none) is
+  /// always active. Before bind(); allocates.
+  void set_slave_elements(std::vector<Index> row, std::vector<std::array<Index, 2>> elements) {
+    by_element_ = true;
+    element_row_ = std::move(row);
+    elements_ = std::move(elements);
+  }
+
   /// Binds both surfaces to the blocks' deletion states and sets the flags. Allocates.
   void bind(const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
     master_.bind(blocks);
     if (!same_) own_.bind(blocks);
+    erosion_.assign(blocks.size(), nullptr);
+    for (std::size_t b = 0; b < blocks.size(); ++b) erosion_[b] = std::as_const(*blocks[b]).erosion();
     update_slaves();
   }
   /// True when a segment of either surface can erode.
@@ -152,12 +167,25 @@ class ContactErosion {
   std::span<const std::uint8_t> slave_active() const { return slave_active_; }
 
  private:
+  bool element_live(const std::array<Index, 2>& be) const {
+    const auto b = static_cast<std::size_t>(be[0]);
+    const ElementErosion* er = b < erosion_.size() ? erosion_[b] : nullptr;
+    return !er || !er->active() || !er->deleted(be[1]);
+  }
+
   bool update_slaves() {
     const auto own = own_active();
     bool changed = false;
     for (std::size_t i = 0; i + 1 < row_.size(); ++i) {
-      bool a = row_[i + 1] == row_[i];
-      for (Index f = row_[i]; f < row_[i + 1] && !a; ++f) a = own[static_cast<std::size_t>(faces_[static_cast<std::size_t>(f)])] != 0;
+      bool a;
+      if (by_element_) {
+        a = element_row_[i + 1] == element_row_[i];
+        for (Index e = element_row_[i]; e < element_row_[i + 1] && !a; ++e)
+          a = element_live(elements_[static_cast<std::size_t>(e)]);
+      } else {
+        a = row_[i + 1] == row_[i];
+        for (Index f = row_[i]; f < row_[i + 1] && !a; ++f) a = own[static_cast<std::size_t>(faces_[static_cast<std::size_t>(f)])] != 0;
+      }
       changed = changed || (slave_active_[i] != 0) != a;
       slave_active_[i] = a ? 1 : 0;
     }
@@ -169,6 +197,10 @@ class ContactErosion {
   std::vector<Index> row_;    ///< per slave + 1: its own faces [row_[i], row_[i+1]) in faces_
   std::vector<Index> faces_;  ///< own-surface segment indices
   std::vector<std::uint8_t> slave_active_;
+  bool by_element_ = false;                     ///< set_slave_elements(): the node-set rule
+  std::vector<Index> element_row_;              ///< per slave + 1: its erodible elements in elements_
+  std::vector<std::array<Index, 2>> elements_;  ///< {block, element}
+  std::vector<const ElementErosion*> erosion_;  ///< per block; null: it does not erode
 };
 
 }  // namespace slideline

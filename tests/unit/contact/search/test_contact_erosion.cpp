@@ -1,6 +1,7 @@
 // ContactErosion (contact/search/contact_erosion.hpp): which faces are partners, and the flags
 // while every element lives: a face with a partner (an interior face) is inactive, an exterior
-// face active; a slave node is active while one of its own faces is, or when it has none. The
+// face active; a slave node is active while one of its own faces is, or when it has none (a node
+// set's: while an element holding it lives). The
 // flags after deletions are checked end to end by tests/verification/test_eroding_contact.cpp.
 #include <gtest/gtest.h>
 
@@ -54,6 +55,21 @@ TEST(ContactErosion, SlaveNodesFollowTheirOwnFaces) {
   two.bind({});
   EXPECT_EQ(std::vector<std::uint8_t>(two.slave_active().begin(), two.slave_active().end()), want);
   EXPECT_EQ(two.own_active().size(), 4u);
+}
+
+// A node set's slaves (set_slave_elements) follow the elements that hold them, not their faces:
+// the middle node, whose faces are all interior (inactive by the face rule above), is a slave while
+// its elements live; so is a node held by no erodible element (99).
+TEST(ContactErosion, NodeSetSlavesFollowTheirElements) {
+  const Surface s = stacked_faces();
+  Surface own = stacked_faces();
+  const std::vector<Index> slaves = {0, 4, 8, 99};
+  ContactErosion e(s, &own, slaves);
+  e.set_slave_elements({0, 1, 3, 4, 4}, {{0, 0}, {0, 0}, {0, 1}, {0, 1}});
+  e.bind({});  // no block erodes: every element lives
+  const std::vector<std::uint8_t> want = {1, 1, 1, 1};
+  EXPECT_EQ(std::vector<std::uint8_t>(e.slave_active().begin(), e.slave_active().end()), want);
+  EXPECT_FALSE(e.update());
 }
 
 }  // namespace
