@@ -177,6 +177,11 @@ void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx
                          (spec.form == F::dyna3d || spec.form == F::automatic_surface_to_surface ||
                           spec.form == F::automatic_nodes_to_surface);
   if (!automatic) throw NotImplementedError(spec.where + ": " + part + "not implemented for this card; " + kSupported);
+  if (spec.snlog != 0)
+    throw NotImplementedError(spec.where + ": " + part + "optional card B: SNLOG = " + std::to_string(spec.snlog) +
+                              " turns off the shooting-node logic, which a contact with eroding parts always has "
+                              "here (sudden penetrations kept as the springs' zero; docs/contact_erosion.md): "
+                              "not implemented");
   if (spec.mortar_coupling)
     throw NotImplementedError(spec.where + ": " + part + "the mortar coupling (_MORTAR) with eroding parts is not "
                                                          "implemented (the slave surface's weights would not follow "

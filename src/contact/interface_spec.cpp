@@ -243,6 +243,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   spec.window = ContactWindow{card.bt, card.dt};
   spec.transmitted_output = card.type == T::automatic && card.form == model::ContactForm::dyna3d;
   spec.eroding_card = card.eroding;
+  spec.snlog = card.snlog;
   spec.interior_faces = !card.eroding || card.erosop == 1 || card.iadj == 1;
   spec.interior_faces_between_parts_only = card.eroding && card.erosop == 0 && card.iadj == 1;
   spec.symmetry_faces_out = card.eroding && card.isym == 1;

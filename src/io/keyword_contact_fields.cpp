@@ -69,8 +69,7 @@ constexpr Rule kCardB[] = {
     {"PENMAX", 0, Use::refuse, "maximum penetration before a node is released"},
     {"THKOPT", 0, Use::refuse, "per-contact thickness option"},
     {"SHLTHK", 0, Use::refuse, "per-contact shell thickness option"},
-    {"SNLOG", 0, Use::inert, "disables shooting-node logic, which this code has only on contacts with eroding "
-                             "parts (where it stays on; refused on the *CONTACT_ERODING_ cards)"},
+    {"SNLOG", 0, Use::honoured, ""},  // read by read_contact_optional_cards; refused where a part erodes
     {"ISYM", 0, Use::refuse, "symmetry plane option"},
     {"I2D3D", 0, Use::refuse, "segment search preference of shells over solids"},
     {"SLDTHK", 0, Use::refuse, "solid element contact thickness"},
@@ -525,6 +524,8 @@ Real read_xpene(const Context& ctx, const Block& b) {
 
 void read_contact_optional_cards(const Context& ctx, Block& b, model::Contact& c) {
   read_contact_card_a(ctx, b, c);
+  // SNLOG (card B): 1 refused where a part erodes (prepare_eroding_contact), nothing to act on elsewhere.
+  if (b.next + 1 < b.cards.size()) Card(ctx, b.cards[b.next + 1], b.keyword, kStandard).get(3, "SNLOG", c.snlog);
   c.ignore = read_ignore(ctx, b, 2, 1, "optional card C");
   if (c.ignore != 0) {
     // Penalty sliding interfaces keep the penetrations; Lagrange is refused when the model is

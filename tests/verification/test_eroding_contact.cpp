@@ -313,6 +313,12 @@ TEST(ErodingContact, OtherCardsRefuseErodingParts) {
   w = refusal(d);
   EXPECT_NE(w.find("punch.k:"), std::string::npos) << w;
   EXPECT_NE(w.find("SNLOG = 1 turns off the shooting-node logic"), std::string::npos) << w;
+  // The same on an automatic card once a part on it erodes (the build: the reader cannot know).
+  d.card = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE";
+  w = refusal(d);
+  EXPECT_NE(w.find("punch.k:"), std::string::npos) << w;
+  EXPECT_NE(w.find("part 2 can erode"), std::string::npos) << w;
+  EXPECT_NE(w.find("SNLOG = 1 turns off the shooting-node logic"), std::string::npos) << w;
 }
 
 }  // namespace

@@ -131,6 +131,10 @@ struct InterfaceSpec {
   /// direction of the face's normal) are left out of both sides (prepare_eroding_contact).
   bool symmetry_faces_out = false;
   bool eroding = false;
+  /// SNLOG of optional card B (1: the shooting-node logic off): refused by
+  /// prepare_eroding_contact() on a pass with an eroding part, whose sudden-penetration rule is
+  /// that logic; nothing to act on elsewhere.
+  int snlog = 0;
 };
 
 /// Resolves `card` (the `position`-th contact of the deck, from 1). Throws NotImplementedError

@@ -396,6 +396,8 @@ struct Contact {
   // Optional card A
   int soft = 0;        ///< SOFT: 0 the segment stiffness rule; 1 also SOFSCL x the nodal-mass stiffness
   Real sofscl = 0.1;   ///< SOFSCL (0 or blank: 0.1)
+  // Optional card B
+  int snlog = 0;   ///< SNLOG: 0 shooting-node logic on (the eroding passes have it), 1 off (refused there)
   // Optional card C
   int ignore = 0;  ///< IGNORE: 0 *CONTROL_CONTACT's; 1, 2 initial penetrations kept as the springs' zero
   // Card 4 (tiebreak)
