@@ -111,6 +111,7 @@ def main():
     ap.add_argument('--face-spc', action='store_true',
                     help='instead of the wall, the impact face held in z from the start (as Simo 1992 and '
                          'the Abaqus benchmark: nodes that reach the wall stay on it), no gap')
+    ap.add_argument('--elform', type=int, default=1, help='*SECTION_SOLID ELFORM (1 one-point, 2 selective-reduced)')
     ap.add_argument('--tssfac', type=float, default=0.0, help='*CONTROL_TIMESTEP TSSFAC (0: 0.9)')
     args = ap.parse_args()
     k, r, m = args.k, args.r, args.m
@@ -160,7 +161,7 @@ def main():
     w(f'{1:10d}{1:10d}{1:10d}')
     w('*SECTION_SOLID')
     w('$#   SECID    ELFORM')
-    w(f'{1:10d}{1:10d}')
+    w(f'{1:10d}{args.elform:10d}')
     w('*MAT_PLASTIC_KINEMATIC')
     w('$#     MID        RO         E        PR      SIGY      ETAN      BETA')
     w(f'{1:10d}{8930.0:10.1f}{117e9:10.3e}{0.35:10.2f}{400e6:10.3e}{100e6:10.3e}{1.0:10.1f}')
