@@ -1,18 +1,26 @@
-// The Taylor bar (issue 21): a copper cylinder L0 = 32.4 mm, D0 = 6.4 mm hits a rigid wall at
-// 227 m/s; E = 117 GPa, nu = 0.35, rho = 8930 kg/m^3, bilinear isotropic hardening sigma_y =
-// 400 MPa, E_t = 100 MPa (*MAT_PLASTIC_KINEMATIC, BETA = 1), one-point hexahedra, a quarter model
-// on two symmetry planes and *RIGIDWALL_PLANAR, built from a model as a deck gives it. The
-// published figures it is compared with (final length, mushroom radius, largest effective plastic
-// strain at 80 us) are quoted in docs/verification.md, "Taylor bar", with their sources.
+// The Taylor bar (issue 21), read from a deck: tests/data/decks/taylor_bar.k (written by
+// scripts/taylor_bar_deck.py 2 2 40). A copper bar L0 = 32.4 mm, R0 = 3.2 mm strikes a
+// frictionless rigid wall (*RIGIDWALL_PLANAR, z = 0) at 227 m/s; E = 117 GPa, nu = 0.35,
+// rho = 8930 kg/m^3, bilinear isotropic hardening SIGY = 400 MPa, ETAN = 100 MPa
+// (*MAT_PLASTIC_KINEMATIC, BETA = 1); 80 us after the impact. A quarter bar of one-point hexahedra
+// (O-grid section, 4 cells across the radius, 40 along: 480 elements) on two symmetry planes
+// (*BOUNDARY_SPC_SET), default viscous hourglass control (IHQ 1, QM 0.1) and bulk viscosity.
+//
+// Published figures (docs/verification.md, "Taylor bar against published figures", with the
+// source read): final radius of the impact face 7.22 mm (the converged Q1/P0 hexahedron of Foulk
+// et al. 2021), 7.12 mm (Simo 1992), 7.11 mm (Zienkiewicz et al. 1998), 7.22-7.23 mm (the
+// composite tetrahedron of Sierra/SM and TET15-P1 of Carina on their finest meshes); final length
+// 21.42-21.48 mm (the same runs). Our refinement study of the same deck (4, 6, 8 cells across the
+// radius, scripts/taylor_bar_deck.py) is in docs/verification.md; the tolerances below come from it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "slideline/io/keyword_reader.hpp"
 #include "slideline/solver/build.hpp"
 #include "slideline/solver/simulation.hpp"
 
@@ -20,83 +28,71 @@ using namespace slideline;
 
 namespace {
 
-constexpr Real kLength = 32.4e-3, kRadius = 3.2e-3, kSpeed = 227.0, kGap = 1e-4, kEnd = 80e-6;
-
-/// The quarter bar (x, y >= 0) of n x n cells in the cross-section (the square [0,1]^2 mapped onto
-/// the quarter disc, x = R u sqrt(1 - v^2/2), y = R v sqrt(1 - u^2/2)) and m cells along z, its
-/// impact face kGap above the wall z = 0, moving at -kSpeed.
-model::Model taylor_model(int n, int m) {
-  model::Model md;
-  const auto id = [&](int i, int j, int k) { return static_cast<Id>(1 + i + (n + 1) * (j + (n + 1) * k)); };
-  model::NodeSet sym_x{1, "x0", {}, {}}, sym_y{2, "y0", {}, {}};
-  for (int k = 0; k <= m; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        const Real u = Real(i) / n, v = Real(j) / n;
-        md.nodes.push_back({id(i, j, k),
-                            Vec3(kRadius * u * std::sqrt(1 - 0.5 * v * v), kRadius * v * std::sqrt(1 - 0.5 * u * u),
-                                 kGap + kLength * k / m),
-                            0, 0});
-        if (i == 0) sym_x.nodes.push_back(id(i, j, k));
-        if (j == 0) sym_y.nodes.push_back(id(i, j, k));
-      }
-  Id eid = 1;
-  for (int k = 0; k < m; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        md.solids.push_back({eid++, 1,
-                             {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
-                              id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)}});
-  md.parts.push_back({1, "bar", 1, 1, 0, 0, {}});
-  md.solid_sections.push_back({1, 1, {}});
-  model::MatPlasticKinematic mat;
-  mat.mid = 1;
-  mat.ro = 8930.0;
-  mat.e = 117e9;
-  mat.pr = 0.35;
-  mat.sigy = 400e6;
-  mat.etan = 100e6;
-  mat.beta = 1.0;
-  md.materials.push_back(mat);
-  md.node_sets = {sym_x, sym_y};
-  model::BoundarySpc sx, sy;
-  sx.nsid = 1;
-  sx.dof = {1, 0, 0, 0, 0, 0};
-  sy.nsid = 2;
-  sy.dof = {0, 1, 0, 0, 0, 0};
-  md.spcs = {sx, sy};
-  model::RigidWallPlanar wall;
-  wall.head = Vec3(0.0, 0.0, 1.0);
-  md.rigid_walls.push_back(wall);
-  model::InitialVelocity v0;
-  v0.v = Vec3(0.0, 0.0, -kSpeed);
-  md.initial_velocities.push_back(v0);
-  md.termination.endtim = kEnd;
-  return md;
-}
-
 struct TaylorResult {
-  Real length = 0.0, radius = 0.0, max_eps = 0.0, energy_error = 0.0;
+  Real length = 0.0;        ///< extent of the bar along its axis
+  Real radius = 0.0;        ///< largest distance from the bar axis of a node of the impact face
+  Real max_eps = 0.0;       ///< largest effective plastic strain
+  Real plastic_work = 0.0;  ///< over the initial kinetic energy
+  Real hourglass = 0.0;     ///< over the initial kinetic energy
+  Real energy_error = 0.0;  ///< |balance error| over the largest energy in play
 };
 
-TaylorResult run_taylor(int n, int m) {
-  auto sim = build_simulation(taylor_model(n, m));
+model::Model taylor_deck() {
+  return read_keyword_file(std::string(SLIDELINE_SOURCE_DIR) + "/tests/data/decks/taylor_bar.k");
+}
+
+/// The references' condition instead of the wall: the impact face (the nodes nearest the wall)
+/// held along the axis z from the start, as Simo 1992 and the Carina write-up hold it (nodes that
+/// reach the wall stay on it); the face starts 0.01 mm above the plane, which changes nothing here.
+model::Model hold_face(model::Model m) {
+  Real z0 = 1.0;
+  for (const auto& n : m.nodes) z0 = std::min(z0, n.x[2]);
+  model::NodeSet face{99, "impact face", {}, {}};
+  for (const auto& n : m.nodes)
+    if (n.x[2] == z0) face.nodes.push_back(n.id);
+  m.node_sets.push_back(face);
+  model::BoundarySpc spc;
+  spc.nsid = face.sid;
+  spc.dof = {0, 0, 1, 0, 0, 0};
+  m.spcs.push_back(spc);
+  m.rigid_walls.clear();
+  return m;
+}
+
+/// Runs `m` to `end` (0: the deck's end time) and measures along the bar axis `axis` (the wall
+/// normal; the wall plane passes through the origin).
+TaylorResult run_taylor(model::Model m, const Vec3& axis, Real end = 0.0) {
+  if (end > 0.0) m.termination.endtim = end;
+  auto sim = build_simulation(m);
+  // The impact face: the nodes nearest the wall at the start.
+  const auto& x0 = sim->nodes().x;
+  Real d0 = 1.0;
+  for (std::size_t i = 0; i < x0.x.size(); ++i) d0 = std::min(d0, Vec3(x0.x[i], x0.y[i], x0.z[i]).dot(axis));
+  std::vector<Index> face;
+  for (std::size_t i = 0; i < x0.x.size(); ++i)
+    if (Vec3(x0.x[i], x0.y[i], x0.z[i]).dot(axis) < d0 + 1e-9) face.push_back(static_cast<Index>(i));
   sim->run({});
   TaylorResult r;
   const auto& x = sim->nodes().x;
-  Real zmin = 1.0;
-  for (std::size_t i = 0; i < x.z.size(); ++i) {
-    r.length = std::max(r.length, x.z[i]);
-    zmin = std::min(zmin, x.z[i]);
+  Real lo = 1.0, hi = -1.0;
+  for (std::size_t i = 0; i < x.x.size(); ++i) {
+    lo = std::min(lo, Vec3(x.x[i], x.y[i], x.z[i]).dot(axis));
+    hi = std::max(hi, Vec3(x.x[i], x.y[i], x.z[i]).dot(axis));
   }
-  r.length -= zmin;
-  // The impact face: the nodes of the first layer (k = 0), ids 1 .. (n+1)^2.
-  for (Index i = 0; i < (n + 1) * (n + 1); ++i) r.radius = std::max(r.radius, std::hypot(x.x[i], x.y[i]));
+  r.length = hi - lo;
+  for (Index i : face) {
+    const Vec3 p(x.x[i], x.y[i], x.z[i]);
+    r.radius = std::max(r.radius, (p - p.dot(axis) * axis).norm());
+  }
+  Real wp = 0.0;
   for (const auto& b : sim->blocks()) {
-    std::vector<CellOutput> cells(static_cast<std::size_t>(b->element_count()));
-    b->cell_outputs(sim->nodes(), cells);
-    for (const auto& c : cells) r.max_eps = std::max(r.max_eps, c.plastic_strain);
+    const PlasticityTotals t = b->plasticity_totals(sim->nodes());
+    r.max_eps = std::max(r.max_eps, t.max_plastic_strain);
+    wp += t.plastic_work;
   }
+  const EnergyReport& e = sim->energy();
+  r.plastic_work = wp / e.kinetic0;
+  r.hourglass = e.hourglass / e.kinetic0;
   r.energy_error = sim->energy_error_fraction();
   return r;
 }
@@ -105,30 +101,76 @@ void record(const char* tag, const TaylorResult& r) {
   ::testing::Test::RecordProperty(std::string(tag) + "_final_length_mm", std::to_string(1e3 * r.length));
   ::testing::Test::RecordProperty(std::string(tag) + "_mushroom_radius_mm", std::to_string(1e3 * r.radius));
   ::testing::Test::RecordProperty(std::string(tag) + "_max_effective_plastic_strain", std::to_string(r.max_eps));
-  std::printf("%s: final length %.3f mm, mushroom radius %.3f mm, max effective plastic strain %.3f, energy error %.2e\n",
-              tag, 1e3 * r.length, 1e3 * r.radius, r.max_eps, r.energy_error);
+  std::printf("%s: final length %.3f mm, mushroom radius %.3f mm, max effective plastic strain %.3f, "
+              "plastic work %.4f and hourglass %.4f of KE0, energy error %.2e\n",
+              tag, 1e3 * r.length, 1e3 * r.radius, r.max_eps, r.plastic_work, r.hourglass, r.energy_error);
 }
 
 }  // namespace
 
-// The coarse quarter model (4 x 4 cells across, 20 along: 320 hexahedra) against the published
-// band as issue 21 quotes it (docs/verification.md, "Taylor bar"): final length about 21.4-21.5 mm,
-// mushroom radius about 7.0-7.1 mm, with a margin for a coarse mesh set before the run.
+// The coarse deck against the published figures. Tolerances, from our refinement study
+// (docs/verification.md, "Taylor bar against published figures"): the final length within 1% of
+// the published 21.42-21.48 mm (4, 6, 8 cells across the radius: 21.62, 21.55, 21.52 mm, converging
+// from above towards about 21.45), the radius within 2% of the published 7.11-7.23 mm (7.06, 7.22,
+// 7.28 mm: the coarse mesh is 0.7% below the band, the finest 0.7% above it). No published largest
+// plastic strain was retrieved: only a floor (ours 2.7, 3.1, 3.4). Nearly all the kinetic energy
+// ends as plastic work (the bar is almost at rest after 80 us; the rest went to hourglass and bulk
+// viscosity, and into the wall when the face layer stopped on it).
 TEST(TaylorBar, CopperBarAgainstPublishedFigures) {
-  const TaylorResult r = run_taylor(4, 20);
-  record("coarse_4x20", r);
-  EXPECT_NEAR(1e3 * r.length, 21.4, 0.4);
-  EXPECT_NEAR(1e3 * r.radius, 7.07, 0.35);
-  EXPECT_GT(r.max_eps, 1.5);
-  EXPECT_LT(r.energy_error, 0.02);
+  const TaylorResult r = run_taylor(taylor_deck(), Vec3(0.0, 0.0, 1.0));
+  record("coarse_2+2x40", r);
+  EXPECT_GT(1e3 * r.length, 21.42 * (1.0 - 0.01));
+  EXPECT_LT(1e3 * r.length, 21.48 * (1.0 + 0.01));
+  EXPECT_GT(1e3 * r.radius, 7.11 * (1.0 - 0.02));
+  EXPECT_LT(1e3 * r.radius, 7.23 * (1.0 + 0.02));
+  EXPECT_GT(r.max_eps, 2.0);
+  EXPECT_GT(r.plastic_work, 0.9);
+  EXPECT_LT(r.plastic_work, 1.0);
+  EXPECT_LT(r.hourglass, 0.05);
+  EXPECT_LT(r.energy_error, 0.01);
 }
 
-// Mesh dependence: the same bar at 6 x 30 and 8 x 40 cells.
-TEST(TaylorBar, MeshDependenceSlow) {
-  for (const auto& [n, m] : {std::pair{6, 30}, std::pair{8, 40}}) {
-    const TaylorResult r = run_taylor(n, m);
-    record(n == 6 ? "medium_6x30" : "fine_8x40", r);
-    EXPECT_NEAR(1e3 * r.length, 21.4, 0.4);
-    EXPECT_NEAR(1e3 * r.radius, 7.07, 0.35);
+// The same deck with the references' condition (the face held in z instead of the wall): the
+// coarse mesh is 0.7% over the length band and 1.6% under the radius band (our finer meshes land
+// inside both: 21.474 mm and 7.144 mm at 8 cells across the radius; docs/verification.md). The
+// same tolerances as above.
+TEST(TaylorBar, FaceHeldAsInTheReferences) {
+  const TaylorResult r = run_taylor(hold_face(taylor_deck()), Vec3(0.0, 0.0, 1.0));
+  record("face_held_2+2x40", r);
+  EXPECT_GT(1e3 * r.length, 21.42 * (1.0 - 0.01));
+  EXPECT_LT(1e3 * r.length, 21.48 * (1.0 + 0.01));
+  EXPECT_GT(1e3 * r.radius, 7.11 * (1.0 - 0.02));
+  EXPECT_LT(1e3 * r.radius, 7.23 * (1.0 + 0.02));
+  EXPECT_GT(r.max_eps, 2.0);
+  EXPECT_GT(r.plastic_work, 0.9);
+  EXPECT_LT(r.plastic_work, 1.0);
+  EXPECT_LT(r.hourglass, 0.05);
+  EXPECT_LT(r.energy_error, 1e-3);
+}
+
+// The rotated copy: the same deck turned by the rotation Q that takes z to x, x to y and y to z
+// (the bar along x, the wall x = 0, the symmetry planes y = 0 and z = 0 held in y and z). The
+// symmetry supports name global components, so a rotation that maps axes onto axes is the one a
+// quarter model allows (a skew support is refused). The run must give the same length, radius and
+// plastic strain at 20 us (the early, fast part of the crush, to keep the test short).
+TEST(TaylorBar, RotatedCopyGivesTheSameCrush) {
+  const model::Model m = taylor_deck();
+  model::Model q = m;
+  const auto turn = [](const Vec3& v) { return Vec3(v[2], v[0], v[1]); };
+  for (auto& n : q.nodes) n.x = turn(n.x);
+  for (auto& w : q.rigid_walls) {
+    w.tail = turn(w.tail);
+    w.head = turn(w.head);
   }
+  for (auto& v : q.initial_velocities) v.v = turn(v.v);
+  for (auto& s : q.spcs) s.dof = {s.dof[2], s.dof[0], s.dof[1], s.dof[5], s.dof[3], s.dof[4]};
+  const TaylorResult a = run_taylor(m, Vec3(0.0, 0.0, 1.0), 20e-6);
+  const TaylorResult b = run_taylor(q, Vec3(1.0, 0.0, 0.0), 20e-6);
+  record("at_20us", a);
+  record("rotated_at_20us", b);
+  EXPECT_GT(a.max_eps, 1.0);  // well into the crush
+  EXPECT_NEAR(b.length, a.length, 1e-9 * a.length);
+  EXPECT_NEAR(b.radius, a.radius, 1e-9 * a.radius);
+  EXPECT_NEAR(b.max_eps, a.max_eps, 1e-9 * a.max_eps);
+  EXPECT_NEAR(b.plastic_work, a.plastic_work, 1e-9);
 }
