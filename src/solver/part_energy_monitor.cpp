@@ -1,4 +1,4 @@
-// PartEnergyMonitor: per-part hourglass warning and negative internal energy check
+// PartEnergyMonitor: per-part hourglass warning, negative internal and hourglass energy checks
 // (include/slideline/solver/part_energy_monitor.hpp).
 #include "slideline/solver/part_energy_monitor.hpp"
 
@@ -39,6 +39,17 @@ void PartEnergyMonitor::check(Real t, long cycle, Real scale) {
                                  ", cycle " + std::to_string(cycle) +
                                  ": its material is elastic, so a mode without stiffness (hourglass, mechanism) "
                                  "is growing",
+                             t, cycle);
+    // A viscous hourglass force only dissipates and a conservative stiffness only stores: the
+    // hourglass energy of a part cannot go negative unless the control creates energy (a stiffness
+    // form whose reference the element's plastic distortion has moved, for one).
+    if (s.hourglass < -kNegativeFraction * scale)
+      throw InstabilityError("the hourglass energy of part " + std::to_string(s.part) + " went negative (" +
+                                 num(s.hourglass) + ", beyond " + num(100.0 * kNegativeFraction) +
+                                 "% of the largest energy in play, " + num(scale) + ") at t = " + num(t) +
+                                 ", cycle " + std::to_string(cycle) +
+                                 ": the hourglass control is creating energy (try *CONTROL_HOURGLASS / "
+                                 "*HOURGLASS IHQ 1-5)",
                              t, cycle);
     if (!s.warned && s.hourglass > negligible && s.hourglass > kHourglassFraction * std::max<Real>(s.internal, 0.0)) {
       s.warned = true;

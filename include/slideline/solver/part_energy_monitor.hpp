@@ -3,8 +3,10 @@
 /// (docs/solver.md, "Energy checks per part"):
 ///  - hourglass energy above kHourglassFraction (10%) of the part's internal energy: a warning,
 ///    once per part (LS-DYNA practice: results with more hourglass energy than that are suspect);
-///  - negative internal energy of a part (every deformable material here is elastic, whose stored
-///    energy cannot be negative): an instability, the run stops (InstabilityError, exit code 4).
+///  - negative internal energy of a part (the stored energy plus the plastic work cannot be
+///    negative): an instability, the run stops (InstabilityError, exit code 4);
+///  - negative hourglass energy of a part (a viscous control only dissipates, a conservative
+///    stiffness only stores): the control is creating energy, the run stops likewise.
 /// Energies are the element powers at t^n integrated over the step that ends there, as the energy
 /// ledger integrates the hourglass and bulk-viscosity powers; the internal energy is the work of
 /// all the element forces net of hourglass, bulk viscosity and stiffness damping.
@@ -32,7 +34,8 @@ class PartEnergyMonitor {
   static constexpr Real kHourglassFraction = 0.1;
   /// Energies below this fraction of the largest energy in play are round-off for both checks.
   static constexpr Real kNegligible = 1e-3;
-  /// Internal energy below -kNegativeFraction x the largest energy in play is an instability.
+  /// Internal or hourglass energy below -kNegativeFraction x the largest energy in play is an
+  /// instability.
   static constexpr Real kNegativeFraction = 1e-2;
 
   /// One slot per block (several blocks of one part are summed); energies zeroed.
@@ -44,7 +47,8 @@ class PartEnergyMonitor {
     s.internal += (e.element_power - e.hourglass_power - e.viscous_power - e.damping_power) * dt;
   }
   /// Both checks at (t, cycle); `scale` is the largest energy in play so far. Records new
-  /// hourglass warnings; throws InstabilityError for a part whose internal energy went negative.
+  /// hourglass warnings; throws InstabilityError for a part whose internal or hourglass energy
+  /// went negative.
   void check(Real t, long cycle, Real scale);
 
   /// Warnings so far, in the order they arose (the CLI prints the new ones as they come).
