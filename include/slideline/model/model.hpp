@@ -396,6 +396,7 @@ struct Contact {
   // Optional card A
   int soft = 0;        ///< SOFT: 0 the segment stiffness rule; 1 also SOFSCL x the nodal-mass stiffness
   Real sofscl = 0.1;   ///< SOFSCL (0 or blank: 0.1)
+  int bsort = 0;       ///< BSORT, read with SOFT = 2 only: cycles between searches (0: chosen here)
   // Optional card C
   int ignore = 0;  ///< IGNORE: 0 *CONTROL_CONTACT's; 1, 2 initial penetrations kept as the springs' zero
   // Card 4 (tiebreak)
