@@ -173,6 +173,7 @@ void SegmentContact::search(const Vec3Field& x, Real inflation) {
     broad_phase_->query(index_, centroid_, radius_, candidates_);
   }
   ++searches_;
+  if (admit_.size() < candidates_.size()) admit_.resize(candidates_.capacity());  // grows as candidates_ does
   std::fill(first_.begin(), first_.end(), 0);
   for (const Candidate& c : candidates_) ++first_[static_cast<std::size_t>(c.node) + 1];
   for (std::size_t s = 0; s + 1 < first_.size(); ++s) first_[s + 1] += first_[s];
@@ -202,8 +203,34 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
   for (int q = 0; q < 4; ++q) area += (jac[q] = jacobian(xa, kXi[q], kEta[q]));
   const bool a_shell = surface_.kind[au] == SegmentKind::shell;
   const Real o_a = offset_.empty() ? 0.0 : offset_[au];
-  // Candidates of an inflated search: the every-cycle search's box test, on this cycle's boxes.
+  // The candidates a may meet, whatever the Gauss point (flags admit_, a's range only): of an
+  // inflated search, those passing the every-cycle search's box test on this cycle's boxes; then
+  // the other side, no shared node, not a's element, facing.
   const Aabb reach = inflated_ ? Aabb::around(centroid_.get(a), radius_[au]) : Aabb{};
+  for (Index k = first_[au]; k < first_[au + 1]; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    admit_[ku] = 0;
+    const Index b = candidates_[ku].segment;
+    const auto bu = static_cast<std::size_t>(b);
+    if (inflated_ && !reach.overlaps(box_[bu])) continue;
+    const bool cross = ((side_[au] & 1) && (side_[bu] & 2)) || ((side_[au] & 2) && (side_[bu] & 1));
+    if (!cross || b == a || share_node(ca, &surface_.conn[4 * bu])) continue;
+    // Faces of one element never meet (a one-element-thick layer's top and bottom share no node).
+    if (surface_.element[au] == surface_.element[bu] && surface_.block[au] == surface_.block[bu]) continue;
+    const bool b_shell = surface_.kind[bu] == SegmentKind::shell;
+    const Real nn = na.dot(normal_.get(b));
+    // a must face b: normals within 60 deg of opposite. A point of a face that meets b only
+    // at b's edge (a side face beside an end face, n_a . n_b ~ 0) would otherwise read the
+    // distance to b's plane as a penetration (x_b - x_q = d n_b, so (x_b - x_q) . n_a < -d / 2
+    // is the same test: b's point lies inside a as well). A shell has two sides: within 60 deg
+    // of parallel or opposite, the side checked below once it is known.
+    if (!a_shell && !b_shell) {
+      if (!(nn < -0.5)) continue;
+    } else if (!(std::abs(nn) > 0.5)) {
+      continue;
+    }
+    admit_[ku] = 1;
+  }
   for (int q = 0; q < 4; ++q) {
     const std::size_t g = 4 * au + static_cast<std::size_t>(q);
     SegmentContactRecord& rec = records_[g];
@@ -216,25 +243,18 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
     Real best_raw = 0.0;
     int best_side = 1;
     for (Index k = first_[au]; k < first_[au + 1]; ++k) {
+      if (!admit_[static_cast<std::size_t>(k)]) continue;
       const Index b = candidates_[static_cast<std::size_t>(k)].segment;
       const auto bu = static_cast<std::size_t>(b);
-      if (inflated_ && !reach.overlaps(box_[bu])) continue;
-      const bool cross = ((side_[au] & 1) && (side_[bu] & 2)) || ((side_[au] & 2) && (side_[bu] & 1));
-      if (!cross || b == a || share_node(ca, &surface_.conn[4 * bu])) continue;
-      // Faces of one element never meet (a one-element-thick layer's top and bottom share no node).
-      if (surface_.element[au] == surface_.element[bu] && surface_.block[au] == surface_.block[bu]) continue;
       const bool b_shell = surface_.kind[bu] == SegmentKind::shell;
       const Real nn = na.dot(normal_.get(b));
-      // a must face b: normals within 60 deg of opposite. A point of a face that meets b only
-      // at b's edge (a side face beside an end face, n_a . n_b ~ 0) would otherwise read the
-      // distance to b's plane as a penetration (x_b - x_q = d n_b, so (x_b - x_q) . n_a < -d / 2
-      // is the same test: b's point lies inside a as well). A shell has two sides: within 60 deg
-      // of parallel or opposite, the side checked below once it is known.
-      if (!a_shell && !b_shell) {
-        if (!(nn < -0.5)) continue;
-      } else if (!(std::abs(nn) > 0.5)) {
-        continue;
-      }
+      // Every point of b lies within radius_[b] of its centre (a convex combination of its
+      // corners), and b is met only by a point within |g| <= max(half diagonal, o_a + o_b) of it,
+      // 1e-3 of its diagonal (< 2 radius_[b]) aside: a point farther from b's centre cannot pass
+      // the tests below, so it is not projected (the same outcome, without the Newton solve).
+      const Real o_b = offset_.empty() ? 0.0 : offset_[bu];
+      const Real within = radius_[bu] * (1.0 + 2e-3) + std::max(depth_limit_[bu], o_a + o_b);
+      if ((p - centroid_.get(b)).squaredNorm() > within * within * (1.0 + 1e-9)) continue;
       const Projection pr = project_point_to_segment(p, surface_, b, nodes.x);
       const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
       if (lateral > 1e-3 * pr.size) continue;  // beside b

@@ -142,6 +142,7 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   std::vector<Real> radius_;          ///< per segment: largest centroid-to-corner distance
   std::vector<Candidate> candidates_; ///< (segment a, segment b) of the last search
   std::vector<Index> first_;          ///< per segment a: its first candidate (CSR, segments + 1)
+  std::vector<std::uint8_t> admit_;   ///< per candidate: a may meet b (evaluate, a's range only)
   std::vector<SegmentContactRecord> records_;
   std::vector<Real> baseline_;        ///< per Gauss point: d0 (length)
   std::vector<Index> baseline_of_;    ///< per Gauss point: the segment d0 was measured on
