@@ -132,7 +132,7 @@ void BM_SegmentBasedVsType3(benchmark::State& state) {
 }  // namespace
 
 // Segments (two sides): blocks 2 n^2 + 4 n + 2 (n-1)^2 + 4 (n-1), plates n^2 + (n-1)^2.
-// Blocks n = 16, 50, 158: 1.2e3, 1.05e4, 1.0e5; plates n = 24, 71, 224: 1.1e3, 1.0e4, 1.0e5.
+// Blocks n = 16, 50, 158: 1.1e3, 1.0e4, 1.0e5; plates n = 24, 71, 224: 1.1e3, 9.9e3, 1.0e5.
 // Iterations: 16 x 5 = 80 cycles (one sliding period), 8 at 1e5.
 BENCHMARK(BM_SegmentBasedVsType3)
     ->ArgsProduct({{16, 50}, {0}, {0, 1, 2}})
