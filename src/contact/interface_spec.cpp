@@ -226,6 +226,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
     if (card.sfm != card.sfs)
       throw_contact_not_implemented(card, "SOFT = 2 with SFM other than SFS (one stiffness per segment pair: SFS)");
     spec.segment_based = true;
+    spec.search_interval = card.bsort;
   } else if (card.soft != 0 && card.soft != 1) {
     throw_contact_not_implemented(card, "SOFT = " + std::to_string(card.soft) + " (optional card A)");
   }

@@ -226,6 +226,7 @@ std::unique_ptr<ContactAlgorithm> make_segment_contact(InterfaceSpec& spec) {
                                                   std::make_unique<FclBroadPhase>(), spec.slave_stiffness);
   contact->set_offsets(std::move(offsets));
   contact->set_friction(spec.friction, spec.viscous_damping);
+  contact->set_search_interval(spec.search_interval);
   if (spec.single_surface) contact->set_single_surface(std::move(parts));
   return contact;
 }

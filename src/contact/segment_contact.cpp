@@ -108,10 +108,20 @@ void SegmentContact::initialize(const ContactContext& context) {
   slip_on_.assign(frictional_ ? 4 * n : 0, -1);
   friction_work_ = 0.0;
   BroadPhaseOptions o;
-  o.margin = 0.0;  // a new search every cycle
+  o.margin = 0.0;  // the allowance goes on the query boxes (search_ahead), the segment boxes stay tight
   broad_phase_->build(surface_, nodes.x, o);
   candidates_.reserve(16 * n);
-  search(nodes.x);
+  box_.assign(interval_ > 1 ? n : 0, Aabb{});
+  query_radius_.assign(interval_ > 1 ? n : 0, 0.0);
+  if (interval_ > 1) watch_ = SearchCadence(surface_.nodes, 1.0);  // its max_displacement only
+  Real half_diagonals = 0.0;
+  for (Real d : depth_limit_) half_diagonals += d;
+  allowance_floor_ = ns > 0 ? 1e-3 * half_diagonals / static_cast<Real>(ns) : 0.0;
+  allowance_ = 0.0;
+  searches_ = 0;
+  update_geometry(nodes.x);
+  search(nodes.x, 0.0);      // exact: the baseline below
+  since_search_ = interval_;  // the first cycle searches with its allowance
   // LS-DYNA's SOFT = 2 keeps what penetrates at t = 0 as the baseline (no node is moved).
   for (Index a = 0; a < ns; ++a) evaluate(a, nodes, true, 0.0);
   initial_count_ = 0;
@@ -128,9 +138,14 @@ void SegmentContact::initialize(const ContactContext& context) {
          name_.c_str(), static_cast<long>(initial_count_), initial_max_);
 }
 
-void SegmentContact::search(const Vec3Field& x) {
-  const Index ns = surface_.segment_count();
-  for (Index s = 0; s < ns; ++s) {
+void SegmentContact::set_search_interval(int cycles) {
+  if (cycles < 0) throw Error("SegmentContact: the search interval (BSORT) must not be negative");
+  interval_ = cycles == 0 ? kDefaultSearchInterval : cycles;
+}
+
+void SegmentContact::update_geometry(const Vec3Field& x) {
+  const bool boxes = !box_.empty();
+  parallel_for(surface_.segment_count(), [&](Index s) {
     const SegmentCorners c = segment_corners(surface_, s, x);
     const Vec3 m = 0.25 * (c[0] + c[1] + c[2] + c[3]);
     Real r = 0.0;
@@ -140,12 +155,43 @@ void SegmentContact::search(const Vec3Field& x) {
     // A shell's contact surface lies o_s off its mid-surface; the other segment's o_b <= max.
     if (!offset_.empty()) r += offset_[static_cast<std::size_t>(s)] + max_offset_;
     radius_[static_cast<std::size_t>(s)] = r;
-  }
+    if (boxes) {  // the broad phase's box of s (BroadPhase::compute_boxes, margin 0), bit for bit
+      Aabb b;
+      for (const Vec3& p : c) b.expand(p);
+      box_[static_cast<std::size_t>(s)] = b;
+    }
+  });
+}
+
+void SegmentContact::search(const Vec3Field& x, Real inflation) {
   broad_phase_->update(x);
-  broad_phase_->query(index_, centroid_, radius_, candidates_);
+  inflated_ = inflation > 0.0;
+  if (inflated_) {
+    for (std::size_t s = 0; s < radius_.size(); ++s) query_radius_[s] = radius_[s] + inflation;
+    broad_phase_->query(index_, centroid_, query_radius_, candidates_);
+  } else {
+    broad_phase_->query(index_, centroid_, radius_, candidates_);
+  }
+  ++searches_;
+  if (admit_.size() < candidates_.size()) admit_.resize(candidates_.capacity());  // grows as candidates_ does
   std::fill(first_.begin(), first_.end(), 0);
   for (const Candidate& c : candidates_) ++first_[static_cast<std::size_t>(c.node) + 1];
   for (std::size_t s = 0; s + 1 < first_.size(); ++s) first_[s + 1] += first_[s];
+}
+
+void SegmentContact::search_ahead(const NodalFields& nodes, Real dt) {
+  // The allowance a: 1.5 x the distance the fastest surface node covers in BSORT steps at its
+  // present speed (a floor a_min for bodies at rest). Candidates: the boxes around each segment's
+  // sphere grown by 5 a. Until a node has moved a, the every-cycle search's pairs are among them:
+  // a segment's centre moves < a, its radius grows < 2 a, the other's box grows < a: 4 a < 5 a,
+  // the 1 a left over for round-off (a >= a_min = 1e-3 x the mean half diagonal).
+  Real v2 = 0.0;
+  for (Index i : surface_.nodes) v2 = std::max(v2, nodes.v.get(i).squaredNorm());
+  const Real step = dt > 0.0 && std::isfinite(dt) ? dt : dt_c_;
+  allowance_ = std::max(1.5 * std::sqrt(v2) * step * static_cast<Real>(interval_), allowance_floor_);
+  search(nodes.x, 5.0 * allowance_);
+  watch_.mark_searched(nodes.x);
+  since_search_ = 0;
 }
 
 void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, Real dt_prev) {
@@ -157,6 +203,34 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
   for (int q = 0; q < 4; ++q) area += (jac[q] = jacobian(xa, kXi[q], kEta[q]));
   const bool a_shell = surface_.kind[au] == SegmentKind::shell;
   const Real o_a = offset_.empty() ? 0.0 : offset_[au];
+  // The candidates a may meet, whatever the Gauss point (flags admit_, a's range only): of an
+  // inflated search, those passing the every-cycle search's box test on this cycle's boxes; then
+  // the other side, no shared node, not a's element, facing.
+  const Aabb reach = inflated_ ? Aabb::around(centroid_.get(a), radius_[au]) : Aabb{};
+  for (Index k = first_[au]; k < first_[au + 1]; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    admit_[ku] = 0;
+    const Index b = candidates_[ku].segment;
+    const auto bu = static_cast<std::size_t>(b);
+    if (inflated_ && !reach.overlaps(box_[bu])) continue;
+    const bool cross = ((side_[au] & 1) && (side_[bu] & 2)) || ((side_[au] & 2) && (side_[bu] & 1));
+    if (!cross || b == a || share_node(ca, &surface_.conn[4 * bu])) continue;
+    // Faces of one element never meet (a one-element-thick layer's top and bottom share no node).
+    if (surface_.element[au] == surface_.element[bu] && surface_.block[au] == surface_.block[bu]) continue;
+    const bool b_shell = surface_.kind[bu] == SegmentKind::shell;
+    const Real nn = na.dot(normal_.get(b));
+    // a must face b: normals within 60 deg of opposite. A point of a face that meets b only
+    // at b's edge (a side face beside an end face, n_a . n_b ~ 0) would otherwise read the
+    // distance to b's plane as a penetration (x_b - x_q = d n_b, so (x_b - x_q) . n_a < -d / 2
+    // is the same test: b's point lies inside a as well). A shell has two sides: within 60 deg
+    // of parallel or opposite, the side checked below once it is known.
+    if (!a_shell && !b_shell) {
+      if (!(nn < -0.5)) continue;
+    } else if (!(std::abs(nn) > 0.5)) {
+      continue;
+    }
+    admit_[ku] = 1;
+  }
   for (int q = 0; q < 4; ++q) {
     const std::size_t g = 4 * au + static_cast<std::size_t>(q);
     SegmentContactRecord& rec = records_[g];
@@ -169,24 +243,18 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
     Real best_raw = 0.0;
     int best_side = 1;
     for (Index k = first_[au]; k < first_[au + 1]; ++k) {
+      if (!admit_[static_cast<std::size_t>(k)]) continue;
       const Index b = candidates_[static_cast<std::size_t>(k)].segment;
       const auto bu = static_cast<std::size_t>(b);
-      const bool cross = ((side_[au] & 1) && (side_[bu] & 2)) || ((side_[au] & 2) && (side_[bu] & 1));
-      if (!cross || b == a || share_node(ca, &surface_.conn[4 * bu])) continue;
-      // Faces of one element never meet (a one-element-thick layer's top and bottom share no node).
-      if (surface_.element[au] == surface_.element[bu] && surface_.block[au] == surface_.block[bu]) continue;
       const bool b_shell = surface_.kind[bu] == SegmentKind::shell;
       const Real nn = na.dot(normal_.get(b));
-      // a must face b: normals within 60 deg of opposite. A point of a face that meets b only
-      // at b's edge (a side face beside an end face, n_a . n_b ~ 0) would otherwise read the
-      // distance to b's plane as a penetration (x_b - x_q = d n_b, so (x_b - x_q) . n_a < -d / 2
-      // is the same test: b's point lies inside a as well). A shell has two sides: within 60 deg
-      // of parallel or opposite, the side checked below once it is known.
-      if (!a_shell && !b_shell) {
-        if (!(nn < -0.5)) continue;
-      } else if (!(std::abs(nn) > 0.5)) {
-        continue;
-      }
+      // Every point of b lies within radius_[b] of its centre (a convex combination of its
+      // corners), and b is met only by a point within |g| <= max(half diagonal, o_a + o_b) of it,
+      // 1e-3 of its diagonal (< 2 radius_[b]) aside: a point farther from b's centre cannot pass
+      // the tests below, so it is not projected (the same outcome, without the Newton solve).
+      const Real o_b = offset_.empty() ? 0.0 : offset_[bu];
+      const Real within = radius_[bu] * (1.0 + 2e-3) + std::max(depth_limit_[bu], o_a + o_b);
+      if ((p - centroid_.get(b)).squaredNorm() > within * within * (1.0 + 1e-9)) continue;
       const Projection pr = project_point_to_segment(p, surface_, b, nodes.x);
       const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
       if (lateral > 1e-3 * pr.size) continue;  // beside b
@@ -196,7 +264,16 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
         const Real o = o_a + (offset_.empty() ? 0.0 : offset_[bu]);
         if (b_shell) {  // the side of b's mid-surface: remembered while within o of it
           side = pr.gap >= 0.0 ? 1 : -1;
-          if (memory_of_[g] == b && memory_[g] != 0 && std::abs(pr.gap) < o) side = memory_[g];
+          if (memory_[g] != 0 && std::abs(pr.gap) < o) {
+            // Remembered on b, or on a shell segment next to b (sharing a node) that the point has
+            // slid off: the side carries over, in b's orientation (a shell's normal may point
+            // either way, so a neighbour's may be opposite).
+            const Index m = memory_of_[g];
+            if (m == b)
+              side = memory_[g];
+            else if (share_node(&surface_.conn[4 * static_cast<std::size_t>(m)], &surface_.conn[4 * bu]))
+              side = normal_.get(m).dot(normal_.get(b)) >= 0.0 ? memory_[g] : -memory_[g];
+          }
           if (!a_shell && !(side * nn < -0.5)) continue;  // a solid face must face b's side
         } else if (!(pr.gap > -o_a)) {
           // A shell's mid-surface at most o_a behind a solid face (penetration < 2 o_a, as a solid
@@ -315,7 +392,11 @@ void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& tim
   // LS-DYNA: the step the springs are sized by follows the step when that grows more than 5 %
   // (dt_prev: the step just taken; the coming one is not known while the interfaces vote).
   if (times.dt_prev > 1.05 * dt_c_) dt_c_ = times.dt_prev;
-  search(nodes.x);
+  update_geometry(nodes.x);
+  if (interval_ <= 1)
+    search(nodes.x, 0.0);
+  else if (++since_search_ >= interval_ || watch_.max_displacement(nodes.x) >= allowance_)
+    search_ahead(nodes, times.dt_prev);
   parallel_for(surface_.segment_count(), [&](Index a) { evaluate(a, nodes, false, times.dt_prev); });
   scatter(out);
 }

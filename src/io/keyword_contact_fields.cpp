@@ -116,13 +116,13 @@ constexpr Rule kCardF[] = {
     {"TETFAC", 0, Use::inert, "tetrahedron volume factor (SOFT = 2 only)"},
 };
 
-// With SOFT = 2 (segment-based contact): SBOPT, DEPTH and LCIDAB are read by
+// With SOFT = 2 (segment-based contact): SBOPT, DEPTH, LCIDAB and BSORT are read by
 // read_contact_card_a; the SOFT = 2 fields of cards D-F act on it, so they are refused.
 constexpr Rule kCardA2[] = {
     {"SOFT", 0, Use::honoured, ""},   {"SOFSCL", 0.1, Use::honoured, ""}, {"LCIDAB", 0, Use::honoured, ""},
     {"MAXPAR", 1.025, Use::refuse, "maximum parametric coordinate of the segment search"},
     {"SBOPT", 2, Use::honoured, ""},  {"DEPTH", 2, Use::honoured, ""},
-    {"BSORT", 0, Use::speed, "cycles between bucket sorts"},
+    {"BSORT", 0, Use::honoured, ""},
     {"FRCFRQ", 1, Use::refuse, "cycles between contact force updates"},
 };
 constexpr Rule kCardD2[] = {

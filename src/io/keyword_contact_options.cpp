@@ -47,6 +47,8 @@ std::string field_text(const Context* ctx, int line, const model::Contact& c, co
 /// Built: SBOPT 2 (planar segments; 0 is 2), DEPTH 2 (surface penetration only; 0 is 2), on
 /// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and *CONTACT_AUTOMATIC_SINGLE_SURFACE. Every other value is
 /// refused by name (file, line, field, value); LCIDAB (an airbag's thickness curve) is refused.
+/// BSORT >= 0 is honoured (cycles between searches, SegmentContact::set_search_interval); < 0 (a
+/// load curve of the interval) is refused.
 void read_segment_based_fields(const Context& ctx, const Line& l, const Card& k, model::Contact& c) {
   const bool s2s = c.form == model::ContactForm::automatic_surface_to_surface;
   const bool single =
@@ -60,6 +62,11 @@ void read_segment_based_fields(const Context& ctx, const Line& l, const Card& k,
   k.get(2, "LCIDAB", lcidab);
   k.get(4, "SBOPT", sbopt);
   k.get(5, "DEPTH", depth);
+  k.get(6, "BSORT", c.bsort);
+  if (c.bsort < 0)
+    throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "BSORT", c.bsort,
+                                         "load curve of the bucket sort interval") +
+                              " is not implemented; give the number of cycles between searches (0: chosen here)");
   if (lcidab != 0)
     throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "LCIDAB", lcidab,
                                          "airbag thickness curve of SOFT = 2") +

@@ -107,6 +107,8 @@ struct InterfaceSpec {
   Real soft_scale = 0.0;
   /// SOFT = 2: segment-based contact (contact/segment_contact.hpp; the two-sided automatic card only).
   bool segment_based = false;
+  /// SOFT = 2: BSORT, cycles between broad-phase searches (0: SegmentContact's default).
+  int search_interval = 0;
   /// VC (stress): the friction of each slave node capped at VC x its master segment's area
   /// (penalty Types 3, 5, 10, 12 with friction; the reader refuses VC elsewhere).
   Real viscous_friction = 0.0;

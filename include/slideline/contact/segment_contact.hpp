@@ -22,9 +22,11 @@
 /// m_s = the sum of the lumped masses of segment s's nodes (solid or shell), dt_c the run's initial
 /// step (StepTimes::dt_initial), replaced by the step just taken when that is more than 5 % above it.
 /// Friction (FS, FD, DC) on a stick spring per Gauss point and VDC on each point's normal spring
-/// (set_friction). The search: every cycle, the broad phase's segment boxes against each
-/// segment's bounding sphere box grown by the offsets; forces per segment in parallel, scattered
-/// serially in segment order (thread-count independent).
+/// (set_friction). The search: the broad phase's segment boxes against each segment's bounding
+/// sphere box grown by the offsets, every cycle (BSORT 1) or every BSORT cycles with an allowance
+/// (set_search_interval) that keeps the candidates a superset of the every-cycle search's, which
+/// each cycle's exact box test then narrows to the same set: the same forces, bit for bit. Forces
+/// per segment in parallel, scattered serially in segment order (thread-count independent).
 /// docs/contact.md, "Segment-based contact (SOFT = 2)".
 #include <array>
 #include <cstdint>
@@ -37,6 +39,7 @@
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/friction/exponential_coulomb.hpp"
 #include "slideline/contact/search/broad_phase.hpp"
+#include "slideline/contact/search/search_cadence.hpp"
 #include "slideline/mesh/surface.hpp"
 
 namespace slideline {
@@ -75,6 +78,20 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   /// the point's normal spring) and VDC (`viscous_damping` = VDC / 100, of critical, on each
   /// point's normal spring). Before initialize(); never called: frictionless, undamped.
   void set_friction(const ExponentialCoulomb& law, Real viscous_damping);
+  /// BSORT (optional card A): cycles between broad-phase searches, >= 0; 0 is
+  /// kDefaultSearchInterval, 1 a search every cycle (the candidates exact, no allowance). Between
+  /// two searches the candidates found with an allowance 5 a (a = max(1.5 v_max dt BSORT, a_min),
+  /// v_max the largest surface nodal speed at the search) serve; a search comes early when any
+  /// surface node has moved a since the last one (see docs/contact.md, "Search cadence"). Before
+  /// initialize(); never called: every cycle.
+  void set_search_interval(int cycles);
+  /// BSORT = 0: LS-DYNA "determines the interval"; here the early re-search decides, this caps it.
+  static constexpr int kDefaultSearchInterval = 10;
+  /// Broad-phase searches run so far (initialize()'s included).
+  Index search_count() const { return searches_; }
+  /// a: the displacement a surface node may make before the next search is due (length; 0 with
+  /// BSORT 1).
+  Real search_allowance() const { return allowance_; }
   Real friction_work() const override { return friction_work_; }
 
   const std::string& name() const override { return name_; }
@@ -103,7 +120,9 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   Real largest_initial_penetration() const { return initial_max_; }
 
  private:
-  void search(const Vec3Field& x);
+  void update_geometry(const Vec3Field& x);
+  void search(const Vec3Field& x, Real inflation);
+  void search_ahead(const NodalFields& nodes, Real dt);
   void evaluate(Index a, const NodalFields& nodes, bool baseline, Real dt_prev);
   void add_damping_and_friction(std::size_t g, Index held, SegmentContactRecord& rec, const Vec3& n, const Index* ca,
                                 const Index* cb, Real inv_m, const NodalFields& nodes, Real dt_prev);
@@ -123,6 +142,7 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   std::vector<Real> radius_;          ///< per segment: largest centroid-to-corner distance
   std::vector<Candidate> candidates_; ///< (segment a, segment b) of the last search
   std::vector<Index> first_;          ///< per segment a: its first candidate (CSR, segments + 1)
+  std::vector<std::uint8_t> admit_;   ///< per candidate: a may meet b (evaluate, a's range only)
   std::vector<SegmentContactRecord> records_;
   std::vector<Real> baseline_;        ///< per Gauss point: d0 (length)
   std::vector<Index> baseline_of_;    ///< per Gauss point: the segment d0 was measured on
@@ -143,6 +163,16 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   std::vector<Vec3> slip_;            ///< per Gauss point: elastic slip from the sticking point (length)
   std::vector<Index> slip_on_;        ///< per Gauss point: the segment slip_ refers to (-1: none)
   Real friction_work_ = 0.0;          ///< accumulated (energy)
+  // Search cadence (BSORT): see set_search_interval.
+  int interval_ = 1;                  ///< cycles between searches (1: every cycle, exact)
+  int since_search_ = 0;              ///< cycles since the last search
+  bool inflated_ = false;             ///< the candidates came from an inflated search: box-test them
+  Real allowance_ = 0.0;              ///< a (length)
+  Real allowance_floor_ = 0.0;        ///< a_min: 1e-3 x the mean half diagonal (length)
+  Index searches_ = 0;
+  std::vector<Aabb> box_;             ///< per segment: its corners' box this cycle (BSORT > 1)
+  std::vector<Real> query_radius_;    ///< per segment: radius_ + 5 a at the last search
+  SearchCadence watch_;               ///< the surface nodes' displacement since the last search
 };
 
 }  // namespace slideline

@@ -396,6 +396,7 @@ struct Contact {
   // Optional card A
   int soft = 0;        ///< SOFT: 0 the segment stiffness rule; 1 also SOFSCL x the nodal-mass stiffness
   Real sofscl = 0.1;   ///< SOFSCL (0 or blank: 0.1)
+  int bsort = 0;       ///< BSORT, read with SOFT = 2 only: cycles between searches (0: chosen here)
   // Optional card B
   int snlog = 0;   ///< SNLOG: 0 shooting-node logic on (the eroding passes have it), 1 off (refused there)
   // Optional card C

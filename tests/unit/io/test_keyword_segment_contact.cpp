@@ -1,7 +1,8 @@
 // SOFT = 2 (segment-based contact) in the reader: accepted on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
 // and *CONTACT_AUTOMATIC_SINGLE_SURFACE with SBOPT and DEPTH at their defaults (2; 0 and blank mean
-// 2); every other SBOPT, DEPTH, LCIDAB, the SOFT = 2 fields of optional cards D-F, and SOFT = 2 on
-// another card are refused naming file, line, card, field and value. docs/contact.md,
+// 2); BSORT >= 0 read (cycles between searches, honoured by SegmentContact); every other SBOPT,
+// DEPTH, LCIDAB, a negative BSORT (a load curve), the SOFT = 2 fields of optional cards D-F, and
+// SOFT = 2 on another card are refused naming file, line, card, field and value. docs/contact.md,
 // "Segment-based contact (SOFT = 2)".
 #include <gtest/gtest.h>
 
@@ -65,6 +66,7 @@ TEST(KeywordSegmentContact, OtherOptionsAndCardsAreRefusedNamingFileLineFieldAnd
       {deck(card({"2", "", "", "", "", "3"})), "u.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card A: field DEPTH = 3 (segment-based search depth and edge-to-edge checks) is not implemented"},
       {deck(card({"2", "", "", "", "", "5"})), "field DEPTH = 5"},
       {deck(card({"2", "", "1"})), "u.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card A: field LCIDAB = 1"},
+      {deck(card({"2", "", "", "", "", "", "-3"})), "u.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card A: field BSORT = -3 (load curve of the bucket sort interval) is not implemented"},
       {deck(card({"2"}), blank + blank + card({"1"})), "u.k:9: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card D: field Q2TRI = 1"},
       {deck(card({"2"}), blank + blank + blank + card({"", "", "", "", "0.5"})), "optional card E: field FRICSF = 0.5"},
       {deck(card({"2"}), "", "SURFACE_TO_SURFACE"), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
@@ -75,6 +77,17 @@ TEST(KeywordSegmentContact, OtherOptionsAndCardsAreRefusedNamingFileLineFieldAnd
     const std::string msg = refusal(c.deck);
     EXPECT_NE(msg.find(c.expected), std::string::npos) << "expected '" << c.expected << "', got '" << msg << "'\n"
                                                        << c.deck;
+  }
+}
+
+TEST(KeywordSegmentContact, BsortIsReadWithSoftTwoWithoutAWarning) {
+  for (const int bsort : {0, 1, 25}) {
+    std::vector<Diagnostic> warnings;
+    const model::Model m = read_keyword_string(
+        deck(card({"2", "", "", "", "", "", bsort == 0 ? "" : std::to_string(bsort)})), "u.k", &warnings);
+    ASSERT_EQ(m.contacts.size(), 1u);
+    EXPECT_EQ(m.contacts[0].bsort, bsort);
+    for (const Diagnostic& d : warnings) EXPECT_EQ(d.message.find("BSORT"), std::string::npos) << d.message;
   }
 }
 
