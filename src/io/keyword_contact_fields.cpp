@@ -276,12 +276,9 @@ void check_card3(const Context& ctx, const model::Contact& c, const Line* l) {
   const std::string_view kw = c.keyword;
   const bool penalty = c.enforcement == Enforcement::penalty && !is_tied(c.type);
   const bool stiffness = penalty || is_tiebreak(c.type);
-  // Thickness offsets: penalty and Lagrange sliding interfaces (Types 3, 5, 10, 12), and OPTION 8
-  // of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (its tie and contact on offset shells).
-  const bool offset_tiebreak = c.type == ContactType::tiebreak_surface &&
-                               c.form == model::ContactForm::automatic_surface_to_surface && c.option == 8;
-  const bool offsets =
-      offset_tiebreak || (!is_tied(c.type) && !is_tiebreak(c.type) && c.type != ContactType::sliding_only);
+  // Thickness offsets: penalty and Lagrange sliding interfaces (Types 3, 5, 10, 12), and the automatic tiebreak's OPTION 8.
+  const bool offsets = (c.form == model::ContactForm::automatic_surface_to_surface && c.option == 8) ||
+                       (!is_tied(c.type) && !is_tiebreak(c.type) && c.type != ContactType::sliding_only);
   const bool two_way = c.type == ContactType::surface_to_surface || c.type == ContactType::one_way;
   if (!stiffness) {
     const char* why = "penalty scale; this interface is enforced by constraints";
@@ -455,8 +452,7 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                     {"ERATES", 0, Use::refuse, "shear energy release rate"},
                                     {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
                                     {"CN", 0, Use::refuse, "normal stiffness"}};
-  // OPTION 6 (and 8) of the automatic card: PARAM is CCRIT; the manual reads ERATEN..CN on other
-  // OPTIONs (CN on OPTION 6 and 8 with _MORTAR only).
+  // OPTION 6 (8) of the automatic card: PARAM is CCRIT; ERATEN..CN are other OPTIONs' (CN: _MORTAR).
   static constexpr Rule kAuto6[] = {{"OPTION", 0, Use::honoured, ""}, {"NFLS", 0, Use::honoured, ""},
                                     {"SFLS", 0, Use::honoured, ""},   {"PARAM", 0, Use::honoured, ""},
                                     {"ERATEN", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},

@@ -18,7 +18,9 @@
 //   (the tie's compression factor is the pass's springs over the tie's, 16 here: B's 4 nodes on A's
 //   segment, K A_A / diagonal each; without offsets the mid-surfaces, 0.9 apart, would not touch and
 //   the force would drop to 0).
-// Mode I also runs in a copy turned about an oblique axis. A third check lets the tied pair spin
+// Mode I also runs in a copy turned about an oblique axis, and with card 3's SST = 2.0 (B), MST =
+// 1.6 (A) in place of the elements' thicknesses, B at (SST + MST) / 2 = 1.8 (beyond the elements'
+// offsets and the tolerance, 1.75: tied by SST, MST only; the same closed forms). A third check lets the tied pair spin
 // freely (initial velocities of a rigid rotation at omega = 0.5 about an axis in the plates' plane
 // through the centre of mass) by 0.5 rad: a tie that kept its tie-time offset vector fixed in space
 // would be stretched by h theta = 0.45 (45 x CCRIT); the OPTION 8 tie keeps its stand-off along the
@@ -50,6 +52,9 @@ namespace {
 constexpr Real kE = 1e5, kNu = 0.3, kRho = 1.0, kTa = 0.8, kTb = 1.0;
 constexpr Real kNfls = 2.0, kSfls = 1.5, kCcrit = 1e-2, kSpeed = 2e-3;
 constexpr Real kH = 0.5 * (kTa + kTb);
+// Card 3's contact thicknesses of the SST case (replacing the elements'): the plates then touch at
+// (SST + MST) / 2 = 1.8, out of reach of the elements' offsets (0.85 + 0.9 = 1.75).
+constexpr Real kSst = 2.0, kMst = 1.6, kHCard = 0.5 * (kSst + kMst);
 // The tie's penalty stiffness per unit area on a shell master (tiebreak_contact.cpp): SLSFAC K /
 // diagonal, A's diagonal 2 sqrt(2).
 const Real kKappa = 0.1 * kE / (3.0 * (1.0 - 2.0 * kNu)) / (2.0 * std::sqrt(2.0));
@@ -59,9 +64,11 @@ enum class Drive { mode_I, mode_II, rotation };
 struct Option8Case {
   Drive drive = Drive::mode_I;
   bool rotated = false;
+  bool card_thickness = false;  ///< SST, MST on card 3 (the plates at their offsets)
+  Real h() const { return card_thickness ? kHCard : kH; }
   std::string name() const {
     return std::string(drive == Drive::mode_I ? "mode_I" : drive == Drive::mode_II ? "mode_II" : "rigid_rotation") +
-           (rotated ? "_rotated" : "");
+           (rotated ? "_rotated" : "") + (card_thickness ? "_sst" : "");
   }
   Real peak() const { return drive == Drive::mode_II ? kSfls : kNfls; }
   Real onset() const { return peak() / kKappa; }
@@ -77,9 +84,9 @@ constexpr Real kOmega = 0.5, kTurnTime = 1.0;  // the free spin: angular velocit
 // The plates' corners (x, z): A 2 x 2 about (0.5, 0.5), B 1 x 1 over its middle.
 const Real kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
-Vec3 reference(int k, const Mat3& r) {  // node k + 1: A's corners (k < 4) at y = 0, then B's at y = h
+Vec3 reference(int k, const Mat3& r, Real h = kH) {  // node k + 1: A's corners (k < 4) at y = 0, then B's at y = h
   const Real grow = k < 4 ? 2.0 : 1.0;
-  return r * Vec3(0.5 + grow * (kCorner[k % 4][0] - 0.5), k < 4 ? 0.0 : kH, 0.5 + grow * (kCorner[k % 4][1] - 0.5));
+  return r * Vec3(0.5 + grow * (kCorner[k % 4][0] - 0.5), k < 4 ? 0.0 : h, 0.5 + grow * (kCorner[k % 4][1] - 0.5));
 }
 Real plate_mass(bool b) { return kRho * (b ? kTb * 1.0 : kTa * 4.0); }
 /// The spin's axis: along the plates' z through the pair's centre of mass (unrotated frame).
@@ -93,7 +100,7 @@ std::string deck(const Option8Case& cc, Real end) {
     << kTb << "," << kTb << "," << kTb << "," << kTb << "\n*MAT_ELASTIC\n1," << kRho << "," << kE << "," << kNu
     << "\n*PART\nplate A\n1,1,1\n*PART\nplate B\n2,2,1\n*NODE\n";
   for (int k = 0; k < 8; ++k) {
-    const Vec3 x = reference(k, r);
+    const Vec3 x = reference(k, r, cc.h());
     o << k + 1 << "," << x.x() << "," << x.y() << "," << x.z() << "\n";
   }
   o << "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,2,5,6,7,8\n";
@@ -119,8 +126,9 @@ std::string deck(const Option8Case& cc, Real end) {
       }
     for (int k = 1; k <= 4; ++k) o << "*BOUNDARY_SPC_NODE\n" << k << ",0,1,1,1,1,1,1\n";
   }
-  o << "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n2,1,3,3\n0.0,0.0\n1.0,1.0\n8," << kNfls << "," << kSfls
-    << "," << kCcrit << "\n*END\n";
+  o << "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n2,1,3,3\n0.0,0.0\n1.0,1.0";
+  if (cc.card_thickness) o << "," << kSst << "," << kMst;  // SST (B, the slave side), MST (A)
+  o << "\n8," << kNfls << "," << kSfls << "," << kCcrit << "\n*END\n";
   return o.str();
 }
 
@@ -148,7 +156,7 @@ Option8Result run_option8(const Option8Case& cc) {
     Vec3 s = Vec3::Zero();
     for (std::size_t i = 0; i < sim->nodes().ids.size(); ++i)
       s += (sim->nodes().ids[i] <= 4 ? -0.25 : 0.25) * Vec3(sim->nodes().x.get(static_cast<Index>(i)));
-    return Vec3(s - kH * normal);
+    return Vec3(s - cc.h() * normal);
   };
   Real normal_last = 0.0;
   while (sim->step()) {
@@ -193,7 +201,7 @@ TEST_P(AutomaticTiebreakOption8, ShellsTiedAtTheirOffsetsSoftenToTheCriticalDist
   const Option8Result r = run_option8(cc);
   std::printf("%-16s tied %zu of 4 at the offset distance %.2f; peak %.5f (closed form %.5f) at separation %.4e "
               "(%.4e); released at %.4e (CCRIT %.4e)\n",
-              cc.name().c_str(), r.tied, kH, r.peak, cc.peak(), r.separation_at_peak, cc.onset(),
+              cc.name().c_str(), r.tied, cc.h(), r.peak, cc.peak(), r.separation_at_peak, cc.onset(),
               r.separation_at_release, kCcrit);
   std::printf("%-16s dissipated %.5e (closed form %.5e); energy balance %.2e to the release, %.2e at the end; "
               "normal force at the release %.5f, then %.5f\n",
@@ -237,7 +245,7 @@ TEST(AutomaticTiebreakOption8Rest, SpinningPairIsNotStretchedByTheOffset) {
 
 INSTANTIATE_TEST_SUITE_P(Closed, AutomaticTiebreakOption8,
                          ::testing::Values(Option8Case{Drive::mode_I, false}, Option8Case{Drive::mode_I, true},
-                                           Option8Case{Drive::mode_II, false}),
+                                           Option8Case{Drive::mode_II, false}, Option8Case{Drive::mode_I, false, true}),
                          [](const ::testing::TestParamInfo<Option8Case>& info) { return info.param.name(); });
 
 }  // namespace
