@@ -270,16 +270,25 @@ std::unique_ptr<ContactAlgorithm> make_sticking_tiebreak_contact(InterfaceSpec& 
 }  // namespace
 
 std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
-  for (const Surface* side : {&spec.slave.surface, &spec.master.surface})
-    for (Index s = 0; s < side->segment_count(); ++s)
-      if (side->kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
-        throw NotImplementedError(spec.where + ": shell segments on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK "
-                                               "are not implemented (the tie has no thickness offsets); solid faces only");
   const int option = spec.cohesive.option;
+  // OPTION 8 is OPTION 6 on offset shells (the tie and the pass offset by SST / MST x SFST / SFMT,
+  // shell_offset.hpp); every other OPTION ties solid faces only.
+  const bool shells = option == 8;
+  if (!shells)
+    for (const Surface* side : {&spec.slave.surface, &spec.master.surface})
+      for (Index s = 0; s < side->segment_count(); ++s)
+        if (side->kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
+          throw NotImplementedError(spec.where + ": shell segments on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK "
+                                                 "OPTION " + std::to_string(option) + " are not implemented (its tie has "
+                                                 "no thickness offsets; OPTION 8 has them); solid faces only");
   if (option == 0 || option == 1 || option == 3) return make_sticking_tiebreak_contact(spec, ctx);
-  if (option != 2 && option != 4 && option != 6 && option != 9)
+  if (option != 2 && option != 4 && option != 6 && option != 8 && option != 9)
     throw NotImplementedError(spec.where + ": OPTION = " + std::to_string(option) +
                               " of *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK is not implemented");
+  if (shells) {  // the automatic card's offsets, always on (SHLTHK aside), following THKCHG = 1 alike
+    spec.slave_shells.on = spec.master_shells.on = true;
+    spec.follow_thickness = ctx.model.control_contact.thkchg == 1;
+  }
   // The contact after failure: the card *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE's pass, each node's
   // penetration at t = 0 its spring's zero (IGNORE = 1; the tie keeps its stand-off alike).
   InterfaceSpec contact_spec = spec;
@@ -311,7 +320,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec&
     // card's friction (FS, FD, DC) on the compressive part of their tie force.
     p.normal_only = true;
     p.shear_failure = 0.0;
-  } else if (spec.cohesive.option == 6) {
+  } else if (spec.cohesive.option == 6 || shells) {
     // The stress criterion as the onset of a linear softening to zero at PARAM = CCRIT, per tied
     // node, on the tie's own isotropic spring (EN = ET = kappa): the bilinear law with a fixed
     // final separation (mixed_mode_cohesive_law.hpp).
@@ -319,6 +328,10 @@ std::unique_ptr<ContactAlgorithm> make_automatic_tiebreak_contact(InterfaceSpec&
     p.cohesive = MixedModeCohesiveLaw{0.0, 0.0, spec.failure.normal, spec.failure.shear, 0.0, 0.0, 1.0, false,
                                       spec.cohesive.param};
     p.ct2cn = 1.0;
+    if (shells) {
+      p.slave_shells = spec.slave_shells;
+      p.master_shells = spec.master_shells;
+    }
   }
   auto tie = std::make_unique<TiebreakContact>(spec.title, std::move(spec.slave.nodes), std::move(spec.slave.surface),
                                                std::move(spec.master.surface), p);

@@ -13,7 +13,7 @@ void TiebreakContact::apply_cohesive(const NodalFields& nodes, ContactForceView 
   for (std::size_t k = 0; k < n; ++k) {
     if (released_[k]) continue;
     const TiePoint& t = links_[k];
-    const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
+    const Vec3 d = tie_stretch(k, nodes.x);
     const Vec3 nk = oriented_normal(k, nodes.x);
     const Real dn = d.dot(nk);
     const Vec3 dt = d - dn * nk;

@@ -42,7 +42,12 @@ Real TiebreakContact::reverse_springs(const ContactContext& c) const {
   // The master side's nodes on tied slave segments (the tie search's tolerances), each with the
   // stiffness a penalty pass gives it there: kappa_s x the slave segment's area.
   const Surface& m = pairs_.master();
-  const std::vector<TiePoint> on_slave = find_tie_points(m.nodes, slave_surface_, c.nodes.x);
+  std::vector<Real> segment_table, node_table;
+  const TieSearchOptions opt = p_.offset_shells()
+                                   ? offset_search(slave_surface_, p_.slave_shells, m, p_.master_shells,
+                                                   c.nodes.size(), segment_table, node_table)
+                                   : TieSearchOptions{};
+  const std::vector<TiePoint> on_slave = find_tie_points(m.nodes, slave_surface_, c.nodes.x, opt);
   Real springs = 0.0;
   for (const TiePoint& t : on_slave) {
     if (t.segment < 0 || segment_failed_[static_cast<std::size_t>(t.segment)]) continue;
@@ -51,10 +56,35 @@ Real TiebreakContact::reverse_springs(const ContactContext& c) const {
   return springs;
 }
 
+TieSearchOptions TiebreakContact::offset_search(const Surface& onto, const ShellOffsetRule& onto_rule,
+                                                const Surface& from, const ShellOffsetRule& from_rule,
+                                                std::size_t node_count, std::vector<Real>& segment_table,
+                                                std::vector<Real>& node_table) const {
+  segment_table.assign(static_cast<std::size_t>(onto.segment_count()), 0.0);
+  for (Index s = 0; s < onto.segment_count(); ++s) segment_table[static_cast<std::size_t>(s)] = segment_offset(onto, s, onto_rule);
+  node_table.assign(node_count, 0.0);
+  for (Index r = 0; r < static_cast<Index>(from.nodes.size()); ++r)
+    node_table[static_cast<std::size_t>(from.nodes[static_cast<std::size_t>(r)])] = node_offset(from, r, from_rule);
+  TieSearchOptions opt;
+  opt.master_offset = segment_table;
+  opt.node_offset = node_table;
+  return opt;
+}
+
 void TiebreakContact::initialize(const ContactContext& c) {
   const NodalFields& nodes = c.nodes;
   const Surface& master = pairs_.master();
-  tie_candidates(name_, candidates_, master, nodes, {}, links_, untied_nodes_, c.diagnostics);
+  if (p_.offset_shells()) {
+    std::vector<Real> segment_table, node_table;
+    const TieSearchOptions opt =
+        offset_search(master, p_.master_shells, slave_surface_, p_.slave_shells, nodes.size(), segment_table, node_table);
+    tie_candidates(name_, candidates_, master, nodes, opt, links_, untied_nodes_, c.diagnostics);
+    offset_rest_.resize(links_.size());
+    for (std::size_t k = 0; k < links_.size(); ++k)
+      offset_rest_[k] = links_[k].offset - links_[k].gap * segment_normal(master, links_[k].segment, nodes.x);
+  } else {
+    tie_candidates(name_, candidates_, master, nodes, {}, links_, untied_nodes_, c.diagnostics);
+  }
   const std::size_t n = links_.size();
   std::vector<Index> link_of(nodes.size(), -1);
   for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);

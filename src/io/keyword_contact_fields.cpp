@@ -276,8 +276,9 @@ void check_card3(const Context& ctx, const model::Contact& c, const Line* l) {
   const std::string_view kw = c.keyword;
   const bool penalty = c.enforcement == Enforcement::penalty && !is_tied(c.type);
   const bool stiffness = penalty || is_tiebreak(c.type);
-  // Thickness offsets: penalty and Lagrange sliding interfaces (Types 3, 5, 10, 12) only.
-  const bool offsets = !is_tied(c.type) && !is_tiebreak(c.type) && c.type != ContactType::sliding_only;
+  // Thickness offsets: penalty and Lagrange sliding interfaces (Types 3, 5, 10, 12), and the automatic tiebreak's OPTION 8.
+  const bool offsets = (c.form == model::ContactForm::automatic_surface_to_surface && c.option == 8) ||
+                       (!is_tied(c.type) && !is_tiebreak(c.type) && c.type != ContactType::sliding_only);
   const bool two_way = c.type == ContactType::surface_to_surface || c.type == ContactType::one_way;
   if (!stiffness) {
     const char* why = "penalty scale; this interface is enforced by constraints";
@@ -451,8 +452,7 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
                                     {"ERATES", 0, Use::refuse, "shear energy release rate"},
                                     {"CT2CN", 0, Use::refuse, "tangential to normal stiffness ratio"},
                                     {"CN", 0, Use::refuse, "normal stiffness"}};
-  // OPTION 6 of the automatic card: PARAM is CCRIT; the manual reads ERATEN..CN on other OPTIONs
-  // (CN on OPTION 6 with _MORTAR only).
+  // OPTION 6 (8) of the automatic card: PARAM is CCRIT; ERATEN..CN are other OPTIONs' (CN: _MORTAR).
   static constexpr Rule kAuto6[] = {{"OPTION", 0, Use::honoured, ""}, {"NFLS", 0, Use::honoured, ""},
                                     {"SFLS", 0, Use::honoured, ""},   {"PARAM", 0, Use::honoured, ""},
                                     {"ERATEN", 0, Use::refuse, "energy release rate (OPTION 7, 9-11)"},
@@ -482,7 +482,7 @@ void check_contact_fields(const Context& ctx, const model::Contact& c, const Lin
   if (!automatic || c.option != 9)
     check_card(ctx, *card4, kw, "card 4",
                c.type == ContactType::tiebreak_nodes ? std::span<const Rule>(kType8)
-               : automatic && c.option == 6      ? std::span<const Rule>(kAuto6)
+               : automatic && (c.option == 6 || c.option == 8) ? std::span<const Rule>(kAuto6)
                : automatic && c.option == 4      ? std::span<const Rule>(kAuto4)
                : automatic && (c.option == 0 || c.option == 1) ? std::span<const Rule>(kAuto1)
                                                  : std::span<const Rule>(kType9));

@@ -79,9 +79,8 @@ std::string unbuilt_tiebreak_option(int option) {
     case 5: return "OPTION 5 is a damage curve of the crack opening (SFLS a curve, NFLS a yield stress)";
     case 7: return "OPTION 7 (Dycoss discrete crack model, PARAM a friction angle) is defined in Lemmen and Meijer "
                    "(2001), not by the manual's text";
-    case 8: case 10: case 11: return "OPTION " + std::to_string(option) + " is the offset-shell variant of OPTION " +
-                                  std::to_string(option == 8 ? 6 : option == 10 ? 7 : 9) +
-                                  "; shell segments are refused on this card";
+    case 10: case 11: return "OPTION " + std::to_string(option) + " is the offset-shell variant of OPTION " +
+                             std::to_string(option == 10 ? 7 : 9) + "; shell segments are built on OPTION 8 only";
     case 13: case 14: return "OPTION 13 and 14 are the *MAT_240 elastoplastic rate-dependent law with extra cards";
     default: return option < 0 ? "negative OPTION transfers moments (shells) or reads temperature curves (MORTAR)"
                                : "OPTION " + std::to_string(option) + " is not a tiebreak law of the manual";
@@ -92,21 +91,22 @@ std::string unbuilt_tiebreak_option(int option) {
 /// default: nodes in contact and those coming into contact stick for good; NFLS, SFLS refused by
 /// check_contact_fields), OPTION 3 (as 1, failing by the stress criterion), OPTION 2 (the stress
 /// criterion, then the automatic contact), OPTION 4 (a normal tie with friction), OPTION 6 (the criterion, then damage linear in the distance,
-/// complete at PARAM = CCRIT) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
+/// complete at PARAM = CCRIT), OPTION 8 (6 on shells with thickness offsets) and OPTION 9 (the mixed-mode bilinear traction-separation law with PARAM,
 /// ERATEN, ERATES, CT2CN, CN). Every other OPTION is refused saying why; NFLS, SFLS < 0 (curves)
 /// are refused. On OPTION 2, PARAM..CN off their blank default are refused by
 /// check_contact_fields (keyword_contact_fields.cpp).
 void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c, const Line* card4, int line) {
   const std::string at = ctx.where(card4 ? card4->number : line) + c.keyword + " card 4";
   if (!card4) throw InputError(at + " (OPTION NFLS SFLS PARAM ...) is missing");
-  if (c.option < 0 || c.option == 5 || c.option == 7 || c.option == 8 || c.option > 9)
+  if (c.option < 0 || c.option == 5 || c.option == 7 || c.option > 9)
     throw NotImplementedError(at + ": field OPTION = " + std::to_string(c.option) + " is not implemented (" +
                               unbuilt_tiebreak_option(c.option) +
                               "); built: blank, 0 and 1 (nodes in contact and those coming into contact stick "
                               "permanently), 2 (failure by (sigma_n / NFLS)^2 + (sigma_s / SFLS)^2 >= 1, then "
                               "automatic surface-to-surface contact), 3 (as 1, failing by that criterion), 4 (a "
                               "normal tie failing by NFLS, sliding with friction), 6 (that criterion, then linear "
-                              "softening to zero at PARAM) and 9 (mixed-mode bilinear traction-separation)");
+                              "softening to zero at PARAM), 8 (6 on offset shells) and 9 (mixed-mode bilinear "
+                              "traction-separation)");
   const auto value = [](Real v) {
     char s[32];
     std::snprintf(s, sizeof s, "%g", v);
@@ -120,14 +120,16 @@ void check_automatic_tiebreak_card4(const Context& ctx, const model::Contact& c,
   if (c.option == 4 && !(c.nfls > 0.0))
     throw InputError(at + ": field NFLS = " + value(c.nfls) +
                      ": OPTION 4 needs the normal failure stress > 0 (its tie fails by NFLS only)");
-  if (c.option == 6) {
-    // OPTION 6: the criterion's stresses start the damage, PARAM (CCRIT) completes it; no defaults.
+  if (c.option == 6 || c.option == 8) {
+    // OPTION 6 (8: on offset shells): the criterion's stresses start the damage, PARAM (CCRIT)
+    // completes it; no defaults.
     for (const auto& [name, v, what] :
          {std::tuple<const char*, Real, const char*>{"NFLS", c.nfls, "the normal failure stress"},
           {"SFLS", c.sfls, "the shear failure stress"},
           {"PARAM", c.param, "the critical distance CCRIT"}})
       if (!(v > 0.0))
-        throw InputError(at + ": field " + name + " = " + value(v) + ": OPTION 6 needs " + what + " > 0");
+        throw InputError(at + ": field " + name + " = " + value(v) + ": OPTION " + std::to_string(c.option) +
+                         " needs " + what + " > 0");
     return;
   }
   if (c.option != 9) return;

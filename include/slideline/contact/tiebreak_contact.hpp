@@ -58,6 +58,7 @@
 #include "slideline/contact/search/closest_point.hpp"
 #include "slideline/contact/search/contact_pairs.hpp"
 #include "slideline/contact/search/tie_search.hpp"
+#include "slideline/contact/shell_offset.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 #include "slideline/mesh/segment_stiffness.hpp"
 #include "slideline/mesh/surface.hpp"
@@ -94,6 +95,13 @@ struct TiebreakParameters {
   bool normal_only = false;
   MixedModeCohesiveLaw cohesive;
   Real ct2cn = 1.0;
+  /// OPTION 8 of the automatic card (mixed_mode set): shell segments with thickness offsets
+  /// (shell_offset.hpp; each side's rule, on). The tie search ties a slave within its tolerance of
+  /// the two contact surfaces (|gap| <= 0.3 x size + both offsets), and the tie keeps its tie-time
+  /// stand-off along the master segment's current normal, so that a rigid rotation of a pair tied
+  /// at an offset does not stretch it. Off (both rules off): the solid faces' tie, unchanged.
+  ShellOffsetRule slave_shells, master_shells;
+  bool offset_shells() const { return slave_shells.on || master_shells.on; }
 };
 
 class TiebreakContact final : public ContactAlgorithm, public ContactForces {
@@ -192,6 +200,19 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   }
   /// Mixed mode: the tie forces from the cohesive law, damage, releases (tiebreak_cohesive.cpp).
   void apply_cohesive(const NodalFields& nodes, ContactForceView out);
+  /// Link k's tie stretch at x: x_slave - x_point - the tie-time offset (with offset_shells, the
+  /// stand-off along the master segment's current normal plus the rest of the tie-time offset).
+  Vec3 tie_stretch(std::size_t k, const Vec3Field& x) const {
+    const TiePoint& t = links_[k];
+    if (!p_.offset_shells()) return x.get(t.slave) - tie_point_value(t, x) - t.offset;
+    return x.get(t.slave) - tie_point_value(t, x) - offset_rest_[k] -
+           t.gap * segment_normal(master(), t.segment, x);
+  }
+  /// offset_shells: the tie search's options with the shell offsets (per master segment and per
+  /// node index; the tables are filled here and must outlive the options).
+  TieSearchOptions offset_search(const Surface& onto, const ShellOffsetRule& onto_rule, const Surface& from,
+                                 const ShellOffsetRule& from_rule, std::size_t node_count,
+                                 std::vector<Real>& segment_table, std::vector<Real>& node_table) const;
   /// normal_only (OPTION 4): link k's tie force on the slave for stretch d: the normal spring and
   /// the friction of the tied share (tiebreak_cohesive.cpp).
   Vec3 normal_tie_force(std::size_t k, const Vec3& d, const NodalFields& nodes, const StepTimes& times);
@@ -220,6 +241,7 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
   Vec3 first_failure_stress_ = Vec3::Zero();  ///< Type 9: (max, mean, max/mean) normal traction
+  std::vector<Vec3> offset_rest_;    ///< offset_shells: per link, tie-time offset less gap x normal
   std::vector<Real> damage_;         ///< mixed mode: per link, the damage
   std::vector<Vec3> tie_force_;      ///< mixed mode: per link, the force on the slave at the last cycle
   Real cohesive_work_ = 0.0;         ///< mixed mode: work done on the cohesive springs (trapezoidal)

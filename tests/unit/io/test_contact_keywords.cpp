@@ -173,7 +173,7 @@ TEST(ContactKeywords, AutomaticTiebreakCard4) {
     }
   };
   const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
-  refused("8,2.5,3.5,0.1\n", at + "OPTION = 8 is not implemented (OPTION 8 is the offset-shell variant of OPTION 6");
+  refused("10,2.5,3.5,0.1\n", at + "OPTION = 10 is not implemented (OPTION 10 is the offset-shell variant of OPTION 7");
   refused("7,2.5,3.5\n", at + "OPTION = 7 is not implemented (OPTION 7 (Dycoss");
   refused("11,2.5,3.5\n", at + "OPTION = 11 is not implemented (OPTION 11 is the offset-shell variant of OPTION 9");
   refused("-9,2.5,3.5\n", at + "OPTION = -9 is not implemented");
@@ -310,6 +310,56 @@ TEST(ContactKeywords, AutomaticTiebreakOptions4And6) {
   refused("6,2.5,3.5,0.01,0,6\n", at + "ERATES = 6");
   refused("6,2.5,3.5,0.01,0,0,0.5\n", at + "CT2CN = 0.5");
   refused("6,2.5,3.5,0.01,0,0,0,1e5\n", at + "CN = 100000");
+}
+
+// OPTION 8 (OPTION 6 on offset shells) reads NFLS, SFLS and PARAM as OPTION 6 does (all three > 0,
+// ERATEN..CN refused) and card 3's contact thicknesses SST, MST, SFST, SFMT (its shells' offsets),
+// which OPTION 6 (no offsets) refuses.
+TEST(ContactKeywords, AutomaticTiebreakOption8) {
+  const auto deck = [](const std::string& card3, const std::string& card4) {
+    return "*KEYWORD\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n0.2,0.2\n" + card3 + card4 + "*END\n";
+  };
+  const auto m = read_keyword_string(deck("1,1,0.3,0.2,1.5,0.5\n", "8,2.5,3.5,0.01\n"), "c.k");
+  const auto& c = m.contacts.at(0);
+  EXPECT_EQ(c.option, 8);
+  EXPECT_EQ(c.nflf, 2.5);
+  EXPECT_EQ(c.sflf, 3.5);
+  EXPECT_EQ(c.param, 0.01);
+  EXPECT_EQ(c.sst, 0.3);
+  EXPECT_EQ(c.mst, 0.2);
+  EXPECT_EQ(c.sfst, 1.5);
+  EXPECT_EQ(c.sfmt, 0.5);
+  const auto again = read_keyword_string(write_keyword_string(m), "again.k");
+  EXPECT_EQ(again.contacts.at(0).option, 8);
+  EXPECT_EQ(again.contacts.at(0).param, 0.01);
+  EXPECT_EQ(again.contacts.at(0).sst, 0.3);
+
+  const std::string at = "c.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 4: field ";
+  const auto input_error = [&](const std::string& card4, const std::string& message) {
+    SCOPED_TRACE(card4);
+    try {
+      read_keyword_string(deck("1\n", card4), "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  input_error("8,,3.5,0.01\n", at + "NFLS = 0: OPTION 8 needs the normal failure stress > 0");
+  input_error("8,2.5,0,0.01\n", at + "SFLS = 0: OPTION 8 needs the shear failure stress > 0");
+  input_error("8,2.5,3.5\n", at + "PARAM = 0: OPTION 8 needs the critical distance CCRIT > 0");
+  const auto refused = [&](const std::string& card3, const std::string& card4, const std::string& message) {
+    SCOPED_TRACE(card3 + card4);
+    try {
+      read_keyword_string(deck(card3, card4), "c.k");
+      ADD_FAILURE() << "read";
+    } catch (const NotImplementedError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  refused("1\n", "8,2.5,3.5,0.01,5\n", at + "ERATEN = 5");
+  refused("1\n", "8,2.5,3.5,0.01,0,0,0,1e5\n", at + "CN = 100000");
+  // OPTION 6 has no offsets: its card 3 thicknesses stay refused.
+  refused("1,1,0.3\n", "6,2.5,3.5,0.01\n", "c.k:5: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK card 3: field SST = 0.3");
 }
 
 }  // namespace

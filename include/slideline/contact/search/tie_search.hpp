@@ -40,7 +40,18 @@ struct TiePoint {
 struct TieSearchOptions {
   Real parametric_tol = 1e-3;  ///< tangential distance off the segment / segment size
   Real normal_tol = 0.3;       ///< |normal gap| / segment size
+  /// Shell thickness offsets (length; shell_offset.hpp), empty for none: per master segment, and
+  /// per node index of x. A slave is then tied within normal_tol x size of the two contact
+  /// surfaces, i.e. |gap| <= normal_tol x size + master_offset[s] + node_offset[slave] (*CONTACT_
+  /// AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK OPTION 8: shells tied at their offsets).
+  std::span<const Real> master_offset = {};
+  std::span<const Real> node_offset = {};
 };
+
+/// Entry i of a per-index offset table (0 when the table is empty).
+inline Real offset_of(std::span<const Real> table, Index i) {
+  return table.empty() ? 0.0 : table[static_cast<std::size_t>(i)];
+}
 
 /// Projects each node of `slaves` (indices into x) onto `master` at coordinates `x`. Returns one
 /// TiePoint per slave, in the order of `slaves`; untied ones have segment = -1.
@@ -51,7 +62,15 @@ inline std::vector<TiePoint> find_tie_points(std::span<const Index> slaves, cons
   Real cell = 0.0;
   for (Index s = 0; s < ns; ++s) cell = std::max(cell, detail::segment_size(segment_corners(master, s, x)));
   // The reach of a slave beyond a segment's box: the normal tolerance of the largest segment.
-  const Real reach = std::max(opt.normal_tol, opt.parametric_tol) * cell;
+  Real reach = std::max(opt.normal_tol, opt.parametric_tol) * cell;
+  const bool offsets = !opt.master_offset.empty() || !opt.node_offset.empty();
+  if (offsets) {
+    Real largest = 0.0;
+    for (Real o : opt.master_offset) largest = std::max(largest, o);
+    Real node_largest = 0.0;
+    for (Index s : slaves) node_largest = std::max(node_largest, offset_of(opt.node_offset, s));
+    reach += largest + node_largest;
+  }
   cell = cell > 0.0 ? cell : 1.0;
   auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
     return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
@@ -83,7 +102,9 @@ inline std::vector<TiePoint> find_tie_points(std::span<const Index> slaves, cons
     }
     if (best_s < 0) continue;
     const Real tangential = std::sqrt(std::max(0.0, best.distance * best.distance - best.gap * best.gap));
-    if (tangential > opt.parametric_tol * best.size || std::abs(best.gap) > opt.normal_tol * best.size) continue;
+    Real normal_reach = opt.normal_tol * best.size;
+    if (offsets) normal_reach += offset_of(opt.master_offset, best_s) + offset_of(opt.node_offset, t.slave);
+    if (tangential > opt.parametric_tol * best.size || std::abs(best.gap) > normal_reach) continue;
     t.segment = best_s;
     for (int a = 0; a < 4; ++a) t.master[a] = master.conn[4 * static_cast<std::size_t>(best_s) + a];
     t.shape = best.shape;
