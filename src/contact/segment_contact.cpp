@@ -254,7 +254,7 @@ void SegmentContact::evaluate(Index a, const NodalFields& nodes, bool baseline, 
       // the tests below, so it is not projected (the same outcome, without the Newton solve).
       const Real o_b = offset_.empty() ? 0.0 : offset_[bu];
       const Real within = radius_[bu] * (1.0 + 2e-3) + std::max(depth_limit_[bu], o_a + o_b);
-      if ((p - centroid_.get(b)).squaredNorm() > within * within * (1.0 + 1e-9)) continue;
+      if ((p - centroid_.get(b)).squaredNorm() > within * within * (1.0 + 1e-6)) continue;  // 1e-6: round-off
       const Projection pr = project_point_to_segment(p, surface_, b, nodes.x);
       const Real lateral = (p - pr.point - pr.gap * pr.normal).norm();
       if (lateral > 1e-3 * pr.size) continue;  // beside b
