@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "slideline/core/error.hpp"
 
@@ -31,26 +32,23 @@ void PartEnergyMonitor::reset(const std::vector<std::unique_ptr<ElementBlock>>& 
 void PartEnergyMonitor::check(Real t, long cycle, Real scale) {
   if (!(scale > 0.0)) return;  // nothing in play yet
   const Real negligible = kNegligible * scale;
-  for (Slot& s : slots_) {
-    if (s.internal < -kNegativeFraction * scale)
-      throw InstabilityError("the internal energy of part " + std::to_string(s.part) + " went negative (" +
-                                 num(s.internal) + ", beyond " + num(100.0 * kNegativeFraction) +
+  // An energy of a part below -kNegativeFraction x the largest energy in play stops the run.
+  const auto stop_if_negative = [&](const Slot& s, const char* energy, Real value, const char* why) {
+    if (value < -kNegativeFraction * scale)
+      throw InstabilityError(std::string("the ") + energy + " energy of part " + std::to_string(s.part) +
+                                 " went negative (" + num(value) + ", beyond " + num(100.0 * kNegativeFraction) +
                                  "% of the largest energy in play, " + num(scale) + ") at t = " + num(t) +
-                                 ", cycle " + std::to_string(cycle) +
-                                 ": its material is elastic, so a mode without stiffness (hourglass, mechanism) "
-                                 "is growing",
+                                 ", cycle " + std::to_string(cycle) + ": " + why,
                              t, cycle);
+  };
+  for (Slot& s : slots_) {
+    stop_if_negative(s, "internal", s.internal,
+                     "its material is elastic, so a mode without stiffness (hourglass, mechanism) is growing");
     // A viscous hourglass force only dissipates and a conservative stiffness only stores: the
     // hourglass energy of a part cannot go negative unless the control creates energy (a stiffness
     // form whose reference the element's plastic distortion has moved, for one).
-    if (s.hourglass < -kNegativeFraction * scale)
-      throw InstabilityError("the hourglass energy of part " + std::to_string(s.part) + " went negative (" +
-                                 num(s.hourglass) + ", beyond " + num(100.0 * kNegativeFraction) +
-                                 "% of the largest energy in play, " + num(scale) + ") at t = " + num(t) +
-                                 ", cycle " + std::to_string(cycle) +
-                                 ": the hourglass control is creating energy (try *CONTROL_HOURGLASS / "
-                                 "*HOURGLASS IHQ 1-5)",
-                             t, cycle);
+    stop_if_negative(s, "hourglass", s.hourglass,
+                     "the hourglass control is creating energy (try *CONTROL_HOURGLASS / *HOURGLASS IHQ 1-5)");
     if (!s.warned && s.hourglass > negligible && s.hourglass > kHourglassFraction * std::max<Real>(s.internal, 0.0)) {
       s.warned = true;
       warnings_.push_back(HourglassWarning{s.part, t, cycle, s.hourglass, s.internal});
