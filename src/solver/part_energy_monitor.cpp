@@ -48,7 +48,7 @@ void PartEnergyMonitor::check(Real t, long cycle, Real scale) {
     // hourglass energy of a part cannot go negative unless the control creates energy (a stiffness
     // form whose reference the element's plastic distortion has moved, for one).
     stop_if_negative(s, "hourglass", s.hourglass,
-                     "the hourglass control is creating energy (try *CONTROL_HOURGLASS / *HOURGLASS IHQ 1-5)");
+                     "the hourglass control is creating energy (try *CONTROL_HOURGLASS / *HOURGLASS IHQ 1-6)");
     if (!s.warned && s.hourglass > negligible && s.hourglass > kHourglassFraction * std::max<Real>(s.internal, 0.0)) {
       s.warned = true;
       warnings_.push_back(HourglassWarning{s.part, t, cycle, s.hourglass, s.internal});

@@ -57,7 +57,7 @@ class HexBlock final : public ElementBlock {
     chunk_damp_.assign(chunk_count(ne), 0.0);
     chunk_power_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
-    if (hg_.kind == HexHourglass::Kind::fb_stiffness)  // 12 generalised hourglass forces per element
+    if (hg_.kind == HexHourglass::Kind::fb_stiffness || hg_.kind == HexHourglass::Kind::assumed_strain)
       hg_force_.assign(12 * static_cast<std::size_t>(padded(ne) / kLanes), Lanes::Zero());
     volume0_.assign(padded(ne), 0.0);
     state_.assign(static_cast<std::size_t>(padded(ne) / kLanes), State{});
@@ -433,7 +433,8 @@ class HexBlock final : public ElementBlock {
 
   /// Stress divergence f_I = -V sigma B_I (residual form) plus the hourglass forces
   /// f = -k sum_a gamma_a (gamma_a . w), w the velocities (viscous) or the total displacements
-  /// (physical stiffness); the other stiffness forms in stiffness_hourglass.
+  /// (physical stiffness); the incremental stiffness forms (IHQ 4, 5, 6) in
+  /// hex8::stiffness_hourglass_forces.
   template <bool viscous>
   BatchForces batch_forces(const Batch& bt, const Tensor3<Lanes>& sigma, Index e0, Real dt,
                            const KernelConstants& kc) {
@@ -451,7 +452,11 @@ class HexBlock final : public ElementBlock {
       const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
       k_hg = hg_.coefficient * kc.rho0 * vol0 * bt.inv_vol * kc.c * v23 / 4.0;
     } else if (hg_.kind != HexHourglass::Kind::physical_stiffness) {
-      stiffness_hourglass(bt, e0, dt, kc, hx, hy, hz);
+      hex8::stiffness_hourglass_forces(hg_.kind == HexHourglass::Kind::assumed_strain, bt.x, bt.y, bt.z, bt.bx,
+                                       bt.by, bt.bz, bt.vx, bt.vy, bt.vz, bt.vol, dt,
+                                       hg_.coefficient * kc.rho0 * kc.c * kc.c / 72.0, kc.e_mod, kc.mu,
+                                       hg_.coefficient, hg_force_.data() + 12 * static_cast<std::size_t>(e0 / kLanes),
+                                       hx, hy, hz);
       k_hg = Lanes::Constant(-1.0);  // hx, hy, hz are already the forces
     } else {
       hex8::NodeLanes ux, uy, uz;
@@ -480,38 +485,6 @@ class HexBlock final : public ElementBlock {
       f.all -= f.fx[k] * bt.vx[k] + f.fy[k] * bt.vy[k] + f.fz[k] * bt.vz[k];
     }
     return f;
-  }
-
-  /// The hourglass forces (residual form) of the Flanagan-Belytschko stiffness form (IHQ 4, 5):
-  /// generalised forces Q_a += dt k qdot_a, qdot_a = gamma_a . v, k = QM (lambda + 2 mu) V |B|^2 / 72,
-  /// kept per element in global components; or of the assumed-strain form (IHQ 6) on the total
-  /// displacement u = x - X (hex_hourglass_stiffness.hpp).
-  void stiffness_hourglass(const Batch& bt, Index e0, Real dt, const KernelConstants& kc, hex8::NodeLanes& hx,
-                           hex8::NodeLanes& hy, hex8::NodeLanes& hz) {
-    hex8::ModeShapes gam;
-    hex8::hourglass_shapes(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, gam);
-    if (hg_.kind == HexHourglass::Kind::fb_stiffness) {
-      const hex8::ModeVectors qdot = hex8::hourglass_project(gam, bt.vx, bt.vy, bt.vz);
-      Lanes b2 = Lanes::Zero();
-      for (int k = 0; k < 8; ++k) b2 += bt.bx[k] * bt.bx[k] + bt.by[k] * bt.by[k] + bt.bz[k] * bt.bz[k];
-      const Lanes k_dt = (dt * hg_.coefficient * kc.rho0 * kc.c * kc.c / 72.0) * bt.vol * b2;
-      Lanes* q = hg_force_.data() + 12 * static_cast<std::size_t>(e0 / kLanes);
-      hex8::ModeVectors Q;
-      for (int a = 0; a < 4; ++a)
-        for (int i = 0; i < 3; ++i) Q[a][i] = q[3 * a + i] += k_dt * qdot[a][i];
-      hex8::hourglass_scatter(gam, Q, hx, hy, hz);
-      return;
-    }
-    hex8::NodeLanes ux, uy, uz;
-    for (int k = 0; k < 8; ++k) {
-      ux[k] = bt.x[k] - bt.x0[k];
-      uy[k] = bt.y[k] - bt.y0[k];
-      uz[k] = bt.z[k] - bt.z0[k];
-    }
-    const hex8::ModeVectors Q = hex8::assumed_strain_forces(
-        hex8::corotational_frame(bt.x, bt.y, bt.z), bt.bx, bt.by, bt.bz, hex8::hourglass_project(gam, ux, uy, uz),
-        bt.vol, kc.e_mod, kc.mu, hg_.coefficient);
-    hex8::hourglass_scatter(gam, Q, hx, hy, hz);
   }
 
   /// Adds a batch's step (times `step_factor`, per element, when the masses are scaled; before it
@@ -582,7 +555,7 @@ class HexBlock final : public ElementBlock {
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor, padded; empty: no scaling
   ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<State> state_;       ///< the law's state, one per batch
-  std::vector<Lanes> hg_force_;    ///< IHQ 4/5: generalised hourglass forces, 12 per batch (mode, component)
+  std::vector<Lanes> hg_force_;    ///< IHQ 4-6: generalised hourglass forces, 12 per batch, corotational frame
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;

@@ -5,6 +5,8 @@
 /// displacements (or their rates) q_a = sum_I gamma_aI w_I, gamma the orthogonalised hourglass
 /// shape vectors of hex8::hourglass_shape (4 modes a, a vector per mode), and return forces
 /// f_I = -sum_a gamma_aI Q_a, so a linear field (rigid motion, uniform strain) gives none.
+/// HexBlock keeps Q per element in the element's corotational frame and integrates it from the
+/// rates (Q += K dt qdot in local components), so both forms are objective and incremental.
 #include <array>
 
 #include "slideline/core/lanes.hpp"
@@ -87,8 +89,24 @@ inline Frame corotational_frame(const NodeLanes& x, const NodeLanes& y, const No
   return e;
 }
 
-/// Assumed-strain hourglass forces (IHQ 6): generalised forces Q (global components) of the
-/// generalised hourglass displacements q (global components), from the energy of the
+/// Local (corotational) components of global mode vectors: v_l[a][k] = e_k . v[a].
+inline ModeVectors to_local(const Frame& e, const ModeVectors& v) {
+  ModeVectors l;
+  for (int a = 0; a < 4; ++a)
+    for (int k = 0; k < 3; ++k) l[a][k] = e[k][0] * v[a][0] + e[k][1] * v[a][1] + e[k][2] * v[a][2];
+  return l;
+}
+
+/// Global components of local mode vectors: v[a][i] = sum_k e_k,i l[a][k].
+inline ModeVectors to_global(const Frame& e, const ModeVectors& l) {
+  ModeVectors v;
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i) v[a][i] = e[0][i] * l[a][0] + e[1][i] * l[a][1] + e[2][i] * l[a][2];
+  return v;
+}
+
+/// Assumed-strain hourglass stiffness (IHQ 6): the generalised forces Q (local components) of
+/// generalised hourglass displacements q (local components, frame e), from the energy of the
 /// hourglass part of the trilinear displacement field of a rectangular element in the
 /// corotational frame, with the strains that make a one-point element lock in bending left out:
 ///  - normal strains, modulus E (uniaxial stress: no Poisson stiffening): for local component k
@@ -99,11 +117,12 @@ inline Frame corotational_frame(const NodeLanes& x, const NodeLanes& y, const No
 ///  - left out: the parasitic shear of the bending modes (u_i with xi_i xi_j gives gamma_ij ~ xi_i / a_j,
 ///    which makes a coarse beam shear-lock) and the shear of the xi eta zeta mode.
 /// 1 / a_k^2 is taken as 8 sum_I (e_k . B_I)^2 (exact for a rectangular element). Everything is
-/// scaled by QM: QM = 1 gives a rectangular element the exact pure-bending stiffness.
+/// scaled by QM: QM = 1 gives a rectangular element the exact pure-bending stiffness. The map is
+/// linear in q: HexBlock applies it to the increments of q (the incremental, corotational form).
 /// `vol` volume, `e_mod` Young's modulus and `mu` the shear modulus (force/length^2).
-inline ModeVectors assumed_strain_forces(const Frame& e, const NodeLanes& bx, const NodeLanes& by,
-                                         const NodeLanes& bz, const ModeVectors& q, const Lanes& vol,
-                                         Real e_mod, Real mu, Real qm) {
+inline ModeVectors assumed_strain_stiffness(const Frame& e, const NodeLanes& bx, const NodeLanes& by,
+                                            const NodeLanes& bz, const ModeVectors& ql, const Lanes& vol,
+                                            Real e_mod, Real mu, Real qm) {
   std::array<Lanes, 3> w, rw;  // 1 / a_k^2 and 1 / a_k
   for (int k = 0; k < 3; ++k) {
     w[k] = Lanes::Zero();
@@ -114,9 +133,7 @@ inline ModeVectors assumed_strain_forces(const Frame& e, const NodeLanes& bx, co
     w[k] *= 8.0;
     rw[k] = lane_sqrt(w[k]);
   }
-  ModeVectors ql, Ql;  // local components
-  for (int a = 0; a < 4; ++a)
-    for (int k = 0; k < 3; ++k) ql[a][k] = e[k][0] * q[a][0] + e[k][1] * q[a][1] + e[k][2] * q[a][2];
+  ModeVectors Ql;
   const Lanes c = (qm / 192.0) * vol;
   // Mode a < 3 does not vary along axis a (mode 0 = eta zeta, 1 = xi zeta, 2 = xi eta).
   for (int a = 0; a < 3; ++a)
@@ -128,10 +145,43 @@ inline ModeVectors assumed_strain_forces(const Frame& e, const NodeLanes& bx, co
       Ql[i][i] += s * rw[j];
       Ql[j][j] += s * rw[i];
     }
-  ModeVectors Q;
+  return Ql;
+}
+
+/// The stiffness hourglass forces h (residual form) of a batch, incremental and corotational:
+/// the generalised hourglass rates qdot_a = gamma_a . v are taken into the element's frame e
+/// (corotational_frame), the stored generalised forces (12 per batch, local components, mode-major
+/// `q`) grow by K dt qdot_l and return to global components for h_I = -sum_a gamma_aI Q_a.
+/// K is k = `fb_k` V |B|^2 (IHQ 4, 5: fb_k = QM (lambda + 2 mu) / 72, the Flanagan-Belytschko
+/// stiffness) or the assumed-strain operator (IHQ 6, `assumed_strain`). Keeping Q in the frame
+/// that turns with the element makes the forces objective; integrating the rates makes the
+/// hourglass energy the work of the forces actually applied (no total-displacement form, whose
+/// stiffness changes with the shape and stops being conservative under large deformation).
+inline void stiffness_hourglass_forces(bool assumed_strain, const NodeLanes& x, const NodeLanes& y,
+                                       const NodeLanes& z, const NodeLanes& bx, const NodeLanes& by,
+                                       const NodeLanes& bz, const NodeLanes& vx, const NodeLanes& vy,
+                                       const NodeLanes& vz, const Lanes& vol, Real dt, Real fb_k, Real e_mod,
+                                       Real mu, Real qm, Lanes* q, NodeLanes& hx, NodeLanes& hy, NodeLanes& hz) {
+  ModeShapes gam;
+  hourglass_shapes(x, y, z, bx, by, bz, gam);
+  const Frame e = corotational_frame(x, y, z);
+  ModeVectors dq = to_local(e, hourglass_project(gam, vx, vy, vz));
+  for (auto& mode : dq)
+    for (auto& c : mode) c *= dt;
+  ModeVectors dQ;
+  if (assumed_strain) {
+    dQ = assumed_strain_stiffness(e, bx, by, bz, dq, vol, e_mod, mu, qm);
+  } else {
+    Lanes b2 = Lanes::Zero();
+    for (int k = 0; k < 8; ++k) b2 += bx[k] * bx[k] + by[k] * by[k] + bz[k] * bz[k];
+    const Lanes k_fb = fb_k * vol * b2;
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) dQ[a][i] = k_fb * dq[a][i];
+  }
+  ModeVectors Ql;
   for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) Q[a][i] = e[0][i] * Ql[a][0] + e[1][i] * Ql[a][1] + e[2][i] * Ql[a][2];
-  return Q;
+    for (int i = 0; i < 3; ++i) Ql[a][i] = q[3 * a + i] += dQ[a][i];
+  hourglass_scatter(gam, to_global(e, Ql), hx, hy, hz);
 }
 
 }  // namespace slideline::hex8
