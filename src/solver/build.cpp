@@ -142,7 +142,7 @@ struct Builder {
       if (laws.rigid)
         build_rigid_part(part, std::get<model::MatRigid>(*mit->second), g, pn, shsec);
       else if (!g.quad_ids.empty())
-        build_shell_part(part, laws, g, shsec, qm, bv, damping);
+        build_shell_part(part, laws, g, shsec, ihq, qm, bv, damping);
       else
         build_solid_part(part, laws, g, ssec.at(part.secid, part.src, "SECID of *PART"), ihq, qm, bv, damping);
       for (std::size_t b = first_block; b < setup.blocks.size(); ++b) setup.blocks[b]->set_material_id(part.mid);
@@ -232,7 +232,7 @@ struct Builder {
 
   template <class Sections>
   void build_shell_part(const model::Part& part, const MaterialLaws& laws, PartElements& g,
-                        const Sections& shsec, Real qm, const BulkViscosity& bv, StiffnessDamping damping) {
+                        const Sections& shsec, int ihq, Real qm, const BulkViscosity& bv, StiffnessDamping damping) {
     const auto& sec = shell_section(part, shsec);
     ShellSection ss;
     ss.thickness = sec.t[0];
@@ -246,6 +246,7 @@ struct Builder {
     ss.invariant_frame = m.accuracy_inn == 2 || m.accuracy_inn == 4 || m.accuracy_inn == -2 || m.accuracy_inn == -4;
     ss.invariant_triangles = m.accuracy_inn == 2 || m.accuracy_inn == 4;
     ss.hourglass_coefficient = qm;
+    ss.hourglass_stiffness = ihq >= 4 && ihq <= 6;  // one stiffness form on quadrilaterals, as LS-DYNA
     ss.bulk = bv;
     setup.blocks.push_back(make_shell_block(part.pid, *laws.shell, ss, std::move(g.quad_conn),
                                            std::move(g.quad_ids), damping));

@@ -105,9 +105,10 @@ void check_shell_part(const model::Part& part, const model::SectionShell* sec, b
   if (!laws.shell)
     p.todo(describe(part.src) + ": part " + std::to_string(part.pid) +
            " combines shells with " + laws.keyword + ", which is not implemented");
-  if (ihq < 0 || ihq > 3)
+  if (ihq < 0 || ihq > 6)
     p.todo(describe(part.src) + ": hourglass type IHQ=" + std::to_string(ihq) + " for shells of part " +
-           std::to_string(part.pid) + " is not implemented (shells take the viscous types 1-3)");
+           std::to_string(part.pid) + " is not implemented (shells take the viscous types 1-3 and the stiffness "
+           "types 4-6)");
   if (sec && (shell_nip(*sec) < 1 || shell_nip(*sec) > 10))
     p.bad(describe(sec->src) + ": field NIP of *SECTION_SHELL must be 1 to 10 (got " + std::to_string(sec->nip) +
           ")");

@@ -58,9 +58,10 @@ struct ShellSection {
   /// The same for the triangles (N3 = N4): the reference side 1-2 carried by the polar rotation of
   /// the in-plane deformation (INN = 2, 4; shell_c0tri::invariant_e1); false, side 1-2.
   bool invariant_triangles = false;
-  /// Viscous hourglass coefficient: fraction of the critical damping of each hourglass mode
-  /// (LS-DYNA QM); 0 = none.
+  /// Hourglass coefficient (LS-DYNA QM; 0 = none): viscous, the fraction of the critical damping
+  /// of each hourglass mode; stiffness (IHQ 4-6), the fraction of each mode's stiffness.
   Real hourglass_coefficient = 0.1;
+  bool hourglass_stiffness = false;  ///< IHQ 4-6: the stiffness form (shell_hourglass::add)
   BulkViscosity bulk;  ///< on the membrane dilatation rate
 };
 

@@ -74,6 +74,7 @@ class BasicShellBlock final : public ElementBlock {
     chunk_power_.assign(nc, 0.0);
     chunk_bad_.assign(nc, -1);
     area0_.assign(ne, 0.0);
+    hg_q_.assign(sec_.hourglass_stiffness ? 5 * static_cast<std::size_t>(nq_) : 0, 0.0);
     state_.assign(static_cast<std::size_t>(ne) * rule_.n, State{});
   }
 
@@ -306,7 +307,7 @@ class BasicShellBlock final : public ElementBlock {
       const Real m_node = mat_.density() * area0_[e] * sec_.thickness / 4.0;  // the mass stays
       const Real j_node = m_node * std::max(sec_.thickness * sec_.thickness, area0_[e]) / 12.0;
       out.p_hg = shell_hourglass::add(qhg_, mat_.youngs_modulus(), sec_.shear_factor * mat_.stiffness().g, t, m_node,
-                                      j_node, gm, Xm, V, W, f, m);
+                                      j_node, gm, Xm, V, W, f, m, hg_q_.empty() ? nullptr : &hg_q_[5 * e], dt, &g);
     }
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
@@ -578,6 +579,7 @@ class BasicShellBlock final : public ElementBlock {
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
   ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<Real> area0_;
+  std::vector<Real> hg_q_;  ///< IHQ 4-6: 5 stored hourglass forces per quadrilateral (local frame)
   Index nq_ = 0;              ///< quadrilaterals; the triangles follow them
   std::vector<Real> tri_c_;   ///< per triangle, the time integral of the shear's rotational part c
   std::vector<State> state_;  ///< the law's state, element-major, then point
