@@ -237,6 +237,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   if (card.penchk == 1 && !(xpene > 0.0))
     throw InputError(where(card) + ": PENCHK = 1 needs XPENE > 0 (*CONTROL_CONTACT card 2; 0 means 4)");
   spec.penetration_check = card.penchk == 1 ? xpene : 0.0;
+  spec.enmass = ctx.model.control_contact.enmass;  // acts on eroding passes only (docs/contact_erosion.md)
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
   if (by_segment && card.form == model::ContactForm::automatic_surface_to_surface)
