@@ -15,6 +15,7 @@
 #include "slideline/core/error.hpp"
 #include "slideline/element/element_block.hpp"
 #include "slideline/element/element_erosion.hpp"
+#include "slideline/mesh/block_topology.hpp"
 #include "slideline/mesh/surface_builder.hpp"
 
 namespace slideline {
@@ -118,36 +119,73 @@ Surface eroding_node_set_faces(const std::vector<Index>& nodes, const ContactBui
   return std::move(side.surface);
 }
 
-void set_node_set_slave_elements(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx) {
-  // Per node: the erodible elements that hold it, and whether one that cannot erode does.
+namespace {
+
+/// Per node: the erodible elements that hold it ({block, element}), whether one of them is a
+/// solid, and whether an element that cannot erode holds it. Read from every block's connectivity.
+struct NodeElements {
+  std::vector<std::uint8_t> fixed, solid;
+  std::vector<std::vector<std::array<Index, 2>>> held;
+};
+
+NodeElements node_elements(const ContactBuildContext& ctx) {
   const std::size_t n_nodes = ctx.nodes.size();
-  std::vector<std::uint8_t> fixed(n_nodes, 0);
-  std::vector<std::vector<std::array<Index, 2>>> held(n_nodes);
+  NodeElements out;
+  out.fixed.assign(n_nodes, 0);
+  out.solid.assign(n_nodes, 0);
+  out.held.resize(n_nodes);
   for (std::size_t b = 0; b < ctx.blocks.size(); ++b) {
     const ElementBlock& block = *ctx.blocks[b];
     const Index count = block.element_count();
     const std::span<const Index> conn = block.connectivity();
     if (count == 0) continue;
-    const std::size_t per = conn.size() / static_cast<std::size_t>(count);
+    const BlockTopology topology = block.topology();
     const bool erodes = block_erodes(ctx, static_cast<Index>(b));
-    for (Index e = 0; e < count; ++e)
-      for (std::size_t a = 0; a < per; ++a) {
-        const auto n = static_cast<std::size_t>(conn[static_cast<std::size_t>(e) * per + a]);
+    for (Index e = 0; e < count; ++e) {
+      const BlockTopology::Element el = topology.element(e);
+      for (int a = 0; a < el.topology().nodes; ++a) {
+        const auto n = static_cast<std::size_t>(conn[el.node_offset + static_cast<std::size_t>(a)]);
         if (!erodes) {
-          fixed[n] = 1;
-        } else if (held[n].empty() || held[n].back() != std::array<Index, 2>{static_cast<Index>(b), e}) {
-          held[n].push_back({static_cast<Index>(b), e});  // a degenerate element repeats a node
+          out.fixed[n] = 1;
+          continue;
         }
+        if (el.topology().is_solid()) out.solid[n] = 1;
+        auto& h = out.held[n];
+        if (h.empty() || h.back() != std::array<Index, 2>{static_cast<Index>(b), e})
+          h.push_back({static_cast<Index>(b), e});  // a degenerate element repeats a node
       }
+    }
   }
+  return out;
+}
+
+}  // namespace
+
+void set_node_set_slave_elements(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx) {
+  const NodeElements ne = node_elements(ctx);
   std::vector<Index> row(slaves.size() + 1, 0);
   std::vector<std::array<Index, 2>> elements;
   for (std::size_t i = 0; i < slaves.size(); ++i) {
     const auto n = static_cast<std::size_t>(slaves[i]);
-    if (!fixed[n]) elements.insert(elements.end(), held[n].begin(), held[n].end());
+    if (!ne.fixed[n]) elements.insert(elements.end(), ne.held[n].begin(), ne.held[n].end());
     row[i + 1] = static_cast<Index>(elements.size());
   }
   erosion.set_slave_elements(std::move(row), std::move(elements));
+}
+
+void set_retained_slave_nodes(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx,
+                              int enmass) {
+  if (enmass != 1 && enmass != 2) return;  // ENMASS 0: a freed node leaves the contact
+  const NodeElements ne = node_elements(ctx);
+  std::vector<Index> row(slaves.size() + 1, 0);
+  std::vector<std::array<Index, 2>> elements;
+  for (std::size_t i = 0; i < slaves.size(); ++i) {
+    const auto n = static_cast<std::size_t>(slaves[i]);
+    if (!ne.fixed[n] && (enmass == 2 || ne.solid[n]))
+      elements.insert(elements.end(), ne.held[n].begin(), ne.held[n].end());
+    row[i + 1] = static_cast<Index>(elements.size());
+  }
+  erosion.set_retained_nodes(std::move(row), std::move(elements));
 }
 
 void prepare_eroding_contact(InterfaceSpec& spec, const ContactBuildContext& ctx, const std::vector<Id>& eroding_part) {

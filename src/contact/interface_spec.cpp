@@ -216,10 +216,15 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
     // node-based options.
     const bool s2s = card.form == model::ContactForm::automatic_surface_to_surface;
     const bool single = card.form == model::ContactForm::dyna3d && !card.automatic_general && !card.eroding;
-    if (card.type != T::automatic || !(s2s || single))
+    // Type 3 (*CONTACT_SURFACE_TO_SURFACE): the two-sided pass on solid faces (make_sliding_contact
+    // refuses shells, whose one-sided treatment on the non-automatic card is not built).
+    const bool type3 = card.type == T::surface_to_surface && card.form == model::ContactForm::dyna3d;
+    if (!((card.type == T::automatic && (s2s || single)) || type3))
       throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact, optional card A) is implemented on "
-                                          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and "
-                                          "*CONTACT_AUTOMATIC_SINGLE_SURFACE only");
+                                          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, *CONTACT_AUTOMATIC_SINGLE_SURFACE "
+                                          "and *CONTACT_SURFACE_TO_SURFACE only");
+    if (card.enforcement != model::Enforcement::penalty)
+      throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact) with _LAGRANGE enforcement");
     if (card.vc != 0.0 || card.penchk != 0 || card.penalty_coupling != 0)
       throw_contact_not_implemented(card, "SOFT = 2 (segment-based contact) with VC (viscous friction), PENCHK or "
                                           "_MORTAR is not implemented");
@@ -237,6 +242,7 @@ InterfaceSpec resolve_interface(const model::Contact& card, std::size_t position
   if (card.penchk == 1 && !(xpene > 0.0))
     throw InputError(where(card) + ": PENCHK = 1 needs XPENE > 0 (*CONTROL_CONTACT card 2; 0 means 4)");
   spec.penetration_check = card.penchk == 1 ? xpene : 0.0;
+  spec.enmass = ctx.model.control_contact.enmass;  // acts on eroding passes only (docs/contact_erosion.md)
   const bool by_segment = card.type == T::tiebreak_surface;
   spec.failure = TiebreakFailure{card.nflf, card.sflf, by_segment ? 2.0 : card.nen, by_segment ? 2.0 : card.mes};
   if (by_segment && card.form == model::ContactForm::automatic_surface_to_surface)

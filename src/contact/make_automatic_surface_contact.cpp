@@ -195,6 +195,7 @@ AutomaticPass make_automatic_pass(InterfaceSpec& spec, const ContactBuildContext
   if (spec.eroding) {
     ContactErosion erosion(master, two_sided ? nullptr : &own, pass_side.nodes);
     if (spec.node_set_slaves && !two_sided) set_node_set_slave_elements(erosion, pass_side.nodes, ctx);
+    set_retained_slave_nodes(erosion, pass_side.nodes, ctx, spec.enmass);
     out.pass->set_erosion(std::move(erosion));
   }
   return out;

@@ -23,7 +23,7 @@ std::unique_ptr<ContactAlgorithm> make_nodes_to_surface(InterfaceSpec& spec, con
   return make_penalty_interface<NodesToSurfaceContact>(spec, std::move(pass));
 }
 
-std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
+std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   const ContactSide& side = spec.slave;
   // Single surface: spec.master_shells is spec.slave_shells (SST, SFST on both roles).
   auto pass = make_penalty_pass(side, slave_node_offsets(side, spec.slave_shells, 0.0), side.surface,
@@ -41,7 +41,11 @@ std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
                                std::move(segments));
   }
   // Eroding parts (docs/contact_erosion.md): the surface is its own slaves' surface.
-  if (spec.eroding) pass->set_erosion(ContactErosion(side.surface, nullptr, side.nodes));
+  if (spec.eroding) {
+    ContactErosion erosion(side.surface, nullptr, side.nodes);
+    set_retained_slave_nodes(erosion, side.nodes, ctx, spec.enmass);
+    pass->set_erosion(std::move(erosion));
+  }
   std::vector<Id> parts = side.parts;
   return make_penalty_interface<AutomaticContact>(spec, std::move(pass), std::move(parts));
 }
@@ -51,7 +55,7 @@ std::unique_ptr<ContactAlgorithm> make_automatic(InterfaceSpec& spec) {
 std::unique_ptr<ContactAlgorithm> make_node_and_automatic_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   if (spec.type != model::ContactType::automatic) return make_nodes_to_surface(spec, ctx);
   if (spec.segment_based && spec.form == model::ContactForm::dyna3d) return make_segment_contact(spec);
-  return spec.form == model::ContactForm::dyna3d ? make_automatic(spec) : make_automatic_surface_contact(spec, ctx);
+  return spec.form == model::ContactForm::dyna3d ? make_automatic(spec, ctx) : make_automatic_surface_contact(spec, ctx);
 }
 
 }  // namespace slideline

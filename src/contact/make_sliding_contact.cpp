@@ -1,14 +1,38 @@
 // Types 3 (surface to surface) and 10 (one way): penalty interfaces (issue 8).
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "slideline/contact/make_contact_interface.hpp"
 #include "slideline/contact/one_way_contact.hpp"
 #include "slideline/contact/penalty_factory.hpp"
 #include "slideline/contact/surface_to_surface_contact.hpp"
+#include "slideline/core/error.hpp"
 
 namespace slideline {
 
+namespace {
+
+/// SOFT = 2 on Type 3 (*CONTACT_SURFACE_TO_SURFACE): the automatic card's segment pass
+/// (segment_contact.hpp) on solid faces, whose outward orientation leaves the two cards nothing to
+/// differ on; a shell segment (one-sided on the non-automatic card, two-sided on the automatic
+/// one) is refused by name.
+std::unique_ptr<ContactAlgorithm> make_type3_segment_contact(InterfaceSpec& spec) {
+  for (const auto& [side, name] : {std::pair{&spec.slave, "SSID"}, std::pair{&spec.master, "MSID"}})
+    for (Index s = 0; s < side->surface.segment_count(); ++s)
+      if (side->surface.kind[static_cast<std::size_t>(s)] == SegmentKind::shell)
+        throw NotImplementedError(spec.where + ": SOFT = 2 (segment-based contact) on *CONTACT_SURFACE_TO_SURFACE " +
+                                  "with shell segments (" + name + ", part " +
+                                  std::to_string(side->surface.part[static_cast<std::size_t>(s)]) +
+                                  ") is not implemented (solid faces only); *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE "
+                                  "takes shells with SOFT = 2");
+  return make_segment_contact(spec);
+}
+
+}  // namespace
+
 std::unique_ptr<ContactAlgorithm> make_sliding_contact(InterfaceSpec& spec) {
+  if (spec.segment_based) return make_type3_segment_contact(spec);  // the reader admits Type 3 only
   const ContactSide& slave = spec.slave;
   const ContactSide& master = spec.master;
   // Slave nodes on master segments (stiffness factor SLSFAC x SFS).

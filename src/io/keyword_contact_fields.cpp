@@ -552,15 +552,16 @@ void read_control_contact_cards(const Context& ctx, Block& b, model::ControlCont
   if (t.shlthk < 0 || t.shlthk > 2)
     throw InputError(ctx.where(line) + b.keyword + " card 1: field SHLTHK must be 0, 1 or 2 (got " +
                      std::to_string(t.shlthk) + ")");
-  // PENOPT 1 and 2 (the DYNA3D types take the master segment's stiffness here, docs/contact.md).
   if (t.penopt != 2)
     field(ctx, &card1, kw, "card 1", t.penopt, {"PENOPT", 1, Use::refuse, "penalty stiffness option"});
-  // THKCHG 1: the automatic cards' shell offsets follow the current thickness (ISTUPD; docs/contact.md,
-  // "Shell thickness change"); other values are refused.
+  // PENOPT 1, 2 (the master segment's stiffness here); THKCHG 1 (docs/contact.md, "Shell thickness change").
   if (t.thkchg != 1)
     field(ctx, &card1, kw, "card 1", t.thkchg, {"THKCHG", 0, Use::refuse, "shell thickness changes in contact"});
   field(ctx, &card1, kw, "card 1", t.orien, {"ORIEN", 1, Use::refuse, "segment orientation option"});
-  field(ctx, &card1, kw, "card 1", t.enmass, {"ENMASS", 0, Use::refuse, "nodes freed by erosion kept in contact with their mass; here they leave it (0)"});
+  if (t.enmass < 0 || t.enmass > 2)  // docs/contact_erosion.md, "ENMASS"
+    throw InputError(ctx.where(line) + b.keyword + " card 1: field ENMASS must be 0, 1 or 2 (nodes freed by erosion: 0 "
+                     "leave the contact; 1 those of solids, 2 of solids and shells stay as free masses; got " +
+                     std::to_string(t.enmass) + ")");
   t.ignore = read_ignore(ctx, b, 2, 0, "card 4");
   t.xpene = read_xpene(ctx, b);
   check_remaining(ctx, b, kControl);
@@ -582,7 +583,6 @@ void check_card(const Context& ctx, const Line& l, std::string_view keyword, std
     if (v != r.dflt) act(ctx, l.number, keyword, card, r, v);
   }
 }
-
 
 void check_remaining(const Context& ctx, Block& b, std::span<const OptionalCard> cards) {
   std::size_t k = 0;

@@ -45,7 +45,8 @@ std::string field_text(const Context* ctx, int line, const model::Contact& c, co
 
 /// SOFT = 2 (segment-based contact, contact/segment_contact.hpp): its fields of optional card A.
 /// Built: SBOPT 2 (planar segments; 0 is 2), DEPTH 2 (surface penetration only; 0 is 2), on
-/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and *CONTACT_AUTOMATIC_SINGLE_SURFACE. Every other value is
+/// *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, *CONTACT_AUTOMATIC_SINGLE_SURFACE and *CONTACT_SURFACE_TO_SURFACE
+/// (Type 3: solid faces only, the build refuses shells). Every other value is
 /// refused by name (file, line, field, value); LCIDAB (an airbag's thickness curve) is refused.
 /// BSORT >= 0 is honoured (cycles between searches, SegmentContact::set_search_interval); < 0 (a
 /// load curve of the interval) is refused.
@@ -53,11 +54,12 @@ void read_segment_based_fields(const Context& ctx, const Line& l, const Card& k,
   const bool s2s = c.form == model::ContactForm::automatic_surface_to_surface;
   const bool single =
       c.type == ContactType::automatic && c.form == model::ContactForm::dyna3d && !c.automatic_general && !c.eroding;
-  if (!(s2s || single) || !penalty_sliding(c))
+  const bool type3 = c.type == ContactType::surface_to_surface && c.form == model::ContactForm::dyna3d;
+  if (!(s2s || single || type3) || !penalty_sliding(c))
     throw NotImplementedError(field_text(&ctx, l.number, c, "optional card A", "SOFT", 2,
                                          "segment-based penalty contact") +
-                              " is implemented on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and "
-                              "*CONTACT_AUTOMATIC_SINGLE_SURFACE (penalty) only");
+                              " is implemented on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, "
+                              "*CONTACT_AUTOMATIC_SINGLE_SURFACE and *CONTACT_SURFACE_TO_SURFACE (penalty) only");
   int lcidab = 0, sbopt = 0, depth = 0;
   k.get(2, "LCIDAB", lcidab);
   k.get(4, "SBOPT", sbopt);

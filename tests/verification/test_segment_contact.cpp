@@ -39,9 +39,11 @@ constexpr Real kG = 0.1;     // weight per unit mass of the block (acceleration)
 constexpr Real kRamp = 0.2;  // the weight ramps in over [0, kRamp]
 constexpr Real kEnd = 2.0;
 
-model::Contact segment_card(int soft, Real sfs) {
+/// type3: *CONTACT_SURFACE_TO_SURFACE (DYNA3D Type 3) instead of the automatic card.
+model::Contact segment_card(int soft, Real sfs, bool type3 = false) {
   test_support::ContactChoice c{model::ContactType::automatic, model::Enforcement::penalty,
                                 model::ContactForm::automatic_surface_to_surface};
+  if (type3) c = {model::ContactType::surface_to_surface, model::Enforcement::penalty, model::ContactForm::dyna3d};
   model::Contact card = test_support::contact_card(c, 1, 2, 0, 0, 0.0);
   card.sfs = card.sfm = sfs;  // SLSFAC 0.1
   card.soft = soft;
@@ -60,7 +62,7 @@ struct RestResult {
   Real energy_error = 0.0;
 };
 
-RestResult rest(int soft, const Frame& frame) {
+RestResult rest(int soft, const Frame& frame, bool type3 = false) {
   model::Model m;
   add_elastic_part(m, 1, 1.0, 1.0, 0.3, 10);     // the soft block
   add_elastic_part(m, 2, 1.0, 1000.0, 0.3, 10);  // the stiff plate
@@ -68,7 +70,7 @@ RestResult rest(int soft, const Frame& frame) {
   const BoxIds block = add_box(m, 1, Vec3(0.4, 0.2, 0.4), Vec3(0.4, 0.2, 0.4), {2, 1, 2}, frame);
   m.node_sets.push_back({3, "plate_bottom", plate.face_j(0), {}});
   m.spcs.push_back({1, "plate_fixed", 3, 0, {1, 1, 1, 0, 0, 0}, {}});
-  m.contacts.push_back(segment_card(soft, 1.0));
+  m.contacts.push_back(segment_card(soft, 1.0, type3));
   const Vec3 up = frame.map(Vec3::UnitY());
   m.curves.push_back({1, "ramp", 0, 1.0, 1.0, 0.0, 0.0, 0, {{0.0, 0.0}, {kRamp, 1.0}, {100.0, 1.0}}, {}});
   const Axis axes[3] = {Axis::x, Axis::y, Axis::z};
@@ -246,7 +248,7 @@ struct BarResult {
   Real step_ratio = std::numeric_limits<Real>::max();  ///< smallest contact step / step taken
 };
 
-BarResult bars(const Frame& frame) {
+BarResult bars(const Frame& frame, bool type3 = false) {
   model::Model m;
   add_elastic_part(m, 1, 1.0, kE, 0.0);
   add_elastic_part(m, 2, 1.0, kE, 0.0);
@@ -254,7 +256,7 @@ BarResult bars(const Frame& frame) {
   const BoxIds target = add_box(m, 2, Vec3(kL + kGap, 0.0, 0.0), Vec3(kL, kA, kA), {kAlong, kAcross, kAcross}, frame);
   const Vec3 e = frame.map(Vec3::UnitX());
   for (Id id : striker.node) m.initial_velocity_nodes.push_back({id, kV0 * e, Vec3::Zero(), 0, 0});
-  m.contacts.push_back(segment_card(2, 10.0));  // SLSFAC x SFS = 1
+  m.contacts.push_back(segment_card(2, 10.0, type3));  // SLSFAC x SFS = 1
   const Real c = std::sqrt(kE);
   m.termination.endtim = kGap / kV0 + 1.6 * 2.0 * kL / c;
   m.timestep.tssfac = 0.5;
@@ -293,6 +295,29 @@ TEST(SegmentContact, BarsExchangeVelocitiesConservingMomentumAndEnergy) {
     EXPECT_LT(r.momentum_drift, 1e-12);
     EXPECT_LT(r.energy_error, 1e-3);
   }
+}
+
+// SOFT = 2 on *CONTACT_SURFACE_TO_SURFACE (Type 3): solid faces point out of their elements, so the
+// automatic card's segment pass is the whole of it. The closed forms above hold as on the automatic
+// card (straight and rotated), and the answers are the automatic card's to the bit.
+TEST(SegmentContact, SurfaceToSurfaceCardRunsTheSegmentContactOfTheAutomaticCard) {
+  for (const bool rotated : {false, true}) {
+    const Frame frame = rotated ? test_support::oblique_frame() : Frame{};
+    const RestResult r = rest(2, frame, true), a = rest(2, frame);
+    std::printf("Type 3, SOFT 2, %s: force %.6e of W %.6e, depth %.5e (W / 4k %.5e), energy %.1e\n",
+                rotated ? "rotated" : "aligned", r.force_up, r.weight, r.mean_depth, r.closed_depth, r.energy_error);
+    EXPECT_NEAR(r.force_up / r.weight, 1.0, 5e-3);
+    EXPECT_NEAR(r.mean_depth / r.closed_depth, 1.0, 5e-3);
+    EXPECT_LT(r.k_code_dev, 1e-12);
+    EXPECT_LT(r.energy_error, 1e-3);
+    EXPECT_EQ(r.force_up, a.force_up);
+    EXPECT_EQ(r.mean_depth, a.mean_depth);
+  }
+  const BarResult b = bars(Frame{}, true);
+  EXPECT_LT(std::abs(b.v_striker), 0.03 * kV0);
+  EXPECT_NEAR(b.v_target, kV0, 0.03 * kV0);
+  EXPECT_LT(b.momentum_drift, 1e-12);
+  EXPECT_LT(b.energy_error, 1e-3);
 }
 
 }  // namespace

@@ -515,5 +515,29 @@ TEST(SegmentContactFriction, ShellPlateSticksBelowAndSlidesAboveTheFrictionAngle
   }
 }
 
+// SOFT = 2 on *CONTACT_SURFACE_TO_SURFACE (Type 3) runs on solid faces only: shells, one-sided on
+// the non-automatic card and two-sided on the automatic one, are refused at the build by name.
+TEST(SegmentContactShells, SurfaceToSurfaceCardRefusesShellSegments) {
+  model::Model m;
+  add_shell_plate(m, 1, kT, 0.0, false, Frame{});
+  add_shell_plate(m, 2, kT, kT + kGap, true, Frame{});
+  test_support::ContactChoice c{model::ContactType::surface_to_surface, model::Enforcement::penalty,
+                                model::ContactForm::dyna3d};
+  model::Contact card = test_support::contact_card(c, 1, 2, 0, 0, 0.0);
+  card.soft = 2;
+  m.contacts.push_back(card);
+  m.termination.endtim = 1.0;
+  try {
+    build_simulation(m);
+    ADD_FAILURE() << "built";
+  } catch (const NotImplementedError& e) {
+    const std::string w = e.what();
+    EXPECT_NE(w.find("SOFT = 2 (segment-based contact) on *CONTACT_SURFACE_TO_SURFACE with shell segments (SSID, "
+                     "part 1) is not implemented"),
+              std::string::npos)
+        << w;
+  }
+}
+
 }  // namespace
 }  // namespace slideline

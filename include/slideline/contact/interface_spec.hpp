@@ -133,6 +133,9 @@ struct InterfaceSpec {
   /// direction of the face's normal) are left out of both sides (prepare_eroding_contact).
   bool symmetry_faces_out = false;
   bool eroding = false;
+  /// ENMASS of *CONTROL_CONTACT: 0 a node freed of all its elements leaves the contact; 1 (its
+  /// elements included a solid) and 2 (any) it stays as a free mass (set_retained_slave_nodes).
+  int enmass = 0;
   /// SNLOG of optional card B (1: the shooting-node logic off): refused by
   /// prepare_eroding_contact() on a pass with an eroding part, whose sudden-penetration rule is
   /// that logic; nothing to act on elsewhere.

@@ -30,6 +30,11 @@ Surface eroding_node_set_faces(const std::vector<Index>& nodes, const ContactBui
 /// Keeps each slave of a node set active while an element that holds it is live
 /// (ContactErosion::set_slave_elements).
 void set_node_set_slave_elements(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx);
+/// ENMASS 1, 2 (*CONTROL_CONTACT): keeps each slave freed of all its elements in the contact as a
+/// free mass, when one of them was a solid (1) or any (2) (ContactErosion::set_retained_nodes);
+/// nothing for ENMASS 0.
+void set_retained_slave_nodes(ContactErosion& erosion, std::span<const Index> slaves, const ContactBuildContext& ctx,
+                              int enmass);
 
 /// Builds the interface of a resolved card (resolve_interface); takes the spec's sides.
 std::unique_ptr<ContactAlgorithm> make_contact_interface(InterfaceSpec& spec, const ContactBuildContext& ctx);

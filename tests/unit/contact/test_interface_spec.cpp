@@ -149,8 +149,8 @@ TEST(InterfaceSpec, MortarCouplingIsRefusedWhereItIsNotBuilt) {
 }
 
 // SOFT = 2 (segment-based contact): built on the automatic single surface (Type 12 without MSID,
-// here with friction and VDC: a SegmentContact), refused by name with VC, on _GENERAL and on
-// Type 3.
+// here with friction and VDC: a SegmentContact) and on Type 3's solid faces; refused by name with
+// VC, on _GENERAL, on Type 3's shell segments and on Type 10.
 TEST(InterfaceSpec, SegmentBasedContactRunsOnTheSingleSurfaceAndIsRefusedElsewhere) {
   model::Model m = scenarios::make_sslide_problem("sslide12p").model;
   model::Contact& c = m.contacts.front();
@@ -168,10 +168,19 @@ TEST(InterfaceSpec, SegmentBasedContactRunsOnTheSingleSurfaceAndIsRefusedElsewhe
   EXPECT_NE(build_error<NotImplementedError>(m).find("SOFT = 2 (segment-based contact) with VC"), std::string::npos);
   c.vc = 0.0;
   c.automatic_general = true;
-  EXPECT_NE(build_error<NotImplementedError>(m).find("*CONTACT_AUTOMATIC_SINGLE_SURFACE only"), std::string::npos);
+  EXPECT_NE(build_error<NotImplementedError>(m).find("*CONTACT_AUTOMATIC_SINGLE_SURFACE and *CONTACT_SURFACE_TO_SURFACE "
+                                                     "only"),
+            std::string::npos);
   model::Model t3 = scenarios::make_sslide_problem("sslide3p").model;
-  t3.contacts.front().soft = 2;
-  EXPECT_NE(build_error<NotImplementedError>(t3).find("SOFT = 2 (segment-based contact, optional card A)"),
+  t3.contacts.front().soft = 2;  // solid on solid
+  const std::unique_ptr<Simulation> s3 = build_simulation(t3);
+  EXPECT_NE(dynamic_cast<const SegmentContact*>(&s3->contacts()[0]), nullptr);
+  for (model::Contact& card : t3.contacts) card.soft = 2;  // the pairings with shells too
+  EXPECT_NE(build_error<NotImplementedError>(t3).find("on *CONTACT_SURFACE_TO_SURFACE with shell segments"),
+            std::string::npos);
+  model::Model t10 = scenarios::make_sslide_problem("sslide10pv").model;
+  t10.contacts.front().soft = 2;
+  EXPECT_NE(build_error<NotImplementedError>(t10).find("SOFT = 2 (segment-based contact, optional card A)"),
             std::string::npos);
 }
 

@@ -104,12 +104,18 @@ TEST(ErodingContactCards, Card4FieldsOutsideWhatRunsAreRefusedByName) {
   }
 }
 
-// *CONTROL_CONTACT: ENMASS 1, 2 (freed nodes kept in contact) and NSEROD are refused; ECDT only
-// chooses the step and is warned about.
+// *CONTROL_CONTACT: ENMASS 0, 1, 2 are read (freed nodes leave the contact, or stay as free masses:
+// docs/contact_erosion.md), other values are input errors naming the field and value; NSEROD is
+// refused; ECDT only chooses the step and is warned about.
 TEST(ErodingContactCards, ControlContactErosionFields) {
   const std::string head = "*KEYWORD\n*CONTROL_CONTACT\n";
-  std::string w = refusal<NotImplementedError>(head + "0.1,0,1,0,1,0,1,1\n*END\n");
-  EXPECT_NE(w.find("c.k:3: *CONTROL_CONTACT card 1: field ENMASS = 1"), std::string::npos) << w;
+  for (int enmass : {0, 1, 2})
+    EXPECT_EQ(read_keyword_string(head + "0.1,0,1,0,1,0,1," + std::to_string(enmass) + "\n*END\n", "c.k")
+                  .control_contact.enmass,
+              enmass);
+  std::string w = refusal<InputError>(head + "0.1,0,1,0,1,0,1,3\n*END\n");
+  EXPECT_NE(w.find("c.k:3: *CONTROL_CONTACT card 1: field ENMASS must be 0, 1 or 2"), std::string::npos) << w;
+  EXPECT_NE(w.find("got 3"), std::string::npos) << w;
   w = refusal<NotImplementedError>(head + "\n\n\n\n0,1\n*END\n");
   EXPECT_NE(w.find("field NSEROD = 1"), std::string::npos) << w;
   std::vector<Diagnostic> warnings;

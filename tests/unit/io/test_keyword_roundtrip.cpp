@@ -96,9 +96,9 @@ model::Model full_model() {
   m.termination = {0.5, 100000, 2e-4, 7.5, 12.5, {}};
   m.timestep = {1e-5, 0.6, 1, 0.0, -1e-6, 2, 1, {}};  // MS1ST = 1: mass scaled once; TSLIMT != 0 is refused
   // Values the reader accepts (0 in ISLCHK / ORIEN would read back as their default 1; THKCHG 1 is
-  // read and written back, other values are refused, RWPNAL warns, ENMASS 1/2 is refused:
-  // docs/contact.md, "Contact card fields").
-  m.control_contact = {0.2, 0.0, 1, 1, 2, 1, 1, 0};
+  // read and written back, other values are refused, RWPNAL warns, ENMASS 0, 1, 2 are read and
+  // written back: docs/contact.md, "Contact card fields").
+  m.control_contact = {0.2, 0.0, 1, 1, 2, 1, 1, 2};
   m.shell_esort = 1;  // *CONTROL_SHELL: ESORT, ISTUPD, INTGRD are stored and written back
   m.shell_istupd = 4;
   m.shell_intgrd = 1;

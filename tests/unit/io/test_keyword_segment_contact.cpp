@@ -1,6 +1,6 @@
-// SOFT = 2 (segment-based contact) in the reader: accepted on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
-// and *CONTACT_AUTOMATIC_SINGLE_SURFACE with SBOPT and DEPTH at their defaults (2; 0 and blank mean
-// 2); BSORT >= 0 read (cycles between searches, honoured by SegmentContact); every other SBOPT,
+// SOFT = 2 (segment-based contact) in the reader: accepted on *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE,
+// *CONTACT_AUTOMATIC_SINGLE_SURFACE and *CONTACT_SURFACE_TO_SURFACE (the build refuses shells
+// there) with SBOPT and DEPTH at their defaults (2; 0 and blank mean 2); BSORT >= 0 read (cycles between searches, honoured by SegmentContact); every other SBOPT,
 // DEPTH, LCIDAB, a negative BSORT (a load curve), the SOFT = 2 fields of optional cards D-F, and
 // SOFT = 2 on another card are refused naming file, line, card, field and value. docs/contact.md,
 // "Segment-based contact (SOFT = 2)".
@@ -47,9 +47,11 @@ TEST(KeywordSegmentContact, SoftTwoIsReadWithItsDefaultOptions) {
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_EQ(m.contacts[0].soft, 2) << a;
   }
-  const model::Model m = read_keyword_string(deck(card({"2"}), "", "AUTOMATIC_SINGLE_SURFACE"), "u.k", nullptr);
-  ASSERT_EQ(m.contacts.size(), 1u);
-  EXPECT_EQ(m.contacts[0].soft, 2);
+  for (const std::string type : {"AUTOMATIC_SINGLE_SURFACE", "SURFACE_TO_SURFACE"}) {  // Type 3: solid faces
+    const model::Model m = read_keyword_string(deck(card({"2"}), "", type), "u.k", nullptr);
+    ASSERT_EQ(m.contacts.size(), 1u);
+    EXPECT_EQ(m.contacts[0].soft, 2) << type;
+  }
 }
 
 TEST(KeywordSegmentContact, OtherOptionsAndCardsAreRefusedNamingFileLineFieldAndValue) {
@@ -69,7 +71,9 @@ TEST(KeywordSegmentContact, OtherOptionsAndCardsAreRefusedNamingFileLineFieldAnd
       {deck(card({"2", "", "", "", "", "", "-3"})), "u.k:6: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card A: field BSORT = -3 (load curve of the bucket sort interval) is not implemented"},
       {deck(card({"2"}), blank + blank + card({"1"})), "u.k:9: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE optional card D: field Q2TRI = 1"},
       {deck(card({"2"}), blank + blank + blank + card({"", "", "", "", "0.5"})), "optional card E: field FRICSF = 0.5"},
-      {deck(card({"2"}), "", "SURFACE_TO_SURFACE"), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
+      {deck(card({"2"}), "", "ONE_WAY_SURFACE_TO_SURFACE"), "u.k:6: *CONTACT_ONE_WAY_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
+      {deck(card({"2"}), "", "SURFACE_TO_SURFACE_LAGRANGE"), "u.k:6: *CONTACT_SURFACE_TO_SURFACE_LAGRANGE optional card A: field SOFT = 2"},
+      {deck(card({"2", "", "", "", "", "3"}), "", "SURFACE_TO_SURFACE"), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field DEPTH = 3"},
       {deck(card({"2"}), "", "AUTOMATIC_GENERAL"), "u.k:6: *CONTACT_AUTOMATIC_GENERAL optional card A: field SOFT = 2"},
       {deck(card({"2", "", "", "", "1"}), "", "AUTOMATIC_SINGLE_SURFACE"), "u.k:6: *CONTACT_AUTOMATIC_SINGLE_SURFACE optional card A: field SBOPT = 1"},
   };

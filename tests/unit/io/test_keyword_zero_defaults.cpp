@@ -170,7 +170,8 @@ TEST(KeywordContactFields, PhysicsFieldsNotImplementedAreRefusedNamingFileLineAn
       {contact_deck(card({"-1"}, ""), c3), "u.k:4: *CONTACT_SURFACE_TO_SURFACE card 2: FS, FD or DC < 0"},
       {contact_deck(c2, card({"", "", "", "", "", "", "0.5"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field FSF = 0.5"},
       {contact_deck(c2, card({"", "", "", "", "", "", "", "2"}, "")), "u.k:5: *CONTACT_SURFACE_TO_SURFACE card 3: field VSF = 2"},
-      {contact_deck(c2, c3, card({"2"}, "")), "u.k:6: *CONTACT_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
+      {contact_deck(c2, c3, card({"2"}, ""), "ONE_WAY_SURFACE_TO_SURFACE"),  // Type 3 takes it (solid faces)
+       "u.k:6: *CONTACT_ONE_WAY_SURFACE_TO_SURFACE optional card A: field SOFT = 2"},
       {contact_deck(c2, c3, card({}, "") + card({"1"}, ""), "TIEBREAK_SURFACE_TO_SURFACE"),  // after card 4
        "u.k:7: *CONTACT_TIEBREAK_SURFACE_TO_SURFACE optional card A: field SOFT = 1"},
       {contact_deck(c2, c3, card({"1"}, ""), "SURFACE_TO_SURFACE_LAGRANGE"),

@@ -197,7 +197,8 @@ class PenaltyPass {
   void set_erosion(ContactErosion erosion) {
     erosion_ = std::move(erosion);
     eroding_ = true;
-    pairs_.set_erosion(erosion_.slave_active(), erosion_.segment_active(), erosion_.own_active());
+    pairs_.set_erosion(erosion_.slave_active(), erosion_.segment_active(), erosion_.own_active(),
+                       erosion_.slave_free());
   }
   /// The erosion state (null without set_erosion()).
   const ContactErosion* erosion() const { return eroding_ ? &erosion_ : nullptr; }

@@ -15,6 +15,9 @@
 ///   node still inside the body (all its faces interior). A node-set slave side
 ///   (set_slave_elements) instead keeps every node of the set while an element holding it is
 ///   live: the set names its slaves; its own faces only orient them.
+/// - ENMASS 1 and 2 (*CONTROL_CONTACT; set_retained_nodes): a slave freed of all its elements, when
+///   one of them was a solid (1) or any (2), stays active as a free mass (slave_free() says which)
+///   and meets any active segment: with no live face it has nothing to be oriented by.
 /// update() re-reads the deletions once per cycle, before the search (the elements of the cycle
 /// have run: src/solver/simulation_forces.cpp); it allocates nothing, and each flag is a pure
 /// function of the deletion states, so nothing depends on the thread count.
@@ -143,6 +146,16 @@ class ContactErosion {
     elements_ = std::move(elements);
   }
 
+  /// ENMASS 1, 2: slave i is kept, once every element of its row is deleted, as a free mass in
+  /// contact (active, and slave_free()[i] = 1). `row` (per slave + 1) indexes `elements`, {block,
+  /// element} of the erodible elements that hold slave i; an empty row: never kept (a node held by
+  /// an element that cannot erode, or not by the elements ENMASS names). Before bind(); allocates.
+  void set_retained_nodes(std::vector<Index> row, std::vector<std::array<Index, 2>> elements) {
+    free_row_ = std::move(row);
+    free_elements_ = std::move(elements);
+    slave_free_.assign(free_row_.empty() ? 0 : free_row_.size() - 1, 0);
+  }
+
   /// Binds both surfaces to the blocks' deletion states and sets the flags. Allocates.
   void bind(const std::vector<std::unique_ptr<ElementBlock>>& blocks) {
     master_.bind(blocks);
@@ -165,6 +178,9 @@ class ContactErosion {
   /// Per segment of the slaves' own surface (the master's when they are the same).
   std::span<const std::uint8_t> own_active() const { return same_ ? master_.active() : own_.active(); }
   std::span<const std::uint8_t> slave_active() const { return slave_active_; }
+  /// Per slave: 1 while it is a free mass kept in contact (ENMASS 1, 2); empty without
+  /// set_retained_nodes().
+  std::span<const std::uint8_t> slave_free() const { return slave_free_; }
 
  private:
   bool element_live(const std::array<Index, 2>& be) const {
@@ -186,6 +202,14 @@ class ContactErosion {
         a = row_[i + 1] == row_[i];
         for (Index f = row_[i]; f < row_[i + 1] && !a; ++f) a = own[static_cast<std::size_t>(faces_[static_cast<std::size_t>(f)])] != 0;
       }
+      if (!slave_free_.empty()) {  // ENMASS 1, 2: a freed node stays, as a free mass
+        bool f = free_row_[i + 1] > free_row_[i];
+        for (Index e = free_row_[i]; e < free_row_[i + 1] && f; ++e)
+          f = !element_live(free_elements_[static_cast<std::size_t>(e)]);
+        changed = changed || (slave_free_[i] != 0) != f;
+        slave_free_[i] = f ? 1 : 0;
+        a = a || f;
+      }
       changed = changed || (slave_active_[i] != 0) != a;
       slave_active_[i] = a ? 1 : 0;
     }
@@ -201,6 +225,9 @@ class ContactErosion {
   std::vector<Index> element_row_;              ///< per slave + 1: its erodible elements in elements_
   std::vector<std::array<Index, 2>> elements_;  ///< {block, element}
   std::vector<const ElementErosion*> erosion_;  ///< per block; null: it does not erode
+  std::vector<Index> free_row_;                 ///< set_retained_nodes(): per slave + 1
+  std::vector<std::array<Index, 2>> free_elements_;
+  std::vector<std::uint8_t> slave_free_;        ///< per slave (empty: ENMASS 0)
 };
 
 }  // namespace slideline

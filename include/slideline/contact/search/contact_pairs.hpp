@@ -128,11 +128,13 @@ class ContactPairs {
   /// slave_active[i] != 0, segment s only while segment_active[s] != 0, and the orientation reads
   /// only the active own faces (own_active, per segment of the slaves' own surface). Views of the
   /// owner's flags, which it updates between cycles (then force_search()); before initialize();
-  /// never called: everything is active.
+  /// never called: everything is active. slave_free (ENMASS 1, 2; empty: none): a slave freed of
+  /// its elements and kept as a free mass is not oriented (it has no face left).
   void set_erosion(std::span<const std::uint8_t> slave_active, std::span<const std::uint8_t> segment_active,
-                   std::span<const std::uint8_t> own_active) {
+                   std::span<const std::uint8_t> own_active, std::span<const std::uint8_t> slave_free = {}) {
     slave_active_ = slave_active;
     segment_active_ = segment_active;
+    slave_free_ = slave_free;
     orientation_.set_own_activity(own_active);
   }
   /// One offset per master segment (length) instead of the ShellOffsetRule's (a surface whose
@@ -251,6 +253,7 @@ class ContactPairs {
   std::span<const std::uint8_t> held_node_;      ///< set_held(): per internal node (empty: none held)
   std::span<const std::uint8_t> held_segment_;   ///< set_held(): per master segment
   std::span<const std::uint8_t> slave_active_;   ///< set_erosion(): per slave (empty: all active)
+  std::span<const std::uint8_t> slave_free_;     ///< set_erosion(): per slave, 1 a free mass (ENMASS)
   std::span<const std::uint8_t> segment_active_; ///< set_erosion(): per master segment
   std::vector<std::uint8_t> slave_solid_;  ///< skip_own_shell_part: the node has only solid faces
   Real allowance_ = 0.0;
@@ -337,6 +340,7 @@ inline bool ContactPairs::admits(std::size_t i, Index s, const Vec3Field& x) con
   if (opt_.skip_own_shell_part && (!slave_solid_[i] || master_.kind[su] == SegmentKind::shell) &&
       slave_part_[i] == master_.part[su])
     return false;
+  if (!slave_free_.empty() && slave_free_[i] != 0) return true;  // ENMASS 1, 2: no face to orient it
   return orientation_.admits(i, master_, s, x);
 }
 
