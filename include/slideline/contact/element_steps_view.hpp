@@ -13,7 +13,7 @@
 /// its own step; together they allow less (by 1/sqrt(2) when the two are equal). Every contact
 /// family that votes (penalty passes, SOFT = 2 segment pairs, tiebreak ties) forms its pairs'
 /// 1 / dt^2 with combined_step_inv2(), from the largest element term of the nodes the pair joins
-/// (ElementStepsView::largest), and votes 1 / sqrt of the largest over its pairs.
+/// (ElementStepsView::pair, ::largest), and votes 1 / sqrt of the largest over its pairs.
 #include <algorithm>
 #include <cstddef>
 #include <span>
