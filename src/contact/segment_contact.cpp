@@ -439,8 +439,8 @@ void SegmentContact::scatter(ContactForceView out, const ElementStepsView& eleme
     else
       slave_ += rec.force;
     // The spring's vote with the elements on the nodes it joins (element_steps_view.hpp).
-    const Real e2 = elements.empty() ? 0.0
-                                     : std::max(elements.largest(ca, rec.shape_a, 4), elements.largest(cb, rec.shape_b, 4));
+    const Real e2 =
+        elements.empty() ? 0.0 : std::max(elements.largest(ca, rec.shape_a, 4), elements.largest(cb, rec.shape_b, 4));
     w2 = std::max(w2, combined_step_inv2(rec.dt_inv2, e2));
     friction_work_ += rec.dissipation;
     if (!transmitted_.empty())

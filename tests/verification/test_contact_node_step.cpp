@@ -61,7 +61,8 @@ constexpr Real kSlaveMass = kRho / 8.0, kMasterMass = kRhoP * 4.0 / 8.0, kSumN2 
 std::string squeezed_cube_deck(const Mat3& rotation, Real tssfac) {
   std::ostringstream o;
   o << std::setprecision(17) << "*KEYWORD\n*CONTROL_TERMINATION\n" << kEnd << "\n*CONTROL_TIMESTEP\n0," << tssfac
-    << "\n*CONTROL_BULK_VISCOSITY\n1e-12,1e-12\n*CONTROL_HOURGLASS\n1,1e-3\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1," << kRho << "," << kE
+    << "\n*CONTROL_BULK_VISCOSITY\n1e-12,1e-12\n*CONTROL_HOURGLASS\n1,1e-3\n*SECTION_SOLID\n1,1\n"
+    << "*MAT_ELASTIC\n1," << kRho << "," << kE
     << ",0.0\n*MAT_ELASTIC\n2," << kRhoP << "," << kEp << ",0.0\n*PART\ncube\n1,1,1\n*PART\nlower\n2,1,2\n"
     << "*PART\nupper\n3,1,2\n*NODE\n";
   const auto node = [&](int id, Real x, Real y, Real z) {
