@@ -398,7 +398,7 @@ void SegmentContact::apply_forces(const NodalFields& nodes, const StepTimes& tim
   else if (++since_search_ >= interval_ || watch_.max_displacement(nodes.x) >= allowance_)
     search_ahead(nodes, times.dt_prev);
   parallel_for(surface_.segment_count(), [&](Index a) { evaluate(a, nodes, false, times.dt_prev); });
-  scatter(out);
+  scatter(out, times.element_steps);
 }
 
 void SegmentContact::add_transmitted(Id on, Id from, const Vec3& force) {
@@ -418,7 +418,7 @@ void SegmentContact::add_transmitted(Id on, Id from, const Vec3& force) {
     transmitted_[k] -= force;
 }
 
-void SegmentContact::scatter(ContactForceView out) {
+void SegmentContact::scatter(ContactForceView out, const ElementStepsView& elements) {
   slave_ = Vec3::Zero();
   for (Vec3& t : transmitted_) t.setZero();
   Real w2 = 0.0;
@@ -438,7 +438,10 @@ void SegmentContact::scatter(ContactForceView out) {
       slave_ -= rec.force;
     else
       slave_ += rec.force;
-    w2 = std::max(w2, rec.dt_inv2);
+    // The spring's vote with the elements on the nodes it joins (element_steps_view.hpp).
+    const Real e2 =
+        elements.empty() ? 0.0 : std::max(elements.largest(ca, rec.shape_a, 4), elements.largest(cb, rec.shape_b, 4));
+    w2 = std::max(w2, combined_step_inv2(rec.dt_inv2, e2));
     friction_work_ += rec.dissipation;
     if (!transmitted_.empty())
       add_transmitted(surface_.part[a], surface_.part[static_cast<std::size_t>(rec.other)], rec.force);

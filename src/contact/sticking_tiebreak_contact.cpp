@@ -62,6 +62,7 @@ void StickingTiebreakContact::initialize(const ContactContext& c) {
 
   tied_count_ = released_count_ = 0;
   dt_ = std::numeric_limits<Real>::max();
+  tie_inv2_.assign(n, 0.0);
   slave_ = master_total_ = Vec3::Zero();
   // Nodes in contact at t = 0, tied where they are: within 1e-3 of the segment's size of it, along
   // and across (OPTION 2's search takes normal gaps up to 0.3 of it; here a node short of that
@@ -99,6 +100,23 @@ void StickingTiebreakContact::tie(std::size_t i, const TiePoint& t, Real time, c
   const Real ms = nodes.mass[t.slave];
   const Real w2 = (kc_[i] + k_reverse_[i]) * ((ms > 0.0 ? 1.0 / ms : 0.0) + (mm < std::numeric_limits<Real>::max() ? 1.0 / mm : 0.0));
   if (w2 > 0.0) dt_ = std::min(dt_, 2.0 / std::sqrt(w2));
+  if (w2 > 0.0) tie_inv2_[i] = 0.25 * w2;
+  vote_ = dt_;
+}
+
+void StickingTiebreakContact::update_step_vote(const ElementStepsView& elements) {
+  if (elements.empty()) {
+    vote_ = dt_;  // the springs alone, as tie() keeps them
+    return;
+  }
+  // Every spring tie() has formed (as dt_ keeps them), with the elements on its nodes.
+  Real w2 = 0.0;
+  for (std::size_t i = 0; i < tie_inv2_.size(); ++i) {
+    if (!(tie_inv2_[i] > 0.0)) continue;
+    const TiePoint& t = tie_[i];
+    w2 = std::max(w2, combined_step_inv2(tie_inv2_[i], elements.pair(t.slave, t.master.data(), t.shape, 4)));
+  }
+  vote_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }
 
 void StickingTiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
@@ -165,6 +183,7 @@ void StickingTiebreakContact::apply_forces(const NodalFields& nodes, const StepT
     t.offset = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - g * nk;
     tie(i, t, times.t, nodes);
   }
+  update_step_vote(times.element_steps);
 }
 
 }  // namespace slideline

@@ -150,6 +150,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   slave_ = master_total_ = first_failure_stress_ = Vec3::Zero();
   // Stable step of each spring between the slave mass and its lightest master (2 / omega).
   dt_ = std::numeric_limits<Real>::max();
+  link_inv2_.assign(n, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
     Real kk = compression_ * kappa_[k] * area_[k];
     if (p_.mixed_mode) {
@@ -164,7 +165,23 @@ void TiebreakContact::initialize(const ContactContext& c) {
     const Real ms = nodes.mass[links_[k].slave];
     const Real w2 = kk * ((ms > 0.0 ? 1.0 / ms : 0.0) + (mm < std::numeric_limits<Real>::max() ? 1.0 / mm : 0.0));
     if (w2 > 0.0) dt_ = std::min(dt_, 2.0 / std::sqrt(w2));
+    if (w2 > 0.0) link_inv2_[k] = 0.25 * w2;
   }
+  vote_ = dt_;
+}
+
+void TiebreakContact::update_step_vote(const ElementStepsView& elements) {
+  if (elements.empty()) {
+    vote_ = dt_;  // the springs alone, as at initialize()
+    return;
+  }
+  // Each tie's spring with the elements on its nodes (element_steps_view.hpp).
+  Real w2 = 0.0;
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    const TiePoint& t = links_[k];
+    w2 = std::max(w2, combined_step_inv2(link_inv2_[k], elements.pair(t.slave, t.master.data(), t.shape, 4)));
+  }
+  vote_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }
 
 void TiebreakContact::seed_contact(const Vec3Field& x, const std::vector<std::int8_t>& side) {
@@ -183,6 +200,7 @@ void TiebreakContact::seed_contact(const Vec3Field& x, const std::vector<std::in
 }
 
 void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) {
+  update_step_vote(times.element_steps);
   if (p_.mixed_mode) {
     apply_cohesive(nodes, out);
     return;

@@ -37,7 +37,8 @@ void MassRescaling::initialize(ElementBlocks& blocks, NodalFields& nodes, const 
 }
 
 MassRescaling::Result MassRescaling::rescale(ElementBlocks& blocks, NodalFields& nodes, const NodeSlots& slots,
-                                             bool at_reference, std::vector<PartAddedMass>& parts) {
+                                             bool at_reference, std::vector<PartAddedMass>& parts,
+                                             std::span<Real> block_steps) {
   Result r;
   r.step = std::numeric_limits<Real>::max();
   for (std::size_t k : blocks_) {
@@ -54,6 +55,7 @@ MassRescaling::Result MassRescaling::rescale(ElementBlocks& blocks, NodalFields&
     p.scaled = rb.scaled;
     p.smallest_step = rb.smallest_raw;
     r.added += rb.added;
+    if (!block_steps.empty()) block_steps[k] = rb.step;  // the block's vote from now on
     if (rb.step < r.step) {
       r.step = rb.step;
       r.controlling = &b;

@@ -72,6 +72,8 @@ void Simulation::initialize() {
   dt_initial_ = 0.0;  // set by the first assemble_forces()
   cycle_ = 0;
   initialize_contacts();
+  block_step_.assign(blocks_.size(), std::numeric_limits<Real>::max());
+  if (has_contact() && controls_.contact_step_with_elements) element_steps_.build(blocks_, n);
   recorder_.build_channels(output_sources());
   chunk_e_.assign(static_cast<std::size_t>(chunk_count(n)), NodalEnergySums{});
   ledger_.reset();

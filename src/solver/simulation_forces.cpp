@@ -22,7 +22,8 @@ StepVotes Simulation::assemble_forces() {
   if (rescaling_.active()) {
     // MS1ST = 0: the factors from the steps just computed; the masses change at v^{n+1/2}, and
     // that kinetic energy is booked (not at the start: the first kinetic energy has the new mass).
-    const MassRescaling::Result r = rescaling_.rescale(blocks_, nodes_, corners_.force_slots, false, added_mass_);
+    const MassRescaling::Result r =
+        rescaling_.rescale(blocks_, nodes_, corners_.force_slots, false, added_mass_, block_step_);
     if (r.controlling) {
       local.elements = r.step;
       local.block = r.controlling;
@@ -55,6 +56,7 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
       block_energy_[k] = BlockEnergy{};
       if (ElementErosion* er = b->erosion()) er->set_time(t_);
       const Real d = b->compute_forces(nodes_, dt_, corners_, block_energy_[k]);
+      block_step_[k] = d;
       if (b->bounds_time_step()) {
         if (d < dtc) controlling = b.get();
         dtc = std::min(dtc, d);
@@ -125,7 +127,12 @@ Real Simulation::apply_contact_forces() {
   nodes_.f_contact.fill(0.0);
   if (has_rotations_) nodes_.m_contact.fill(0.0);
   // The coming step is not known yet (the interfaces vote for it here).
-  const StepTimes times{t_, dt_, 0.0, 0.0, cycle_, dt_initial_};
+  StepTimes times{t_, dt_, 0.0, 0.0, cycle_, dt_initial_};
+  if (element_steps_.built()) {
+    // Each spring's vote counts the elements on its nodes (contact/element_steps_view.hpp).
+    element_steps_.update(block_step_);
+    times.element_steps = element_steps_.view();
+  }
   const Real dtc = contacts_.apply_forces(nodes_, times, ContactForceView{nodes_.f_contact, nodes_.m_contact});
   contact_seconds_ += seconds_since(t0);
   return dtc;

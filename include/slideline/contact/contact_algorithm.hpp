@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "slideline/contact/element_steps_view.hpp"
 #include "slideline/core/diagnostics.hpp"
 #include "slideline/core/types.hpp"
 #include "slideline/mesh/nodal_fields.hpp"
@@ -40,6 +41,11 @@ struct StepTimes {
   /// The run's initial step: the time-step scale factor (TSSFAC) x the elements' stable step at
   /// t = 0 (time); 0 where the driver does not know it. SOFT = 1 sizes its springs by it.
   Real dt_initial = 0.0;
+  /// Per node, 1 / dt_e^2 of its elements at this cycle's force evaluation (element_steps_view.hpp):
+  /// each spring's step vote adds it to its own (1 / dt^2 = 1 / dt_e^2 + 1 / dt_c^2). Empty where
+  /// the driver does not give it (and with SimulationControls::contact_step_with_elements off):
+  /// the springs vote alone.
+  ElementStepsView element_steps{};
 };
 
 /// What an interface may look at when it initialises (after masses are lumped, before the first

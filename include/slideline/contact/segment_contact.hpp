@@ -126,7 +126,9 @@ class SegmentContact final : public ContactAlgorithm, public ContactForces {
   void evaluate(Index a, const NodalFields& nodes, bool baseline, Real dt_prev);
   void add_damping_and_friction(std::size_t g, Index held, SegmentContactRecord& rec, const Vec3& n, const Index* ca,
                                 const Index* cb, Real inv_m, const NodalFields& nodes, Real dt_prev);
-  void scatter(ContactForceView out);
+  /// The forces into `out`, the part-pair totals, and the step vote: per point 1 / dt^2 = its
+  /// dt_inv2 + the largest 1 / dt_e^2 of the two segments' nodes it joins (`elements`, empty: 0).
+  void scatter(ContactForceView out, const ElementStepsView& elements);
   void add_transmitted(Id on, Id from, const Vec3& force);
 
   std::string name_;

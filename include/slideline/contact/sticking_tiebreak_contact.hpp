@@ -69,7 +69,9 @@ class StickingTiebreakContact final : public ContactAlgorithm, public ContactFor
   void initialize(const ContactContext& c) override;
   ContactPhases phases() override { return {.forces = this}; }
   void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override;
-  Real stable_dt() const override { return std::min(dt_, contact_->stable_dt()); }
+  /// The smaller of the pass's vote and the ties' springs' (each with the elements on its nodes
+  /// when StepTimes::element_steps is given: element_steps_view.hpp).
+  Real stable_dt() const override { return std::min(vote_, contact_->stable_dt()); }
   Vec3 slave_force() const override { return slave_ + contact_->slave_force(); }
   Vec3 master_force() const override { return master_total_ + contact_->master_force(); }
   Real friction_work() const override { return contact_->friction_work(); }
@@ -93,6 +95,8 @@ class StickingTiebreakContact final : public ContactAlgorithm, public ContactFor
  private:
   /// Ties pass slave i at `t` (a segment of the pass's surface) from the next cycle, at time `time`.
   void tie(std::size_t i, const TiePoint& t, Real time, const NodalFields& nodes);
+  /// vote_ for this cycle: the springs alone (empty `elements`), else each with its nodes' elements.
+  void update_step_vote(const ElementStepsView& elements);
 
   std::string name_;
   std::unique_ptr<ContactAlgorithm> contact_;
@@ -120,7 +124,9 @@ class StickingTiebreakContact final : public ContactAlgorithm, public ContactFor
   std::vector<Real> tie_time_;  ///< per pass slave
   std::vector<Vec3> force_;     ///< per pass slave: tie force on the slave, last cycle
   Index tied_count_ = 0, released_count_ = 0;
-  Real dt_ = std::numeric_limits<Real>::max();
+  Real dt_ = std::numeric_limits<Real>::max();  ///< the ties' springs alone
+  std::vector<Real> tie_inv2_;  ///< per pass slave: omega^2 / 4 of its tie's spring (0: never tied)
+  Real vote_ = std::numeric_limits<Real>::max();  ///< the ties' vote of the last update_step_vote()
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
 };
 

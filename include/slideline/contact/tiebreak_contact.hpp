@@ -118,7 +118,9 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   void initialize(const ContactContext& c) override;
   ContactPhases phases() override { return {.forces = this}; }
   void apply_forces(const NodalFields& nodes, const StepTimes& times, ContactForceView out) override;
-  Real stable_dt() const override { return dt_; }
+  /// The ties' springs' vote (2 / omega, omega^2 = k (1/m_s + 1/m_lightest master)), each with
+  /// the elements on its nodes when StepTimes::element_steps is given (element_steps_view.hpp).
+  Real stable_dt() const override { return vote_; }
   Vec3 slave_force() const override { return slave_; }
   Vec3 master_force() const override { return master_total_; }
   Real friction_work() const override { return friction_work_; }
@@ -162,6 +164,8 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
     return static_cast<Real>(pairs_.side(k)) * segment_normal(master(), links_[k].segment, x);
   }
   const Surface& master() const { return pairs_.master(); }
+  /// vote_ for this cycle: the springs alone (empty `elements`), else each with its nodes' elements.
+  void update_step_vote(const ElementStepsView& elements);
   /// The contact after failure: no search (the tie search seeds it), one-hop tracking, the side
   /// fixed at tie time.
   static ContactPairsOptions pairs_options() {
@@ -237,7 +241,9 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   std::vector<Vec3> friction_force_; ///< per link: tangential force of the contact share (history)
   std::vector<Vec3> tie_friction_;   ///< normal_only: per link, the tied share's friction force (history)
   Real compression_ = 1.0;           ///< normal stiffness in compression / kappa x area (>= 1)
-  Real dt_ = std::numeric_limits<Real>::max();
+  Real dt_ = std::numeric_limits<Real>::max();    ///< the springs alone (initialize())
+  std::vector<Real> link_inv2_;  ///< per link: omega^2 / 4 of its spring (1 / time^2; 0: no spring)
+  Real vote_ = std::numeric_limits<Real>::max();  ///< stable_dt(): the last update_step_vote()
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
   Vec3 first_failure_stress_ = Vec3::Zero();  ///< Type 9: (max, mean, max/mean) normal traction

@@ -45,9 +45,10 @@ class MassRescaling {
 
   /// After the element forces at the current state: re-evaluates the factors from the steps the
   /// blocks just computed (`at_reference`: from their reference steps), rebuilds `nodes.mass` and
-  /// updates `parts`.
+  /// updates `parts`; `block_steps` (one per block, may be empty) gets each rescaled block's
+  /// smallest step after its new factors.
   Result rescale(ElementBlocks& blocks, NodalFields& nodes, const NodeSlots& slots, bool at_reference,
-                 std::vector<PartAddedMass>& parts);
+                 std::vector<PartAddedMass>& parts, std::span<Real> block_steps = {});
 
   /// Body loads act on the mass of their parts, added mass included (as with MS1ST = 1): from now
   /// on rescale() also rebuilds `loads[l].mass` (resolved by then: nodes and physical masses) from

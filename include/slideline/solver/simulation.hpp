@@ -27,6 +27,7 @@
 #include "slideline/solver/exchange.hpp"
 #include "slideline/solver/mass_rescaling.hpp"
 #include "slideline/solver/mass_scaling.hpp"
+#include "slideline/solver/nodal_element_steps.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
 #include "slideline/solver/node_roles.hpp"
 #include "slideline/solver/output_recorder.hpp"
@@ -93,6 +94,8 @@ class Simulation {
   long cycle() const { return cycle_; }
   Real dt() const { return dt_; }
   Real stable_dt() const { return votes_.stable(); }
+  /// The votes of the last force evaluation (elements and contact, before TSSFAC).
+  const StepVotes& votes() const { return votes_; }
   const EnergyReport& energy() const { return ledger_.report(); }
   /// Total element count over all blocks.
   Index element_count() const;
@@ -194,6 +197,10 @@ class Simulation {
   EnergyLedger ledger_;
   PartEnergyMonitor part_energy_;
   std::vector<BlockEnergy> block_energy_;  // this cycle's element powers per block (exchange point 3)
+  // The contact springs' votes count the elements on their nodes (controls_.contact_step_with_elements):
+  // each block's vote of this cycle, and per node the smallest of its blocks'.
+  std::vector<Real> block_step_;
+  NodalElementSteps element_steps_;
   CornerBuffer corners_;
   std::vector<Real> alpha_;              // per-node mass-damping coefficient
   std::vector<PartAddedMass> added_mass_;  // mass scaling per block (initialize; every cycle with MS1ST = 0)

@@ -110,6 +110,9 @@ struct PenaltyRecord {
   std::array<Real, 4> shape{};  ///< master shape functions
   Real dissipation = 0.0;       ///< friction work of this cycle (energy, >= 0)
   Real dt_inv2 = 0.0;           ///< omega^2 / 4 of this pair's spring (1 / time^2), 0 if no segment
+  /// 1 / dt_e^2 of the elements on the pair's nodes (the slave and the master nodes it is coupled
+  /// to; 0 without StepTimes::element_steps): the pass votes 1 / sqrt(dt_inv2 + element_inv2).
+  Real element_inv2 = 0.0;
   bool mortar = false;          ///< the force is shared by the slave's MortarWeights, not `shape`
 };
 
@@ -154,7 +157,8 @@ class PenaltyPass {
   void scatter(ContactForceView out, Vec3& slave_total, Vec3& master_total, Real& friction_work) const;
 
   /// Largest stable step of the pass's springs (time): 2 / omega, omega^2 = k (1/m_s + sum N^2/m_a),
-  /// over every slave with a segment at the last compute().
+  /// over every slave with a segment at the last compute(); with StepTimes::element_steps, each
+  /// pair's 1 / dt^2 = omega^2 / 4 + 1 / dt_e^2 of its nodes' elements (element_steps_view.hpp).
   Real stable_dt() const { return dt_; }
 
   std::span<const Index> slaves() const { return pairs_.slaves(); }

@@ -137,7 +137,7 @@ void PenaltyPass::compute(const NodalFields& nodes, const StepTimes& times, cons
   parallel_for(static_cast<Index>(pairs_.slaves().size()),
                [&](Index i) { evaluate(static_cast<std::size_t>(i), nodes, times, friction); });
   Real w2 = 0.0;
-  for (const PenaltyRecord& r : records_) w2 = std::max(w2, r.dt_inv2);
+  for (const PenaltyRecord& r : records_) w2 = std::max(w2, combined_step_inv2(r.dt_inv2, r.element_inv2));
   dt_ = w2 > 0.0 ? 1.0 / std::sqrt(w2) : std::numeric_limits<Real>::max();
 }
 
@@ -168,6 +168,7 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   rec.segment = -1;
   rec.dissipation = 0.0;
   rec.dt_inv2 = 0.0;
+  rec.element_inv2 = 0.0;
   const ContactPoint& point = pairs_.points()[i];
   const Index s = point.segment;
   if (s < 0) {
@@ -194,6 +195,10 @@ void PenaltyPass::evaluate(std::size_t i, const NodalFields& nodes, const StepTi
   const CoupledPoint cp = coupled_point(node, pr, c, mw, nodes);
   const Real inv_m = cp.inv_mass;
   rec.dt_inv2 = 0.25 * k * inv_m;  // raised below by a stiffer stick spring
+  // The elements on the pair's nodes: the spring's vote adds their 1 / dt_e^2 (element_steps_view.hpp).
+  const ElementStepsView& es = times.element_steps;
+  if (!es.empty())
+    rec.element_inv2 = mw ? es.pair(node, mw->node.data(), mw->weight, mw->count) : es.pair(node, c, pr.shape, 4);
 
   const bool shell = master.kind[su] == SegmentKind::shell;
   Vec3 n = mw ? mw->normal : pr.normal;
