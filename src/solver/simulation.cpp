@@ -258,7 +258,8 @@ OutputSources Simulation::output_sources() const {
   return OutputSources{nodes_,         blocks_,          contacts_,
                        supports_,      constraints_,     history_nodes_,
                        ledger_.report(), rescaling_.active() ? std::span<const PartAddedMass>(added_mass_)
-                                                             : std::span<const PartAddedMass>()};
+                                                             : std::span<const PartAddedMass>(),
+                       &part_energy_};
 }
 
 void Simulation::update_damping_coefficients() {
