@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "slideline/core/error.hpp"
@@ -116,23 +115,6 @@ void StabilityMonitor::check_energy(const EnergyReport& e, PartEnergyMonitor& pa
                                           std::abs(e.contact) + e.friction});
   if (cycle < kEnergyCheckStart) return;
   parts.check(t, cycle, peak_energy_);  // hourglass warnings; negative internal energy stops
-  // The model's internal energy: the trapezoidal work of all the element forces on the nodes less
-  // the hourglass, bulk-viscosity, damping and eroded energies, which are integrated from the
-  // element powers. Negative means those energies claim more than the element forces did: their
-  // powers change at the step's own rate (a chattering hourglass mode, a contact kick, a shock
-  // within one step), where the rule of one quadrature is not the other's (the parts' energies,
-  // all from the element powers, do not see it). docs/solver.md, "Energy checks per part".
-  if (e.internal < -PartEnergyMonitor::kNegativeFraction * peak_energy_) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "the internal energy of the model went negative (%.4g, beyond %.3g%% of the largest energy in "
-                  "play, %.4g): the hourglass (%.4g), bulk-viscosity (%.4g) and eroded (%.4g) energies booked from "
-                  "the element powers exceed the work the element forces did on the nodes, so they are not "
-                  "physical (a mode changing at the step's own rate: hourglass or contact chatter)",
-                  e.internal, 100.0 * PartEnergyMonitor::kNegativeFraction, peak_energy_, e.hourglass,
-                  e.bulk_viscosity, e.eroded());
-    throw InstabilityError(std::string(buf) + at(t, cycle), t, cycle);
-  }
   const Real err = energy_error_fraction(e);
   if (controls.energy_error_warning > 0.0 && err > controls.energy_error_warning && !energy_warning_)
     energy_warning_ = EnergyWarning{t, cycle, err};
