@@ -79,13 +79,21 @@ void TiebreakContact::initialize(const ContactContext& c) {
     const TieSearchOptions opt =
         offset_search(master, p_.master_shells, slave_surface_, p_.slave_shells, nodes.size(), segment_table, node_table);
     tie_candidates(name_, candidates_, master, nodes, opt, links_, untied_nodes_, c.diagnostics);
-    offset_rest_.resize(links_.size());
-    for (std::size_t k = 0; k < links_.size(); ++k)
-      offset_rest_[k] = links_[k].offset - links_[k].gap * segment_normal(master, links_[k].segment, nodes.x);
   } else {
     tie_candidates(name_, candidates_, master, nodes, {}, links_, untied_nodes_, c.diagnostics);
   }
   const std::size_t n = links_.size();
+  // Each offset in the master segment's frame at tie time (tie_stretch), where it is not round-off.
+  carried_.assign(n, 0);
+  offset_local_.assign(n, Vec3::Zero());
+  for (std::size_t k = 0; k < n; ++k) {
+    const TiePoint& t = links_[k];
+    const Eigen::Matrix3d frame = segment_frame(master, t.segment, nodes.x);
+    if (!(t.offset.norm() > kCarriedOffset * segment_max_diagonal(master, t.segment, nodes.x)) || frame.isZero(0.0))
+      continue;
+    carried_[k] = 1;
+    offset_local_[k] = frame.transpose() * t.offset;
+  }
   std::vector<Index> link_of(nodes.size(), -1);
   for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);
 
@@ -218,7 +226,7 @@ void TiebreakContact::apply_forces(const NodalFields& nodes, const StepTimes& ti
       slave += contact_after_failure(k, compression_ * kk, kk, nodes, times, out);
     }
     if (released_[k]) continue;
-    const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
+    const Vec3 d = tie_stretch(k, nodes.x);
     delta_[k] = d;
     if (p_.normal_only) {
       const Vec3 f = normal_tie_force(k, d, nodes, times);

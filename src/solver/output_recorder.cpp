@@ -53,6 +53,19 @@ void OutputRecorder::build_channels(const OutputSources& src) {
   // Erosion's energy only where a part can erode: other histories keep their channels.
   erodes_ = std::any_of(src.blocks.begin(), src.blocks.end(), [](const auto& b) { return b->erosion() != nullptr; });
   if (erodes_) channels_.push_back({"energy/eroded", 1});
+  // Per-part energies where a part can erode (the eroded energies leave the model's internal
+  // energy; the parts' show where): the part energy monitor's, in its part order.
+  energy_parts_ = erodes_ && src.part_energy != nullptr;
+  if (energy_parts_) {
+    // The monitor is reset after the channels are built: its parts are the blocks' in order of
+    // first block, as here.
+    std::vector<Id> parts;
+    for (const auto& b : src.blocks)
+      if (std::find(parts.begin(), parts.end(), b->part_id()) == parts.end()) parts.push_back(b->part_id());
+    for (Id part : parts)
+      for (const char* e : {"internal_energy", "hourglass_energy", "eroded_internal", "eroded_hourglass"})
+        channels_.push_back({"parts/" + std::to_string(part) + "/" + e, 1});
+  }
   plastic_parts_.clear();
   for (std::size_t b = 0; b < src.blocks.size(); ++b) {
     if (!src.blocks[b]->has_plasticity()) continue;
@@ -226,6 +239,15 @@ void OutputRecorder::collect_history(const OutputSources& src) {
   for (Index i : src.history_nodes) put3(src.nodes.displacement(i));
   for (Real v : src.energy.values()) values[k++] = v;
   if (erodes_) values[k++] = src.energy.eroded();
+  if (energy_parts_) {
+    const PartEnergyMonitor& m = *src.part_energy;
+    for (std::size_t p = 0; p < m.part_count(); ++p) {
+      values[k++] = m.internal_energy(p);
+      values[k++] = m.hourglass_energy(p);
+      values[k++] = m.eroded_internal_energy(p);
+      values[k++] = m.eroded_hourglass_energy(p);
+    }
+  }
   for (const PartBlocks& p : plastic_parts_) {
     PlasticityTotals t;
     for (std::size_t b : p.blocks) t += src.blocks[b]->plasticity_totals(src.nodes);

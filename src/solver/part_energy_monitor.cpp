@@ -44,6 +44,16 @@ void PartEnergyMonitor::check(Real t, long cycle, Real scale) {
   for (Slot& s : slots_) {
     stop_if_negative(s, "internal", s.internal,
                      "its material is elastic, so a mode without stiffness (hourglass, mechanism) is growing");
+    if (s.eroded_internal != 0.0 || s.eroded_hourglass != 0.0) {
+      // With erosion, the elements still in the model and the deleted ones apart (each element's
+      // energy is the work done on it: neither sum can go negative).
+      stop_if_negative(s, "internal (elements not eroded)", s.internal - s.eroded_internal,
+                       "the work done on the part's remaining elements is negative: energy is created in "
+                       "them (an unstable contact or hourglass mode, or a material law that is not "
+                       "dissipative on this path)");
+      stop_if_negative(s, "internal (eroded elements)", s.eroded_internal,
+                       "the elements deleted so far held negative energy when they were deleted");
+    }
     // A viscous hourglass force only dissipates and a conservative stiffness only stores: the
     // hourglass energy of a part cannot go negative unless the control creates energy (a stiffness
     // form whose reference the element's plastic distortion has moved, for one).

@@ -97,9 +97,9 @@ struct TiebreakParameters {
   Real ct2cn = 1.0;
   /// OPTION 8 of the automatic card (mixed_mode set): shell segments with thickness offsets
   /// (shell_offset.hpp; each side's rule, on). The tie search ties a slave within its tolerance of
-  /// the two contact surfaces (|gap| <= 0.3 x size + both offsets), and the tie keeps its tie-time
-  /// stand-off along the master segment's current normal, so that a rigid rotation of a pair tied
-  /// at an offset does not stretch it. Off (both rules off): the solid faces' tie, unchanged.
+  /// the two contact surfaces (|gap| <= 0.3 x size + both offsets); the tie keeps its tie-time
+  /// offset in the master segment's frame (TiebreakContact::tie_stretch), as every tie here does.
+  /// Off (both rules off): the solid faces' tie search.
   ShellOffsetRule slave_shells, master_shells;
   bool offset_shells() const { return slave_shells.on || master_shells.on; }
 };
@@ -204,14 +204,18 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   }
   /// Mixed mode: the tie forces from the cohesive law, damage, releases (tiebreak_cohesive.cpp).
   void apply_cohesive(const NodalFields& nodes, ContactForceView out);
-  /// Link k's tie stretch at x: x_slave - x_point - the tie-time offset (with offset_shells, the
-  /// stand-off along the master segment's current normal plus the rest of the tie-time offset).
+  /// Link k's tie stretch at x: x_slave - x_point - the tie-time offset, carried in the master
+  /// segment's frame (segment_frame: it turns with the segment, so a rigid rotation of a pair tied
+  /// at a stand-off h does not stretch the tie by about h theta). An offset of round-off size
+  /// (below kCarriedOffset of the segment's diagonal: the slave on the surface) has no direction
+  /// to carry and is subtracted as it was at tie time.
   Vec3 tie_stretch(std::size_t k, const Vec3Field& x) const {
     const TiePoint& t = links_[k];
-    if (!p_.offset_shells()) return x.get(t.slave) - tie_point_value(t, x) - t.offset;
-    return x.get(t.slave) - tie_point_value(t, x) - offset_rest_[k] -
-           t.gap * segment_normal(master(), t.segment, x);
+    if (!carried_[k]) return x.get(t.slave) - tie_point_value(t, x) - t.offset;
+    return x.get(t.slave) - tie_point_value(t, x) - segment_frame(master(), t.segment, x) * offset_local_[k];
   }
+  /// Offsets longer than this fraction of the master segment's diagonal are carried in its frame.
+  static constexpr Real kCarriedOffset = 1e-9;
   /// offset_shells: the tie search's options with the shell offsets (per master segment and per
   /// node index; the tables are filled here and must outlive the options).
   TieSearchOptions offset_search(const Surface& onto, const ShellOffsetRule& onto_rule, const Surface& from,
@@ -247,7 +251,10 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   Real friction_work_ = 0.0;
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
   Vec3 first_failure_stress_ = Vec3::Zero();  ///< Type 9: (max, mean, max/mean) normal traction
-  std::vector<Vec3> offset_rest_;    ///< offset_shells: per link, tie-time offset less gap x normal
+  /// Per link: whether its tie-time offset is carried in the master segment's frame, and its
+  /// components there (segment_frame at tie time: e1, e2, n).
+  std::vector<std::uint8_t> carried_;
+  std::vector<Vec3> offset_local_;
   std::vector<Real> damage_;         ///< mixed mode: per link, the damage
   std::vector<Vec3> tie_force_;      ///< mixed mode: per link, the force on the slave at the last cycle
   Real cohesive_work_ = 0.0;         ///< mixed mode: work done on the cohesive springs (trapezoidal)

@@ -198,13 +198,13 @@ class FullHexBlock final : public ElementBlock {
 
   bool has_plasticity() const override { return PlasticState<State>; }
 
-  /// ElementBlock::plasticity_totals: each Gauss point's `eps`, and its `work` times its current
-  /// volume detJ (unit weights).
+  /// ElementBlock::plasticity_totals: each Gauss point's `eps`, and its `work` (per unit reference
+  /// volume, j2_return.hpp) times its reference volume detJ0 (unit weights).
   PlasticityTotals plasticity_totals(const NodalFields& nodes) const override {
     PlasticityTotals t;
     if constexpr (PlasticState<State>) {
       for (Index e = 0; e < element_count(); ++e) {
-        const Geometry g = geometry(gather(nodes.x, e), e);
+        const Geometry g = geometry(gather(nodes.x0, e), e);
         for (int p = 0; p < 8; ++p) {
           const State& s = state_[8 * e + p];
           t.max_plastic_strain = std::max(t.max_plastic_strain, plastic_strain_of(s));

@@ -128,18 +128,17 @@ class HexBlock final : public ElementBlock {
 
   bool has_plasticity() const override { return PlasticState<State>; }
 
-  /// ElementBlock::plasticity_totals: each element's `eps` and `work` times its current volume.
-  PlasticityTotals plasticity_totals(const NodalFields& nodes) const override {
+  /// ElementBlock::plasticity_totals: each element's `eps`, and its `work` (per unit reference
+  /// volume, j2_return.hpp) times its reference volume.
+  PlasticityTotals plasticity_totals(const NodalFields& /*nodes*/) const override {
     PlasticityTotals t;
     if constexpr (PlasticState<State>) {
       const Index ne = element_count();
       for (Index e0 = 0; e0 < ne; e0 += kLanes) {
-        Batch bt;
-        gather_batch(nodes, e0, bt);
         const State& s = state_[e0 / kLanes];
         for (int l = 0; l < static_cast<int>(std::min<Index>(kLanes, ne - e0)); ++l) {
           t.max_plastic_strain = std::max(t.max_plastic_strain, plastic_strain_of(s, l));
-          t.plastic_work += plastic_work_density_of(s, l) * bt.vol[l];
+          t.plastic_work += plastic_work_density_of(s, l) * volume0_[static_cast<std::size_t>(e0 + l)];
         }
       }
     }

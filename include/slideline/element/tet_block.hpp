@@ -172,14 +172,15 @@ class TetBlock final : public ElementBlock {
 
   bool has_plasticity() const override { return PlasticState<State>; }
 
-  /// ElementBlock::plasticity_totals: each element's `eps`, and its `work` times its current volume.
+  /// ElementBlock::plasticity_totals: each element's `eps`, and its `work` (per unit reference
+  /// volume, j2_return.hpp) times its reference volume.
   PlasticityTotals plasticity_totals(const NodalFields& nodes) const override {
     PlasticityTotals t;
     if constexpr (PlasticState<State>) {
       for (Index e = 0; e < element_count(); ++e) {
         const State& s = state_[e];
         t.max_plastic_strain = std::max(t.max_plastic_strain, plastic_strain_of(s));
-        t.plastic_work += plastic_work_density_of(s) * tet4::edges(gather(nodes.x, e)).determinant() / 6.0;
+        t.plastic_work += plastic_work_density_of(s) * tet4::edges(gather(nodes.x0, e)).determinant() / 6.0;
       }
     }
     return t;

@@ -24,11 +24,17 @@ struct J2State {
   Tensor3<T> sigma = lane_math::zero_tensor<T>();  ///< unrotated Cauchy stress R^T sigma R (force/length^2)
   Tensor3<T> back = lane_math::zero_tensor<T>();   ///< unrotated back stress (deviatoric)
   T eps = lane_math::zero<T>();                    ///< effective plastic strain
-  T work = lane_math::zero<T>();                   ///< plastic work density sigma : d eps_p (force/length^2)
+  /// Plastic work per unit reference volume (force/length^2): the sum over the steps of
+  /// J sigma : d eps_p, J = det F the step's volume ratio, so that `work` x V0 is the plastic work
+  /// of the element, each increment taken at the volume it was done in (as the stress power is
+  /// integrated). A density per current volume times the volume at output time is off by the
+  /// elastic volume change since (docs/output.md, parts/<id>/plastic_work).
+  T work = lane_math::zero<T>();
 };
 
 /// Internal energy per unit volume of a J2 state (force/length^2): the elastic energy its stress
-/// holds, s':s' / (4 G) + p^2 / (2 K) (small elastic strains), plus the plastic work.
+/// holds, s':s' / (4 G) + p^2 / (2 K) (small elastic strains), plus the plastic work (per unit
+/// reference volume; the two volumes differ by the small elastic volume change).
 template <class T>
 T j2_energy_density(const J2State<T>& s, Real mu, Real bulk) {
   const T p = (s.sigma[0][0] + s.sigma[1][1] + s.sigma[2][2]) / 3.0;
@@ -47,6 +53,7 @@ template <class T>
 struct J2Trial {
   Tensor3<T> R, xi;
   T vm, rate;
+  T jac;  ///< det F: the volume ratio the plastic work increment is weighted by
 };
 
 /// Adds the elastic trial increment to `s.sigma` (moduli mu, lambda force/length^2, D 1/time, dt
@@ -56,6 +63,7 @@ J2Trial<T> j2_predict(J2State<T>& s, const Tensor3<T>& F, const Tensor3<T>& D, R
                       Real lambda) {
   J2Trial<T> t;
   t.R = polar_rotation(F);
+  t.jac = determinant(F);
   const Tensor3<T> d = rotate_to_unrotated(t.R, D);
   const T tr_d = d[0][0] + d[1][1] + d[2][2];
   for (int i = 0; i < 3; ++i)
@@ -93,7 +101,7 @@ Tensor3<T> j2_correct(J2State<T>& s, const J2Trial<T>& t, const T& d_eps, Real m
       power += s.sigma[i][j] * t.xi[i][j];
     }
   s.eps += d_eps;
-  s.work += 1.5 * k * power;
+  s.work += 1.5 * k * power * t.jac;
   return rotate_to_current(t.R, s.sigma);
 }
 

@@ -36,6 +36,24 @@ inline Vec3 segment_normal(const Surface& surf, Index s, const Vec3Field& x) {
   return n > 0.0 ? Vec3(a / n) : Vec3::Zero();
 }
 
+/// An orthonormal frame of segment s that turns with it: columns e1 (the diagonal x2 - x0's part
+/// in the segment's plane, normalised), e2 = n x e1 and n (segment_normal). A rigid rotation Q of
+/// the segment's nodes turns the frame into Q times it, exactly up to round-off. Zero for a
+/// degenerate segment.
+inline Eigen::Matrix3d segment_frame(const Surface& surf, Index s, const Vec3Field& x) {
+  const Index* c = surf.conn.data() + 4 * static_cast<std::size_t>(s);
+  const Vec3 n = segment_normal(surf, s, x);
+  const Vec3 d = x.get(c[2]) - x.get(c[0]);
+  const Vec3 t = d - d.dot(n) * n;
+  const Real len = t.norm();
+  Eigen::Matrix3d f = Eigen::Matrix3d::Zero();
+  if (!(len > 0.0) || n.isZero(0.0)) return f;
+  f.col(0) = t / len;
+  f.col(1) = n.cross(f.col(0));
+  f.col(2) = n;
+  return f;
+}
+
 /// Area of segment s (length^2).
 inline Real segment_area(const Surface& surf, Index s, const Vec3Field& x) {
   return segment_area_vector(surf, s, x).norm();

@@ -144,6 +144,9 @@ class EnergyLedger {
   void add_mass_scaling_work(Real w) { report_.mass_scaling += w; }
   /// Work done on constrained nodes outside the velocity update (a rigid body's velocity reset).
   void add_constraint_work(Real w) { constraint_.committed += w; }
+  /// External work the velocity update did not book (a rigid wall's impulse at t = 0:
+  /// NodalConstraint::first_cycle_work); reported from the next record on.
+  void add_external_work(Real w) { external_.committed += w; }
   /// Work done by contact outside the velocity update (a tie resetting its slaves).
   void add_contact_work(Real w) { contact_.committed += w; }
   /// The friction dissipation reported by the interfaces (a running total).

@@ -15,6 +15,7 @@
 #include "slideline/solver/energy_ledger.hpp"
 #include "slideline/solver/mass_scaling.hpp"
 #include "slideline/solver/nodal_constraint.hpp"
+#include "slideline/solver/part_energy_monitor.hpp"
 
 namespace slideline {
 
@@ -32,6 +33,9 @@ struct OutputSources {
   /// Mass scaling every cycle (MS1ST = 0): each block's added mass now (one entry per block);
   /// empty otherwise (then the history has no added-mass channels).
   std::span<const PartAddedMass> added_mass = {};
+  /// The per-part energies (part_energy_monitor.hpp): channels parts/<id>/internal_energy,
+  /// hourglass_energy, eroded_internal and eroded_hourglass where a part can erode (null: none).
+  const PartEnergyMonitor* part_energy = nullptr;
 };
 
 /// Where an element goes in the output cells: its topology's entry in MeshDescription::cells and
@@ -94,6 +98,7 @@ class OutputRecorder {
   Real last_history_ = -1.0;
   Real last_state_ = -1.0;
   bool erodes_ = false;  ///< a block can erode: the history has energy/eroded
+  bool energy_parts_ = false;  ///< and the per-part energies (OutputSources::part_energy)
   const std::vector<OutputSink*>* sinks_ = nullptr;
 };
 
