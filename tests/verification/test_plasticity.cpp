@@ -309,9 +309,10 @@ TEST(J2PlasticityBar, PlasticStrainAndWorkChannelsFollowTheClosedForm) {
   std::vector<CellOutput> cells(1);
   bar.sim().blocks()[0]->cell_outputs(bar.sim().nodes(), cells);
   EXPECT_NEAR(von_mises(cells[0].stress), c.sy + ep * eps_p, 1e-12 * c.sy);
-  // Plastic work: the closed-form density times the current volume. The channel is 3.2e-5 above it
-  // (measured): it weighs each increment's density by the volume at the record, and the elastic
-  // volume strain (1 - 2 nu) sigma / E grew by 1.6e-4 over the plastic range; the law's sum of
+  // Plastic work: the closed-form density times the current volume. The channel weighs each
+  // increment by the volume it was done at (j2_return.hpp; it weighed them all by the volume at the
+  // record before, 3.2e-5 above this), which is below the current one by at most the growth of the
+  // elastic volume strain (1 - 2 nu) sigma / E over the plastic range, 1.6e-4; the law's sum of
   // sigma : d eps_p with the stress at the end of each step adds Ep eps_p d eps_p / 2 (~1e-6).
   const auto& x = bar.sim().nodes().x;
   const Real volume = bar.area() * (x.x[bar.g.node(1, 0, 0)] - x.x[bar.g.node(0, 0, 0)]);
