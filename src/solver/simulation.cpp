@@ -119,6 +119,9 @@ std::vector<std::vector<Real>> Simulation::lump_masses() {
     fbase += static_cast<Index>(conn.size());
     if (b->has_moments()) mbase += static_cast<Index>(conn.size());
   }
+  Index largest = 0;
+  for (const auto& b : blocks_) largest = std::max<Index>(largest, static_cast<Index>(b->connectivity().size()));
+  corner_power_chunks_.assign(static_cast<std::size_t>(chunk_count(largest)), 0.0);
   corners_.force.resize(fbase);
   corners_.moment.resize(mbase);
   corners_.force_slots.build(n, force_pairs);

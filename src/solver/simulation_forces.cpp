@@ -55,7 +55,13 @@ Real Simulation::compute_internal_forces(const ElementBlock*& controlling) {
       const auto& b = blocks_[k];
       block_energy_[k] = BlockEnergy{};
       if (ElementErosion* er = b->erosion()) er->set_time(t_);
+      // The power of the block's last forces at this step's rates, before it overwrites them: the
+      // block's work over the step is the trapezoid of the two powers, as the ledger's nodal
+      // work is (the parts' internal energies then sum to the ledger's).
+      const Real previous = corners_.power(b->connectivity(), b->force_slot_base(), b->moment_slot_base(),
+                                           b->has_moments(), nodes_, corner_power_chunks_);
       const Real d = b->compute_forces(nodes_, dt_, corners_, block_energy_[k]);
+      block_energy_[k].element_power = 0.5 * (previous + block_energy_[k].element_power);
       block_step_[k] = d;
       if (b->bounds_time_step()) {
         if (d < dtc) controlling = b.get();

@@ -60,12 +60,15 @@ inline Lanes max_face_area(const NodeLanes& x, const NodeLanes& y, const NodeLan
 
 /// Hourglass resistance h_I = sum_a gamma_a,I (gamma_a . w) of a batch of elements (one per lane),
 /// with gamma_a = Gamma_a - (Gamma_a . x) B the hourglass shape vectors of hourglass_shape and w a
-/// nodal field (velocities or displacements). Multiply by -k for the hourglass force.
+/// nodal field (velocities or displacements). Multiply by -k for the hourglass force. `modes`, when
+/// given, receives the generalised values gamma_a . w of the four modes (x, y, z components).
 inline void hourglass_resistance(const NodeLanes& x, const NodeLanes& y, const NodeLanes& z,
                                  const NodeLanes& bx, const NodeLanes& by, const NodeLanes& bz,
                                  const NodeLanes& wx, const NodeLanes& wy, const NodeLanes& wz,
-                                 NodeLanes& hx, NodeLanes& hy, NodeLanes& hz) {
+                                 NodeLanes& hx, NodeLanes& hy, NodeLanes& hz,
+                                 std::array<std::array<Lanes, 3>, 4>* modes = nullptr) {
   for (int k = 0; k < 8; ++k) hx[k] = hy[k] = hz[k] = Lanes::Zero();
+  int a = 0;
   for (const auto& g : hourglass_signs) {
     // Gamma_a . x: the signs are +-1, so these are sums and differences of coordinates.
     Lanes gx = Lanes::Zero(), gy = Lanes::Zero(), gz = Lanes::Zero();
@@ -93,6 +96,8 @@ inline void hourglass_resistance(const NodeLanes& x, const NodeLanes& y, const N
       hy[k] += gam[k] * dy;
       hz[k] += gam[k] * dz;
     }
+    if (modes) (*modes)[a] = {dx, dy, dz};
+    ++a;
   }
 }
 

@@ -57,8 +57,12 @@ class HexBlock final : public ElementBlock {
     chunk_damp_.assign(chunk_count(ne), 0.0);
     chunk_power_.assign(chunk_count(ne), 0.0);
     chunk_bad_.assign(chunk_count(ne), -1);
-    if (hg_.kind == HexHourglass::Kind::fb_stiffness || hg_.kind == HexHourglass::Kind::assumed_strain)
-      hg_force_.assign(12 * static_cast<std::size_t>(padded(ne) / kLanes), Lanes::Zero());
+    // The generalised hourglass forces of the last evaluation (every form), its bulk-viscosity
+    // pressure times volume and (damped) its damping stress times volume: the trapezoidal works.
+    const std::size_t nb = static_cast<std::size_t>(padded(ne) / kLanes);
+    hg_force_.assign(12 * nb, Lanes::Zero());
+    visc_prev_.assign(nb, Lanes::Zero());
+    if (damping_.beta > 0.0) damp_prev_.assign(6 * nb, Lanes::Zero());
     volume0_.assign(padded(ne), 0.0);
     state_.assign(static_cast<std::size_t>(padded(ne) / kLanes), State{});
     // Lane-major connectivity: batch j, node k, lane l at 64 j + 8 k + l, the spare lanes of a
@@ -285,6 +289,8 @@ class HexBlock final : public ElementBlock {
     Tensor3<Lanes> sigma;
     Tensor3<Lanes> law;  ///< the law's stress alone: set only when an erosion criterion reads it
     Lanes visc, damp, qdt, len, c;  ///< c: the elements' sound speeds, set when kStateSpeed
+    /// The powers of the last evaluation's bulk-viscosity and damping stresses at this step's rates.
+    Lanes visc_prev, damp_prev;
   };
 
   /// Nodal forces of a batch (residual form), hourglass power, sum of the force components (to
@@ -292,6 +298,7 @@ class HexBlock final : public ElementBlock {
   struct BatchForces {
     hex8::NodeLanes fx, fy, fz;
     Lanes hg, fsum, all;
+    Lanes hg_prev;  ///< the power of the last evaluation's hourglass forces at this step's rates
   };
 
   /// A chunk's running minimum step (and its element), powers and first failed element.
@@ -351,6 +358,7 @@ class HexBlock final : public ElementBlock {
       if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
       f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
+      f.hg_prev[l] = st.visc_prev[l] = st.damp_prev[l] = 0.0;
       st.len[l] = std::numeric_limits<Real>::infinity();
     }
   }
@@ -401,16 +409,21 @@ class HexBlock final : public ElementBlock {
     }
     for (int i = 0; i < 3; ++i) st.sigma[i][i] -= q;
     st.visc = -q * trd * bt.vol;
-    st.damp = Lanes::Zero();
-    if constexpr (damped) add_damping(st, d, trd, bt.vol, kc);
+    Lanes& qv_prev = visc_prev_[static_cast<std::size_t>(e0 / kLanes)];
+    st.visc_prev = -qv_prev * trd;
+    qv_prev = q * bt.vol;
+    st.damp = st.damp_prev = Lanes::Zero();
+    if constexpr (damped) add_damping(st, d, trd, bt.vol, kc, damp_prev_.data() + 6 * static_cast<std::size_t>(e0 / kLanes));
     return st;
   }
 
   /// Rayleigh stiffness damping: sigma_d = beta (lambda tr(D) I + 2 mu D), its power, and the
   /// step of a damped element: (2 / w)(sqrt(1 + xi^2) - xi) with w = 2 c / len and xi = beta w / 2
   /// adds beta c^2 / len to the bulk-viscosity term.
+  /// `prev`: the element's damping stress times volume of the last evaluation (xx, yy, zz, xy, yz,
+  /// xz), whose power at this step's rates is st.damp_prev; replaced by this evaluation's.
   static void add_damping(BatchStress& st, const Tensor3<Lanes>& d, const Lanes& trd, const Lanes& vol,
-                          const KernelConstants& kc) {
+                          const KernelConstants& kc, Lanes* prev) {
     const Lanes &dxx = d[0][0], &dyy = d[1][1], &dzz = d[2][2];
     const Lanes &dxy = d[0][1], &dyz = d[1][2], &dxz = d[0][2];
     const Lanes lt = kc.beta_lambda * trd;
@@ -427,6 +440,13 @@ class HexBlock final : public ElementBlock {
     sigma[0][2] += sxz;
     sigma[2][0] += sxz;
     st.damp = vol * (sxx * dxx + syy * dyy + szz * dzz + 2.0 * (sxy * dxy + syz * dyz + sxz * dxz));
+    st.damp_prev = prev[0] * dxx + prev[1] * dyy + prev[2] * dzz + 2.0 * (prev[3] * dxy + prev[4] * dyz + prev[5] * dxz);
+    prev[0] = vol * sxx;
+    prev[1] = vol * syy;
+    prev[2] = vol * szz;
+    prev[3] = vol * sxy;
+    prev[4] = vol * syz;
+    prev[5] = vol * sxz;
     st.qdt += kc.beta_c2 / st.len;
   }
 
@@ -445,17 +465,19 @@ class HexBlock final : public ElementBlock {
     }
     hex8::NodeLanes hx, hy, hz;
     Lanes k_hg;
+    Lanes* const q_prev = hg_force_.data() + 12 * static_cast<std::size_t>(e0 / kLanes);
     if constexpr (viscous) {
-      hex8::hourglass_resistance(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, bt.vx, bt.vy, bt.vz, hx, hy, hz);
+      hex8::ModeVectors rates;  // gamma_a . v
+      hex8::hourglass_resistance(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, bt.vx, bt.vy, bt.vz, hx, hy, hz, &rates);
       const Lanes v23 = (bt.vol * bt.vol).unaryExpr([](Real v) { return std::cbrt(v); });
       const Lanes vol0 = Lanes::Map(volume0_.data() + e0);
       k_hg = hg_.coefficient * kc.rho0 * vol0 * bt.inv_vol * kc.c * v23 / 4.0;
+      f.hg_prev = exchange_generalised_forces(q_prev, k_hg, rates, rates);
     } else if (hg_.kind != HexHourglass::Kind::physical_stiffness) {
       hex8::stiffness_hourglass_forces(hg_.kind == HexHourglass::Kind::assumed_strain, bt.x, bt.y, bt.z, bt.bx,
                                        bt.by, bt.bz, bt.vx, bt.vy, bt.vz, bt.vol, dt,
                                        hg_.coefficient * kc.rho0 * kc.c * kc.c / 72.0, kc.e_mod, kc.mu,
-                                       hg_.coefficient, hg_force_.data() + 12 * static_cast<std::size_t>(e0 / kLanes),
-                                       hx, hy, hz);
+                                       hg_.coefficient, q_prev, hx, hy, hz, f.hg_prev);
       k_hg = Lanes::Constant(-1.0);  // hx, hy, hz are already the forces
     } else {
       hex8::NodeLanes ux, uy, uz;
@@ -464,10 +486,14 @@ class HexBlock final : public ElementBlock {
         uy[k] = bt.y[k] - bt.y0[k];
         uz[k] = bt.z[k] - bt.z0[k];
       }
-      hex8::hourglass_resistance(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, ux, uy, uz, hx, hy, hz);
+      hex8::ModeVectors disp;  // gamma_a . u
+      hex8::hourglass_resistance(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, ux, uy, uz, hx, hy, hz, &disp);
       Lanes b2 = Lanes::Zero();
       for (int k = 0; k < 8; ++k) b2 += bt.bx[k] * bt.bx[k] + bt.by[k] * bt.by[k] + bt.bz[k] * bt.bz[k];
       k_hg = hg_.coefficient * kc.e_mod * bt.vol * b2 / 72.0;
+      hex8::ModeShapes gam;
+      hex8::hourglass_shapes(bt.x, bt.y, bt.z, bt.bx, bt.by, bt.bz, gam);
+      f.hg_prev = exchange_generalised_forces(q_prev, k_hg, disp, hex8::hourglass_project(gam, bt.vx, bt.vy, bt.vz));
     }
     f.hg = Lanes::Zero();
     f.fsum = Lanes::Zero();
@@ -486,6 +512,20 @@ class HexBlock final : public ElementBlock {
     return f;
   }
 
+  /// The power of the stored generalised hourglass forces `q` (12, mode-major) at the rates
+  /// `rates`, sum_a Q_a . qdot_a; then stores this evaluation's, Q_a = k w_a (the forces are
+  /// -k sum_a gamma_a w_a: w the rates, viscous, or the displacements, IHQ 10).
+  static Lanes exchange_generalised_forces(Lanes* q, const Lanes& k, const hex8::ModeVectors& w,
+                                           const hex8::ModeVectors& rates) {
+    Lanes p = Lanes::Zero();
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) {
+        p += q[3 * a + i] * rates[a][i];
+        q[3 * a + i] = k * w[a][i];
+      }
+    return p;
+  }
+
   /// Adds a batch's step (times `step_factor`, per element, when the masses are scaled; before it
   /// into `raw_steps`, when not null, for mass scaling every cycle), powers and
   /// failure to the chunk's sums; the spare lanes of a last partial batch (lanes valid..kLanes-1)
@@ -502,6 +542,7 @@ class HexBlock final : public ElementBlock {
     if (valid < kLanes) {
       for (int l = valid; l < kLanes; ++l) {
         f.hg[l] = st.visc[l] = st.damp[l] = f.all[l] = 0.0;
+        f.hg_prev[l] = st.visc_prev[l] = st.damp_prev[l] = 0.0;
         dt[l] = std::numeric_limits<Real>::max();
       }
     }
@@ -511,10 +552,13 @@ class HexBlock final : public ElementBlock {
           s.bad = e0 + l;
           break;
         }
-    s.p_hg += f.hg;
-    s.p_visc += st.visc;
+    // The hourglass, bulk-viscosity and damping works are trapezoidal over the step that ends
+    // here, as the ledger's nodal works are (docs/solver.md, "Energy"): the mean of the power of
+    // the last evaluation's forces and of this one's, both at this step's rates.
+    s.p_hg += 0.5 * (f.hg_prev + f.hg);
+    s.p_visc += 0.5 * (st.visc_prev + st.visc);
     s.p_all += f.all;
-    if constexpr (damped) s.p_damp += st.damp;
+    if constexpr (damped) s.p_damp += 0.5 * (st.damp_prev + st.damp);
     s.dtarg = (dt < s.dtmin).select(kLaneOffsets + static_cast<Real>(e0), s.dtarg);
     s.dtmin = s.dtmin.min(dt);
   }
@@ -554,7 +598,11 @@ class HexBlock final : public ElementBlock {
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor, padded; empty: no scaling
   ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<State> state_;       ///< the law's state, one per batch
-  std::vector<Lanes> hg_force_;    ///< IHQ 4-6: generalised hourglass forces, 12 per batch, corotational frame
+  /// Generalised hourglass forces, 12 per batch: IHQ 4-6 the forces themselves (corotational
+  /// frame), the other forms the last evaluation's (global frame), for the trapezoidal work.
+  std::vector<Lanes> hg_force_;
+  std::vector<Lanes> visc_prev_;   ///< per batch, the last evaluation's bulk-viscosity q V
+  std::vector<Lanes> damp_prev_;   ///< damped: 6 per batch, the last evaluation's damping stress x V
   std::vector<Real> chunk_dt_, chunk_hg_, chunk_visc_, chunk_damp_, chunk_power_;
   std::vector<Index> chunk_dt_element_;  ///< per chunk, the element with the smallest step
   std::vector<Index> chunk_bad_;

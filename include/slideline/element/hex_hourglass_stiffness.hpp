@@ -157,15 +157,21 @@ inline ModeVectors assumed_strain_stiffness(const Frame& e, const NodeLanes& bx,
 /// that turns with the element makes the forces objective; integrating the rates makes the
 /// hourglass energy the work of the forces actually applied (no total-displacement form, whose
 /// stiffness changes with the shape and stops being conservative under large deformation).
+/// `prev_power` receives Q_old . qdot_l, the power of the forces of the last evaluation at these
+/// rates (the first half of the step's trapezoidal hourglass work, docs/solver.md "Energy").
 inline void stiffness_hourglass_forces(bool assumed_strain, const NodeLanes& x, const NodeLanes& y,
                                        const NodeLanes& z, const NodeLanes& bx, const NodeLanes& by,
                                        const NodeLanes& bz, const NodeLanes& vx, const NodeLanes& vy,
                                        const NodeLanes& vz, const Lanes& vol, Real dt, Real fb_k, Real e_mod,
-                                       Real mu, Real qm, Lanes* q, NodeLanes& hx, NodeLanes& hy, NodeLanes& hz) {
+                                       Real mu, Real qm, Lanes* q, NodeLanes& hx, NodeLanes& hy, NodeLanes& hz,
+                                       Lanes& prev_power) {
   ModeShapes gam;
   hourglass_shapes(x, y, z, bx, by, bz, gam);
   const Frame e = corotational_frame(x, y, z);
   ModeVectors dq = to_local(e, hourglass_project(gam, vx, vy, vz));
+  prev_power = Lanes::Zero();
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i) prev_power += q[3 * a + i] * dq[a][i];
   for (auto& mode : dq)
     for (auto& c : mode) c *= dt;
   ModeVectors dQ;

@@ -22,6 +22,7 @@
 #include "slideline/element/mass_scaling_once.hpp"
 #include "slideline/element/shell_bt.hpp"
 #include "slideline/element/shell_c0tri.hpp"
+#include "slideline/element/shell_bulk_viscosity.hpp"
 #include "slideline/element/shell_hourglass.hpp"
 #include "slideline/element/shell_thickness.hpp"
 #include "slideline/material/elastic_shell.hpp"
@@ -74,7 +75,8 @@ class BasicShellBlock final : public ElementBlock {
     chunk_power_.assign(nc, 0.0);
     chunk_bad_.assign(nc, -1);
     area0_.assign(ne, 0.0);
-    hg_q_.assign(sec_.hourglass_stiffness ? 5 * static_cast<std::size_t>(nq_) : 0, 0.0);
+    hg_q_.assign(5 * static_cast<std::size_t>(nq_), 0.0);
+    visc_prev_.assign(static_cast<std::size_t>(ne), 0.0);
     state_.assign(static_cast<std::size_t>(ne) * rule_.n, State{});
   }
 
@@ -239,7 +241,7 @@ class BasicShellBlock final : public ElementBlock {
                                          : quad_forces<damped>(nodes, dt, e, chunk, corners);
         if (r.bad && bad < 0) bad = e;
         if (r.bad || r.deleted) continue;
-        p_hg += r.p_hg;
+        p_hg += 0.5 * (r.p_hg_prev + r.p_hg);  // trapezoidal, as the ledger's nodal work
         p_visc += r.p_visc;
         p_damp += r.p_damp;
         p_all += r.p_all;
@@ -262,6 +264,7 @@ class BasicShellBlock final : public ElementBlock {
   /// degenerated or its forces are not finite, `deleted`: erosion deleted it at this evaluation.
   struct ElementResult {
     Real dt = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0, p_hg = 0.0;
+    Real p_hg_prev = 0.0;  ///< the power of the last evaluation's hourglass forces at this step's rates
     bool bad = false, deleted = false;
   };
 
@@ -294,7 +297,7 @@ class BasicShellBlock final : public ElementBlock {
     if (!thick_.empty()) thick_[e] = t * std::exp(ps.mean);  // ISTUPD: the next step's thickness
     // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
     const Real len = shell_bt::characteristic_length(X, g.area);
-    Real qdt = bulk_viscosity(sr, len, g.area, t, r, out.p_visc);
+    Real qdt = bulk_viscosity(e, sr, len, g.area, t, r, out.p_visc);
     if constexpr (damped) {
       out.p_damp = damp * g.area;
       qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
@@ -306,8 +309,11 @@ class BasicShellBlock final : public ElementBlock {
     if (qhg_ > 0.0) {
       const Real m_node = mat_.density() * area0_[e] * sec_.thickness / 4.0;  // the mass stays
       const Real j_node = m_node * std::max(sec_.thickness * sec_.thickness, area0_[e]) / 12.0;
+      Real* q = &hg_q_[5 * static_cast<std::size_t>(e)];
+      Real prev = 0.0;
       out.p_hg = shell_hourglass::add(qhg_, mat_.youngs_modulus(), sec_.shear_factor * mat_.stiffness().g, t, m_node,
-                                      j_node, gm, Xm, V, W, f, m, hg_q_.empty() ? nullptr : &hg_q_[5 * e], dt, &g);
+                                      j_node, gm, Xm, V, W, f, m, sec_.hourglass_stiffness ? q : nullptr, dt, &g, q, prev);
+      out.p_hg_prev = prev;
     }
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
@@ -327,20 +333,11 @@ class BasicShellBlock final : public ElementBlock {
     return out;
   }
 
-  /// Bulk viscosity on the membrane dilatation rate of `sr` (a pressure over the thickness) of an
-  /// element of characteristic length `len`, area `area` and thickness `t`: subtracted from the
-  /// resultants `r`, its power added to `p_visc`; returns its term of the step's
-  /// (len / (q + sqrt(q^2 + c^2))) q.
-  Real bulk_viscosity(const shell_bt::StrainRates& sr, Real len, Real area, Real t, shell_bt::Resultants& r,
-                      Real& p_visc) const {
-    const Real trd = sr.membrane[0] + sr.membrane[1];
-    if (!(trd < 0.0)) return 0.0;
-    const Real c = mat_.wave_speed();
-    const Real q = mat_.density() * len * (bulk_.quadratic * len * trd * trd - bulk_.linear * c * trd);
-    r.n[0] -= q * t;
-    r.n[1] -= q * t;
-    p_visc += -q * trd * area * t;
-    return bulk_.linear * c + bulk_.quadratic * len * (-trd);
+  /// Bulk viscosity of element e (shell_bulk_viscosity.hpp), its last evaluation's q t A kept.
+  Real bulk_viscosity(Index e, const shell_bt::StrainRates& sr, Real len, Real area, Real t, shell_bt::Resultants& r,
+                      Real& p_visc) {
+    return shell_bulk_viscosity::add(mat_.density(), mat_.wave_speed(), bulk_, sr.membrane[0] + sr.membrane[1], len,
+                                     area, t, r, p_visc, visc_prev_[static_cast<std::size_t>(e)]);
   }
 
 
@@ -379,7 +376,7 @@ class BasicShellBlock final : public ElementBlock {
     const PlaneStressStiffness cs = mat_.stiffness();
     const Real len = shell_c0tri::characteristic_length(g, cs.c11, cs.g);
     const Real len_dt = triangle_step_length(g, e, kappa, len, t);
-    Real qdt = bulk_viscosity(sr.s, len, g.area, t, r, out.p_visc);
+    Real qdt = bulk_viscosity(e, sr.s, len, g.area, t, r, out.p_visc);
     if constexpr (damped) {
       const Real dc = damping_.beta * kc * sr.shear_c;
       qc += dc;
@@ -579,7 +576,10 @@ class BasicShellBlock final : public ElementBlock {
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
   ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<Real> area0_;
-  std::vector<Real> hg_q_;  ///< IHQ 4-6: 5 stored hourglass forces per quadrilateral (local frame)
+  /// 5 generalised hourglass forces per quadrilateral (local frame): IHQ 4-6 the forces, the viscous
+  /// form the last evaluation's (for the trapezoidal work).
+  std::vector<Real> hg_q_;
+  std::vector<Real> visc_prev_;  ///< per element, the last evaluation's bulk-viscosity q t A
   Index nq_ = 0;              ///< quadrilaterals; the triangles follow them
   std::vector<Real> tri_c_;   ///< per triangle, the time integral of the shear's rotational part c
   std::vector<State> state_;  ///< the law's state, element-major, then point

@@ -19,10 +19,13 @@ namespace slideline::shell_hourglass {
 /// bending z, rotation x, y): the stiffness form (IHQ 4-6, which LS-DYNA makes one form on
 /// quadrilateral shells), Q += qhg k dt qdot with the mode stiffnesses k below, the forces -Q gamma
 /// on the geometry `g` at x^n. The local frame turns with the element: the forces are objective.
+/// `prev` (5, the viscous form's: its generalised forces of the last evaluation, replaced by this
+/// one's; the stiffness form reads `q` before it grows) gives `prev_power`, the power of the last
+/// evaluation's forces at these rates: the first half of the trapezoidal hourglass work.
 inline Real add(Real qhg, Real youngs, Real gs, Real t, Real m_node, Real j_node, const shell_bt::LocalGeometry& gm,
                 const shell_bt::NodeMat& Xm, const shell_bt::NodeMat& V, const shell_bt::NodeMat& W,
-                shell_bt::NodeMat& f, shell_bt::NodeMat& m, Real* q = nullptr, Real dt = 0.0,
-                const shell_bt::LocalGeometry* g = nullptr) {
+                shell_bt::NodeMat& f, shell_bt::NodeMat& m, Real* q, Real dt, const shell_bt::LocalGeometry* g,
+                Real* prev, Real& prev_power) {
   // Relative to the element's mean rigid rotation: on a warped element the rotation about an
   // in-plane axis moves the nodes in plane in proportion to their warp, which is an hourglass
   // pattern; it must not be resisted.
@@ -41,6 +44,7 @@ inline Real add(Real qhg, Real youngs, Real gs, Real t, Real m_node, Real j_node
   const Eigen::Matrix<Real, 1, 3> qv = gam.transpose() * vl;  // x, y, z mode rates
   const Eigen::Matrix<Real, 1, 3> qw = gam.transpose() * wl;
   if (q) {
+    prev_power = q[0] * qv[0] + q[1] * qv[1] + q[2] * qv[2] + q[3] * qw[0] + q[4] * qw[1];
     const Real s = qhg * dt;
     q[0] += s * k_m * qv[0];
     q[1] += s * k_m * qv[1];
@@ -63,6 +67,12 @@ inline Real add(Real qhg, Real youngs, Real gs, Real t, Real m_node, Real j_node
   const Real cr = 2.0 * qhg * std::sqrt(k_r * j_node * inv_gg);
   const Eigen::Matrix<Real, 1, 3> hv(-cm * qv[0], -cm * qv[1], -cw * qv[2]);
   const Eigen::Matrix<Real, 1, 3> hw(-cr * qw[0], -cr * qw[1], 0.0);
+  prev_power = prev[0] * qv[0] + prev[1] * qv[1] + prev[2] * qv[2] + prev[3] * qw[0] + prev[4] * qw[1];
+  prev[0] = cm * qv[0];
+  prev[1] = cm * qv[1];
+  prev[2] = cw * qv[2];
+  prev[3] = cr * qw[0];
+  prev[4] = cr * qw[1];
   f += gam * (hv * gm.e.transpose());
   m += gam * (hw * gm.e.transpose());
   return cm * (qv[0] * qv[0] + qv[1] * qv[1]) + cw * qv[2] * qv[2] + cr * (qw[0] * qw[0] + qw[1] * qw[1]);

@@ -4,6 +4,7 @@
 /// Every element writes the forces it applies to its nodes into its own corner slots; a node then
 /// sums its slots in a fixed order (a CSR list built once). The sum therefore does not depend on
 /// the thread count, and no two threads ever write the same memory.
+#include <span>
 #include <vector>
 
 #include "slideline/core/parallel.hpp"
@@ -34,6 +35,32 @@ struct CornerBuffer {
   Vec3Field moment;
   NodeSlots force_slots;
   NodeSlots moment_slots;
+
+  /// -sum (f . v + m . omega) over a block's corners: the forces (and moments) now in its slots
+  /// [fbase, fbase + conn.size()) (moments from mbase when `moments`) at the velocities of `nodes`,
+  /// slot fbase + k acting on node conn[k]. Called before the block writes its new forces, it is
+  /// the power of the last evaluation's forces at this step's rates: with the new forces' power, the
+  /// trapezoidal work of the block's forces (Simulation::compute_internal_forces). `partial` holds
+  /// at least chunk_count(conn.size()) entries; summed in chunk order (thread-count independent).
+  Real power(std::span<const Index> conn, Index fbase, Index mbase, bool moments, const NodalFields& nodes,
+             std::vector<Real>& partial) const {
+    const Index n = static_cast<Index>(conn.size());
+    parallel_for_chunks(n, [&](Index b, Index end, Index chunk) {
+      Real p = 0.0;
+      for (Index k = b; k < end; ++k) {
+        const Index i = conn[static_cast<std::size_t>(k)], s = fbase + k;
+        p -= force.x[s] * nodes.v.x[i] + force.y[s] * nodes.v.y[i] + force.z[s] * nodes.v.z[i];
+        if (moments) {
+          const Index r = mbase + k;
+          p -= moment.x[r] * nodes.omega.x[i] + moment.y[r] * nodes.omega.y[i] + moment.z[r] * nodes.omega.z[i];
+        }
+      }
+      partial[static_cast<std::size_t>(chunk)] = p;
+    });
+    Real sum = 0.0;
+    for (Index c = 0; c < chunk_count(n); ++c) sum += partial[static_cast<std::size_t>(c)];
+    return sum;
+  }
 
   /// Sums the corner forces into `f` and the corner moments into `m` (both overwritten).
   void gather(Vec3Field& f, Vec3Field& m) const {

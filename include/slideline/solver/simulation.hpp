@@ -197,6 +197,7 @@ class Simulation {
   EnergyLedger ledger_;
   PartEnergyMonitor part_energy_;
   std::vector<BlockEnergy> block_energy_;  // this cycle's element powers per block (exchange point 3)
+  std::vector<Real> corner_power_chunks_;  // per chunk of a block's corners (CornerBuffer::power)
   // The contact springs' votes count the elements on their nodes (controls_.contact_step_with_elements):
   // each block's vote of this cycle, and per node the smallest of its blocks'.
   std::vector<Real> block_step_;
