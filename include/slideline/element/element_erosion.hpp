@@ -87,9 +87,16 @@ class ElementErosion {
     return update_failed(e, chunk, fail_ > 0.0 && eps >= fail_, internal, hourglass, dt);
   }
   /// update() with the verdict of the criteria given: `fails` deletes element e now.
-  bool update_failed(Index e, Index chunk, bool fails, Real internal, Real hourglass, Real dt) {
+  /// `internal_prev`, `hourglass_prev`: the powers of the last evaluation's forces at this step's
+  /// rates, the first half of the step's trapezoidal work (then `internal`, `hourglass` are the
+  /// second half, this evaluation's); a deleted element's forces are zero from this evaluation on,
+  /// so it books the first half alone.
+  bool update_failed(Index e, Index chunk, bool fails, Real internal, Real hourglass, Real dt,
+                     Real internal_prev = 0.0, Real hourglass_prev = 0.0) {
     const auto i = static_cast<std::size_t>(e);
     if (deleted_at_[i] >= 0.0) return true;
+    held_internal_[i] += internal_prev * dt;
+    held_hourglass_[i] += hourglass_prev * dt;
     if (fails) {
       deleted_at_[i] = time_;
       chunk_internal_[static_cast<std::size_t>(chunk)] += held_internal_[i];

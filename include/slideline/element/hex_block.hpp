@@ -254,7 +254,7 @@ class HexBlock final : public ElementBlock {
         gather_batch(nodes, e0, bt);
         BatchStress st = batch_stress<damped>(bt, e0, dt_law, kc);
         BatchForces f = batch_forces<viscous>(bt, st.sigma, e0, dt_law, kc);
-        if (erosion_.active()) erode_batch(bt, st, f, e0, valid, dt_law, chunk, kc.c);
+        if (erosion_.active()) erode_batch(bt, st, f, e0, valid, dt_law, chunk, kc.c, out);
         accumulate<damped>(sums, bt, st, f, e0, valid, kc.c, step_factor_.empty() ? nullptr : step_factor_.data(),
                            rescaling_.raw_steps());
         store_forces(f, e0, valid, out);
@@ -340,13 +340,21 @@ class HexBlock final : public ElementBlock {
   /// Erosion of a batch's elements after the law's update (solid_erosion::fails, the step as
   /// accumulate() computes it with wave speed `c`): a deleted element's forces and powers are
   /// zeroed and its step is +inf (it votes none). The strains: of F at x^n (solid_erosion.hpp).
-  void erode_batch(const Batch& bt, BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c) {
+  /// Each element's held works are trapezoidal, as the block's (accumulate()): the first half from
+  /// its last forces, still in its corner slots (`out`), and the last powers at this step's rates.
+  void erode_batch(const Batch& bt, BatchStress& st, BatchForces& f, Index e0, int valid, Real dt, Index chunk, Real c,
+                   const std::array<Real*, 3>& out) {
     const State& s = state_[e0 / kLanes];
     const ErosionCriteria& crit = erosion_.criteria();
     Tensor3<Lanes> F;
     if (crit.needs_strain()) F = inverse(inverse_deformation_gradient(bt));
     for (int l = 0; l < valid; ++l) {
-      const Real internal = f.all[l] - st.visc[l] - st.damp[l] - f.hg[l];
+      const std::size_t s0 = 8 * static_cast<std::size_t>(e0 + l);
+      Real all_prev = 0.0;
+      for (int k = 0; k < 8; ++k)
+        all_prev -= out[0][s0 + k] * bt.vx[k][l] + out[1][s0 + k] * bt.vy[k][l] + out[2][s0 + k] * bt.vz[k][l];
+      const Real internal_prev = 0.5 * (all_prev - st.visc_prev[l] - st.damp_prev[l] - f.hg_prev[l]);
+      const Real internal = 0.5 * (f.all[l] - st.visc[l] - st.damp[l] - f.hg[l]);
       const Real q = st.qdt[l];
       const Real c_l = kStateSpeed ? st.c[l] : c;
       Real dt_e = crit.min_step > 0.0 ? st.len[l] / (q + std::sqrt(q * q + c_l * c_l)) : 0.0;
@@ -355,10 +363,10 @@ class HexBlock final : public ElementBlock {
       const bool fails = solid_erosion::fails(crit, plastic_strain_of(s, l), law, erosion_.time(), dt_e,
                                               crit.needs_strain() ? solid_erosion::log_strains(F, l) : std::array<Real, 3>{}) ||
                          solid_erosion::volume_fails(crit, bt.vol[l] / volume0_[static_cast<std::size_t>(e0 + l)]);
-      if (!erosion_.update_failed(e0 + l, chunk, fails, internal, f.hg[l], dt)) continue;
+      if (!erosion_.update_failed(e0 + l, chunk, fails, internal, 0.5 * f.hg[l], dt, internal_prev, 0.5 * f.hg_prev[l]))
+        continue;
       for (int k = 0; k < 8; ++k) f.fx[k][l] = f.fy[k][l] = f.fz[k][l] = 0.0;
-      f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;
-      f.hg_prev[l] = st.visc_prev[l] = st.damp_prev[l] = 0.0;
+      f.hg[l] = f.all[l] = f.fsum[l] = st.visc[l] = st.damp[l] = 0.0;  // the first halves stay booked
       st.len[l] = std::numeric_limits<Real>::infinity();
     }
   }

@@ -240,9 +240,10 @@ class BasicShellBlock final : public ElementBlock {
         const ElementResult r = e >= nq_ ? triangle_forces<damped>(nodes, dt, e, corners)
                                          : quad_forces<damped>(nodes, dt, e, chunk, corners);
         if (r.bad && bad < 0) bad = e;
-        if (r.bad || r.deleted) continue;
+        if (r.bad) continue;
         p_hg += 0.5 * (r.p_hg_prev + r.p_hg);  // trapezoidal, as the ledger's nodal work
-        p_visc += r.p_visc;
+        p_visc += 0.5 * (r.p_visc_prev + r.p_visc);
+        if (r.deleted) continue;  // the first halves only (its forces are zero from now on)
         p_damp += r.p_damp;
         p_all += r.p_all;
         if (r.dt < dtmin) {
@@ -260,11 +261,11 @@ class BasicShellBlock final : public ElementBlock {
     });
   }
 
-  /// What one element adds to its chunk's sums (hourglass power: quadrilaterals only); `bad`: it
-  /// degenerated or its forces are not finite, `deleted`: erosion deleted it at this evaluation.
+  /// What one element adds to its chunk's sums (hourglass power: quadrilaterals only; _prev: the
+  /// last forces' powers at this step's rates); `bad`: it degenerated or its forces are not
+  /// finite, `deleted`: erosion deleted it at this evaluation.
   struct ElementResult {
-    Real dt = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0, p_hg = 0.0;
-    Real p_hg_prev = 0.0;  ///< the power of the last evaluation's hourglass forces at this step's rates
+    Real dt = 0.0, p_visc = 0.0, p_damp = 0.0, p_all = 0.0, p_hg = 0.0, p_hg_prev = 0.0, p_visc_prev = 0.0;
     bool bad = false, deleted = false;
   };
 
@@ -297,7 +298,7 @@ class BasicShellBlock final : public ElementBlock {
     if (!thick_.empty()) thick_[e] = t * std::exp(ps.mean);  // ISTUPD: the next step's thickness
     // Bulk viscosity on the membrane dilatation rate (a pressure over the thickness).
     const Real len = shell_bt::characteristic_length(X, g.area);
-    Real qdt = bulk_viscosity(e, sr, len, g.area, t, r, out.p_visc);
+    Real qdt = bulk_viscosity(e, sr, len, g.area, t, r, out.p_visc, out.p_visc_prev);
     if constexpr (damped) {
       out.p_damp = damp * g.area;
       qdt += damping_.beta * c * c / len;  // the damped step, as for the hexahedron
@@ -310,10 +311,8 @@ class BasicShellBlock final : public ElementBlock {
       const Real m_node = mat_.density() * area0_[e] * sec_.thickness / 4.0;  // the mass stays
       const Real j_node = m_node * std::max(sec_.thickness * sec_.thickness, area0_[e]) / 12.0;
       Real* q = &hg_q_[5 * static_cast<std::size_t>(e)];
-      Real prev = 0.0;
-      out.p_hg = shell_hourglass::add(qhg_, mat_.youngs_modulus(), sec_.shear_factor * mat_.stiffness().g, t, m_node,
-                                      j_node, gm, Xm, V, W, f, m, sec_.hourglass_stiffness ? q : nullptr, dt, &g, q, prev);
-      out.p_hg_prev = prev;
+      out.p_hg = shell_hourglass::add(qhg_, mat_.youngs_modulus(), sec_.shear_factor * mat_.stiffness().g, t, m_node, j_node,
+                                      gm, Xm, V, W, f, m, sec_.hourglass_stiffness ? q : nullptr, dt, &g, q, out.p_hg_prev);
     }
     out.bad = !f.allFinite() || !m.allFinite();
     out.p_all = -(f.cwiseProduct(V).sum() + m.cwiseProduct(W).sum());
@@ -321,9 +320,9 @@ class BasicShellBlock final : public ElementBlock {
     Real* raw = rescaling_.raw_steps();
     if (raw) raw[e] = out.dt;  // mass scaling every cycle (enable_mass_rescaling)
     if (!step_factor_.empty()) out.dt *= step_factor_[e];  // mass scaling (scale_element_masses)
-    if (erosion_.active() && !out.bad &&
-        erode(e, chunk, out.p_all - out.p_visc - out.p_damp - out.p_hg, out.p_hg, dt, out.dt)) {
+    if (erosion_.active() && !out.bad && erode(e, chunk, out, V, W, corners, dt)) {
       out.deleted = true;
+      out.p_hg = out.p_visc = out.p_damp = out.p_all = 0.0;
       out.dt = 0.0;
       if (raw) raw[e] = std::numeric_limits<Real>::max();  // deleted: adds no mass from now on
       store_element(e, shell_bt::NodeMat::Zero(), shell_bt::NodeMat::Zero(), corners);
@@ -335,11 +334,10 @@ class BasicShellBlock final : public ElementBlock {
 
   /// Bulk viscosity of element e (shell_bulk_viscosity.hpp), its last evaluation's q t A kept.
   Real bulk_viscosity(Index e, const shell_bt::StrainRates& sr, Real len, Real area, Real t, shell_bt::Resultants& r,
-                      Real& p_visc) {
+                      Real& p_visc, Real& p_prev) {
     return shell_bulk_viscosity::add(mat_.density(), mat_.wave_speed(), bulk_, sr.membrane[0] + sr.membrane[1], len,
-                                     area, t, r, p_visc, visc_prev_[static_cast<std::size_t>(e)]);
+                                     area, t, r, p_visc, p_prev, visc_prev_[static_cast<std::size_t>(e)]);
   }
-
 
   /// Forces and moments of triangle e (e >= nq_) into its corner slots, as compute_chunks does for
   /// a quad (mid-step geometry for the rates, the geometry at x^n for the forces), without
@@ -376,7 +374,7 @@ class BasicShellBlock final : public ElementBlock {
     const PlaneStressStiffness cs = mat_.stiffness();
     const Real len = shell_c0tri::characteristic_length(g, cs.c11, cs.g);
     const Real len_dt = triangle_step_length(g, e, kappa, len, t);
-    Real qdt = bulk_viscosity(e, sr.s, len, g.area, t, r, out.p_visc);
+    Real qdt = bulk_viscosity(e, sr.s, len, g.area, t, r, out.p_visc, out.p_visc_prev);
     if constexpr (damped) {
       const Real dc = damping_.beta * kc * sr.shear_c;
       qc += dc;
@@ -457,11 +455,17 @@ class BasicShellBlock final : public ElementBlock {
 
   /// Erosion (element_erosion.hpp) of quadrilateral e after its update (`internal`, `hourglass`: its
   /// powers; `dt_e` its stable step); the verdict is shell_erosion::fails.
-  bool erode(Index e, Index chunk, Real internal, Real hourglass, Real dt, Real dt_e) {
+  /// Its held works are trapezoidal, as the block's: the first half from its last forces and
+  /// moments, still in its corner slots, at this step's velocities V, W.
+  bool erode(Index e, Index chunk, const ElementResult& r, const shell_bt::NodeMat& V, const shell_bt::NodeMat& W,
+             const CornerBuffer& corners, Real dt) {
     const State* st = state_.data() + static_cast<std::size_t>(e) * rule_.n;
     const std::array<Real, 6>* eps = strain_.empty() ? nullptr : strain_.data() + static_cast<std::size_t>(e) * rule_.n;
-    const bool gone = shell_erosion::fails(erosion_.criteria(), st, rule_.n, erosion_.time(), dt_e, eps);
-    return erosion_.update_failed(e, chunk, gone, internal, hourglass, dt);
+    const bool gone = shell_erosion::fails(erosion_.criteria(), st, rule_.n, erosion_.time(), r.dt, eps);
+    const Real all_prev =
+        shell_erosion::previous_corner_power(corners, force_slot_base() + 4 * e, moment_slot_base() + 4 * e, V, W);
+    return erosion_.update_failed(e, chunk, gone, 0.5 * (r.p_all - r.p_visc - r.p_hg) - r.p_damp, 0.5 * r.p_hg, dt,
+                                  0.5 * (all_prev - r.p_visc_prev - r.p_hg_prev), 0.5 * r.p_hg_prev);
   }
 
   /// Writes element e's forces f and moments m (4 x 3, global) into its corner slots.
@@ -576,9 +580,7 @@ class BasicShellBlock final : public ElementBlock {
   std::vector<Real> step_factor_;  ///< sqrt of the mass-scaling factor per element; empty: none
   ElementMassScaling rescaling_;   ///< MS1ST = 0: the steps before the factors (inactive otherwise)
   std::vector<Real> area0_;
-  /// 5 generalised hourglass forces per quadrilateral (local frame): IHQ 4-6 the forces, the viscous
-  /// form the last evaluation's (for the trapezoidal work).
-  std::vector<Real> hg_q_;
+  std::vector<Real> hg_q_;  ///< 5 generalised hourglass forces per quad (local; viscous: the last ones)
   std::vector<Real> visc_prev_;  ///< per element, the last evaluation's bulk-viscosity q t A
   Index nq_ = 0;              ///< quadrilaterals; the triangles follow them
   std::vector<Real> tri_c_;   ///< per triangle, the time integral of the shear's rotational part c

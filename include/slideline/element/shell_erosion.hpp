@@ -8,6 +8,8 @@
 #include "slideline/core/error.hpp"
 #include "slideline/element/cell_output.hpp"
 #include "slideline/element/erosion_criteria.hpp"
+#include "slideline/element/shell_bt.hpp"
+#include "slideline/mesh/corner_buffer.hpp"
 
 namespace slideline::shell_erosion {
 
@@ -72,6 +74,18 @@ bool fails(const ErosionCriteria& k, const State* st, int points, Real t, Real d
     if (failed >= k.points_needed(points)) return true;
   }
   return k.min_step > 0.0 && dt_e < k.min_step;
+}
+
+/// -sum (f . v + m . omega) of the forces and moments in a quadrilateral's corner slots (from s0,
+/// m0) at velocities V and angular velocities W: before the element writes its new ones, the power
+/// of its last forces at this step's rates (the first half of its trapezoidal work).
+inline Real previous_corner_power(const CornerBuffer& c, Index s0, Index m0, const shell_bt::NodeMat& V,
+                                  const shell_bt::NodeMat& W) {
+  Real p = 0.0;
+  for (int k = 0; k < 4; ++k)
+    p -= c.force.x[s0 + k] * V(k, 0) + c.force.y[s0 + k] * V(k, 1) + c.force.z[s0 + k] * V(k, 2) +
+         c.moment.x[m0 + k] * W(k, 0) + c.moment.y[m0 + k] * W(k, 1) + c.moment.z[m0 + k] * W(k, 2);
+  return p;
 }
 
 }  // namespace slideline::shell_erosion
