@@ -158,7 +158,10 @@ R eroding_element(ElementErosion& erosion, Index e, Real dt, Forces&& forces, St
   const ErosionCriteria& k = erosion.criteria();
   bool fails = (k.plastic_strain > 0.0 && strain(e) >= k.plastic_strain) || (k.min_step > 0.0 && r.dt < k.min_step);
   if constexpr (requires { r.erodes; }) fails = fails || r.erodes;  // the element's own verdict (thresholds)
-  if (erosion.update_failed(e, e / kChunkSize, fails, r.power - r.visc - r.damp, 0.0, dt)) return deleted();
+  // The element's total work on the ledger's trapezoid (the first half from the forces its corner
+  // slots held before); its bulk viscosity and damping on the rectangle, as the block books them.
+  if (erosion.update_failed(e, e / kChunkSize, fails, 0.5 * r.power - r.visc - r.damp, 0.0, dt, 0.5 * r.power_prev))
+    return deleted();
   return r;
 }
 

@@ -219,6 +219,7 @@ class FullHexBlock final : public ElementBlock {
   /// One element's step, powers and failure.
   struct Sums {
     Real dt = 0.0, visc = 0.0, damp = 0.0, power = 0.0;
+    Real power_prev = 0.0;  ///< of the forces its corner slots held before, at this step's rates
     bool failed = false;
     bool erodes = false;  ///< NUMFIP of the 8 points fail the *MAT_ADD_EROSION thresholds, or TEROD / CEROD
   };
@@ -293,7 +294,10 @@ class FullHexBlock final : public ElementBlock {
     }
     const std::size_t s0 = 8 * static_cast<std::size_t>(e);
     for (int k = 0; k < 8; ++k)
-      for (int i = 0; i < 3; ++i) out[i][s0 + k] = f(k, i);
+      for (int i = 0; i < 3; ++i) {
+        s.power_prev -= out[i][s0 + k] * v(k, i);
+        out[i][s0 + k] = f(k, i);
+      }
     s.power = -(f.cwiseProduct(v)).sum();
     s.dt = solid_terms::stable_step(len, qdt, k_.c);
     s.failed = !g.positive || !std::isfinite(f.sum());

@@ -192,6 +192,7 @@ class TetBlock final : public ElementBlock {
     Real dt, visc, damp, power;
     bool failed;
     bool erodes = false;  ///< the point fails the *MAT_ADD_EROSION thresholds, or TEROD / CEROD
+    Real power_prev = 0.0;  ///< of the forces its corner slots held before, at this step's rates
   };
 
   /// Stress of element e (law at F = edges(x) edges(X)^-1 with D = sym(sum v_I (x) grad N_I),
@@ -219,7 +220,10 @@ class TetBlock final : public ElementBlock {
     Real fsum = 0.0;
     for (int k = 0; k < 4; ++k) {
       const Vec3 f = -vol * (s * g.row(k).transpose());
-      for (int i = 0; i < 3; ++i) out[i][s0 + k] = f[i];
+      for (int i = 0; i < 3; ++i) {
+        p.power_prev -= out[i][s0 + k] * v[k][i];
+        out[i][s0 + k] = f[i];
+      }
       fsum += f.sum();
       p.power -= f.dot(v[k]);
     }
