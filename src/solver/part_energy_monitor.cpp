@@ -26,6 +26,7 @@ void PartEnergyMonitor::reset(const std::vector<std::unique_ptr<ElementBlock>>& 
     const auto it = std::find_if(slots_.begin(), slots_.end(), [&](const Slot& s) { return s.part == b->part_id(); });
     part_of_block_.push_back(static_cast<std::size_t>(it - slots_.begin()));
     if (it == slots_.end()) slots_.push_back(Slot{b->part_id()});
+    if (b->stiffness_hourglass()) slots_[part_of_block_.back()].stiffness = true;
   }
 }
 
@@ -54,11 +55,14 @@ void PartEnergyMonitor::check(Real t, long cycle, Real scale) {
       stop_if_negative(s, "internal (eroded elements)", s.eroded_internal,
                        "the elements deleted so far held negative energy when they were deleted");
     }
-    // A viscous hourglass force only dissipates and a conservative stiffness only stores: the
-    // hourglass energy of a part cannot go negative unless the control creates energy (a stiffness
-    // form whose reference the element's plastic distortion has moved, for one).
-    stop_if_negative(s, "hourglass", s.hourglass,
-                     "the hourglass control is creating energy (try *CONTROL_HOURGLASS / *HOURGLASS IHQ 1-6)");
+    // A conservative stiffness only stores: its trapezoidal work is the stored energy, which cannot
+    // go negative unless the control creates energy (a stiffness form whose reference the
+    // element's plastic distortion has moved, for one). A viscous force's work is the trapezoid of
+    // a force that lags the velocity by half a step: it can dip below zero after a kick, so it is
+    // not judged (ElementBlock::stiffness_hourglass).
+    if (s.stiffness)
+      stop_if_negative(s, "hourglass", s.hourglass,
+                       "the hourglass control is creating energy (try *CONTROL_HOURGLASS / *HOURGLASS IHQ 1-6)");
     if (!s.warned && s.hourglass > negligible && s.hourglass > kHourglassFraction * std::max<Real>(s.internal, 0.0)) {
       s.warned = true;
       warnings_.push_back(HourglassWarning{s.part, t, cycle, s.hourglass, s.internal});

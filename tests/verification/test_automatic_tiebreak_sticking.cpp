@@ -347,6 +347,11 @@ TEST(AutomaticTiebreakStickingRest, ShearFailsAtTheMixedCriterion) {
     const Frame frame = rotated ? test_support::oblique_frame() : Frame{};
     model::Model m;
     test_support::add_tiebreak_blocks(m, frame, kRho, kE, kNu);
+    // The incremental stiffness form (IHQ 4): the blocks' total-displacement IHQ 10 creates 1.06 %
+    // of the energy in play once the released block rattles (its hourglass work -0.0048 against
+    // 0.45 at t = 4.24, on the trapezoid since 2026-11-27; docs/solver.md, "Energies"), and the run
+    // stops there; the failure this test times comes before.
+    for (auto& h : m.hourglasses) h.ihq = 4;
     model::Contact card = tiebreak_card("mixed", 3);
     card.sfs = card.sfm = 10.0;
     card.nfls = card.nflf = kNfls;

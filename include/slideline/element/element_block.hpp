@@ -108,6 +108,11 @@ class ElementBlock : public MeshBlock {
 
   /// True when the block writes corner moments (its nodes carry rotations).
   virtual bool has_moments() const { return false; }
+  /// True when the block's hourglass control is a stiffness (IHQ 4-6, 10): its trapezoidal work is
+  /// then a stored energy that cannot go negative unless the control creates energy. A viscous
+  /// control's work can dip below zero for a while after a kick (its force lags the velocity by
+  /// half a step), so the negative-hourglass stop judges stiffness forms only.
+  virtual bool stiffness_hourglass() const { return false; }
   /// False for blocks whose step only matters when nothing else bounds it (rigid parts: as in
   /// LS-DYNA, rigid elements do not set the step of a model with deformable elements).
   virtual bool bounds_time_step() const { return true; }

@@ -77,6 +77,7 @@ class HexBlock final : public ElementBlock {
   }
 
   std::string kind() const override { return "hex8"; }
+  bool stiffness_hourglass() const override { return hg_.kind != HexHourglass::Kind::viscous; }
   Id part_id() const override { return part_id_; }
   Index element_count() const override { return static_cast<Index>(ids_.size()); }
   BlockTopology topology() const override { return {hex8_topology, element_count()}; }

@@ -94,6 +94,7 @@ class BasicShellBlock final : public ElementBlock {
     return ids_.empty() ? Id{-1} : ids_[static_cast<std::size_t>(chunk_dt_element_[argmin_chunk(chunk_dt_)])];
   }
   bool has_moments() const override { return true; }
+  bool stiffness_hourglass() const override { return qhg_ > 0.0 && sec_.hourglass_stiffness; }
   const Law& material() const { return mat_; }
   const ShellSection& section() const { return sec_; }
   /// The law's 3-D bulk modulus (force/length^2).

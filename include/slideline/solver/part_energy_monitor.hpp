@@ -80,6 +80,7 @@ class PartEnergyMonitor {
     Real eroded_internal = 0.0;
     Real eroded_hourglass = 0.0;
     bool warned = false;
+    bool stiffness = false;  ///< a block of the part has a stiffness hourglass control
   };
   std::vector<Slot> slots_;                 // one per part, in order of first block
   std::vector<std::size_t> part_of_block_;  // block -> slot

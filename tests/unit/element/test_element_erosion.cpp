@@ -52,10 +52,11 @@ TEST(ElementErosion, ErodingElementZeroesDeletedElements) {
   struct R {
     Real dt, visc, damp, power;
     bool failed;
+    Real power_prev;  ///< of the forces the corner slots held before, at this step's rates
   };
   ElementErosion er;
   int zeroed = 0;
-  const auto forces = [](Index) { return R{0.5, 1.0, 2.0, 10.0, false}; };
+  const auto forces = [](Index) { return R{0.5, 1.0, 2.0, 10.0, false, 4.0}; };
   const auto zero = [&](Index) { ++zeroed; };
   EXPECT_EQ(eroding_element<R>(er, 0, 0.1, forces, [](Index) { return 1.0; }, zero).dt, 0.5);
   er.enable(0.3, 2, 2);
@@ -66,7 +67,9 @@ TEST(ElementErosion, ErodingElementZeroesDeletedElements) {
   EXPECT_EQ(zeroed, 1);
   Real internal = 0.0, hourglass = 0.0;
   EXPECT_EQ(er.reduce(internal, hourglass), 1);
-  EXPECT_DOUBLE_EQ(internal, (10.0 - 1.0 - 2.0) * 0.1);  // power net of viscosity and damping, one step
+  // The kept step's trapezoid, (4 + 10) / 2 net of viscosity and damping, then the deleting
+  // step's first half, 4 / 2 (its forces are zero from then on).
+  EXPECT_DOUBLE_EQ(internal, ((4.0 + 10.0) / 2.0 - 1.0 - 2.0) * 0.1 + 4.0 / 2.0 * 0.1);
   EXPECT_EQ(eroding_element<R>(er, 0, 0.1, forces, [](Index) { return 0.0; }, zero).power, 0.0);
   EXPECT_EQ(zeroed, 2);
 }

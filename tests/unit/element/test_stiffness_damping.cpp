@@ -108,10 +108,14 @@ TEST(HexStiffnessDamping, AffineVelocityDissipatesBetaDCD) {
   auto plain = hex_block(g0, 0.0);
   const Evaluation u = evaluate(plain, g0.nodes);
   auto damped = hex_block(g, kBeta);
-  const Evaluation d = evaluate(damped, g.nodes);
+  const Evaluation first = evaluate(damped, g.nodes);
+  const Evaluation d = evaluate(damped, g.nodes);  // the same rates again: the last force is this one
 
   const Real expected = kBeta * volume * density;
   EXPECT_EQ(u.energy.damping_power, 0.0);
+  // The power over a step is the trapezoid: the mean of the last damping force's power at these
+  // rates and the new one's (none before the first evaluation: half).
+  EXPECT_NEAR(first.energy.damping_power, 0.5 * expected, 1e-12 * expected);
   EXPECT_NEAR(d.energy.damping_power, expected, 1e-12 * expected);
   // The damping forces' work rate: f_d . v = -(damping power).
   EXPECT_NEAR(d.power - u.power, -expected, 1e-10 * expected);
