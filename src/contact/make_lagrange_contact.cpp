@@ -37,6 +37,12 @@ std::vector<RigidMasterDrive> rigid_drives(const model::Model& model) {
 
 }  // namespace
 
+void set_rigid_master_constraints(LagrangeContactSettings& s, const model::Model& model) {
+  s.rigid_fixed_translations = rigid_fixed_dofs(model, false);
+  s.rigid_fixed_rotations = rigid_fixed_dofs(model, true);
+  s.rigid_drives = rigid_drives(model);
+}
+
 std::unique_ptr<ContactAlgorithm> make_lagrange_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   const bool automatic = spec.type == model::ContactType::automatic;
   LagrangeContactSettings s;
@@ -52,9 +58,7 @@ std::unique_ptr<ContactAlgorithm> make_lagrange_contact(InterfaceSpec& spec, con
   if (spec.node_set_slaves) s.nodal_radius = spec.nodal_radius;
   s.skip_incident = automatic;
   s.one_constraint_per_mutual_pair = automatic;  // no over-constrained pairs (lagrange_contact.hpp)
-  s.rigid_fixed_translations = rigid_fixed_dofs(ctx.model, false);
-  s.rigid_fixed_rotations = rigid_fixed_dofs(ctx.model, true);
-  s.rigid_drives = rigid_drives(ctx.model);
+  set_rigid_master_constraints(s, ctx.model);
   s.transmitted_output = spec.transmitted_output;
   s.mortar = spec.mortar_coupling;  // _MORTAR (check_runs refuses it on Type 12 and node sets)
   std::vector<Index> first;
