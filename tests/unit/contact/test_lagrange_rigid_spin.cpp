@@ -18,6 +18,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -34,7 +36,10 @@ struct Result {
   Real lambda = 0.0, closed_form = 0.0, worst_node = 0.0, increment = 0.0, gap = 0.0;
 };
 
-Result solve_on_box(const Mat3& q) {
+/// held: the rotations the box's body holds (CON2 style, global axes; the rigid-body update holds
+/// them too); drives: prescribed motions of its part 1 (the solve only), at time t.
+Result solve_on_box(const Mat3& q, std::array<int, 3> held = {0, 0, 0}, std::vector<RigidMasterDrive> drives = {},
+                    Real t = 0.0) {
   // Box [0, 2] x [0, 0.5] x [0, 1]; nodes 0-3 its top face (y = 0.5), 4-7 the bottom; node 8 the
   // slave on the top face at (0.4, 0.5, 0.3).
   const std::array<Vec3, 9> x0{Vec3(0, 0.5, 0), Vec3(0, 0.5, 1), Vec3(2, 0.5, 1), Vec3(2, 0.5, 0),
@@ -67,9 +72,10 @@ Result solve_on_box(const Mat3& q) {
   const std::vector<std::unique_ptr<ElementBlock>> blocks;
   const ContactContext ctx{nodes, blocks, &sets, rigid};
   RigidMasterGroups groups;
-  groups.setup(top, ctx, {}, {}, true);
+  const std::vector<std::pair<Id, std::array<int, 3>>> held_rotations{{1, held}};
+  groups.setup(top, ctx, {}, held_rotations, true, drives);
   ConstraintView view{nodes, mass, damping, {free_, free_, free_}, rigid, a, force, fc};
-  const StepTimes times{0.0, dt, dt, dt, 10, dt};
+  const StepTimes times{t, dt, dt, dt, 10, dt};
   groups.update(view, times);
   LagrangeConstraint k;
   k.slave = 8;
@@ -97,8 +103,21 @@ Result solve_on_box(const Mat3& q) {
     const Vec3 s = nodes.x.get(i) - c;
     inertia += m[static_cast<std::size_t>(i)] * (s.squaredNorm() * Mat3::Identity() - s * s.transpose());
   }
-  const Vec3 sn = (nodes.x.get(8) - c).cross(n);
-  out.closed_form = g / (1.0 / m[8] + 1.0 / mt + sn.dot(inertia.inverse() * sn));
+  // Held or driven rotations drop out: I^-1 over the free axes only (S (S I S + 1 - S)^-1 S).
+  std::array<bool, 3> fixed{held[0] != 0, held[1] != 0, held[2] != 0};
+  for (const RigidMasterDrive& d : drives)
+    if (d.dof >= 3 && d.active(t)) fixed[static_cast<std::size_t>(d.dof - 3)] = true;
+  Mat3 reduced = inertia;
+  for (int k = 0; k < 3; ++k)
+    if (fixed[static_cast<std::size_t>(k)]) {
+      reduced.row(k).setZero();
+      reduced.col(k).setZero();
+      reduced(k, k) = 1.0;
+    }
+  Vec3 sn = (nodes.x.get(8) - c).cross(n);
+  for (int k = 0; k < 3; ++k)
+    if (fixed[static_cast<std::size_t>(k)]) sn[k] = 0.0;
+  out.closed_form = g / (1.0 / m[8] + 1.0 / mt + sn.dot(reduced.inverse() * sn));
   // The solve's x^{n+1} of the box against the rigid-body update under the same forces.
   std::array<Vec3, 8> predicted{};
   for (Index i = 0; i < 8; ++i) predicted[static_cast<std::size_t>(i)] = predicted_position(view, times, groups.groups(), i);
@@ -106,7 +125,7 @@ Result solve_on_box(const Mat3& q) {
   Vec3 point_next = Vec3::Zero();
   for (int j = 0; j < 4; ++j) point_next += k.shape[static_cast<std::size_t>(j)] * predicted[static_cast<std::size_t>(j)];
   out.gap = n.dot(slave_next - point_next);
-  RigidBody body(1, {0, 1, 2, 3, 4, 5, 6, 7}, {0, 0, 0, 0, 0, 0});
+  RigidBody body(1, {0, 1, 2, 3, 4, 5, 6, 7}, {0, 0, 0, held[0], held[1], held[2]});
   body.initialize(nodes, mass);
   ConstraintLoads loads{mass, nodes, &fc, nullptr};
   loads.dt_avg = dt;
@@ -146,6 +165,31 @@ TEST(LagrangeRigidSpin, OneStepOnAFreeBoxMatchesTheClosedFormAndTheRigidBodyUpda
     EXPECT_LT(r->worst_node, 1e-6 * r->increment);
   }
   EXPECT_NEAR(b.lambda, a.lambda, 1e-10 * a.lambda);
+}
+
+TEST(LagrangeRigidSpin, HeldAndDrivenRotationsDropOutOfTheSolve) {
+  // Held about z (CON2 = 3): the box turns about x and y only, in the solve as in its update.
+  const Result z = solve_on_box(Mat3::Identity(), {0, 0, 1});
+  // Held about all three (CON2 = 7): lambda = g / (1/m_s + 1/M), the translation-only figure.
+  const Result all = solve_on_box(Mat3::Identity(), {1, 1, 1});
+  // Rotations about x, y, z driven (*BOUNDARY_PRESCRIBED_MOTION_RIGID DOF 5-7) over [0, 1]: held
+  // while the drives act (t = 0.5), free after their death (t = 2).
+  std::vector<RigidMasterDrive> drives;
+  for (int d = 3; d < 6; ++d) drives.push_back({1, d, 0.0, 1.0});
+  const Result driven = solve_on_box(Mat3::Identity(), {0, 0, 0}, drives, 0.5);
+  const Result after = solve_on_box(Mat3::Identity(), {0, 0, 0}, drives, 2.0);
+  const Result free = solve_on_box(Mat3::Identity());
+  std::printf("held z: lambda %.12f (closed form %.12f), box nodes vs update %.3e; held xyz %.12f (%.12f); "
+              "driven %.12f; after the drives %.12f (free %.12f)\n",
+              z.lambda, z.closed_form, z.worst_node, all.lambda, all.closed_form, driven.lambda, after.lambda,
+              free.lambda);
+  for (const Result* r : {&z, &all, &driven, &after}) EXPECT_NEAR(r->lambda, r->closed_form, 1e-10 * r->closed_form);
+  EXPECT_LT(z.worst_node, 1e-6 * z.increment);
+  EXPECT_LT(all.worst_node, 1e-6 * all.increment);
+  EXPECT_GT(all.lambda, z.lambda);  // a stiffer body: more of the slave's weight on it
+  EXPECT_GT(z.lambda, free.lambda);
+  EXPECT_NEAR(driven.lambda, all.lambda, 1e-12 * all.lambda);
+  EXPECT_NEAR(after.lambda, free.lambda, 1e-12 * free.lambda);
 }
 
 }  // namespace
