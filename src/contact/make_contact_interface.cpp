@@ -16,7 +16,7 @@ std::unique_ptr<ContactAlgorithm> make_contact_interface(InterfaceSpec& spec, co
     case T::tied_shell_edge:
       return make_tied_contact(spec);
     case T::sliding_only:
-      return make_sliding_only_contact(spec);
+      return make_sliding_only_contact(spec, ctx);
     case T::surface_to_surface:
     case T::one_way:
       return lagrange ? make_lagrange_contact(spec, ctx) : make_sliding_contact(spec);

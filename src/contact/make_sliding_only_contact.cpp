@@ -8,10 +8,11 @@
 
 namespace slideline {
 
-std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(InterfaceSpec& spec) {
+std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(InterfaceSpec& spec, const ContactBuildContext& ctx) {
   LagrangeContactSettings s;
   s.title = spec.title;
   s.shell_offsets = false;  // the slave nodes lie on the master surface itself
+  set_rigid_master_constraints(s, ctx.model);  // a rigid master moves in the solve as its body may
   return std::make_unique<SlidingOnlyContact>(std::move(s), std::move(spec.master.surface), std::move(spec.slave.nodes),
                                               std::move(spec.slave.surface));
 }

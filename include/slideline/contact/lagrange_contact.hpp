@@ -74,6 +74,16 @@ struct LagrangeContactSettings {
   /// Translations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON1), by part id: the
   /// solve keeps the body immovable in them. Rigid parts not listed translate freely.
   std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_translations;
+  /// Rotations a rigid master part's body holds fixed (*MAT_RIGID CMO/CON2), by part id.
+  std::vector<std::pair<Id, std::array<int, 3>>> rigid_fixed_rotations;
+  /// Prescribed motions of rigid parts (*BOUNDARY_PRESCRIBED_MOTION_RIGID): the solve holds the
+  /// driven dof of a rigid master while the drive acts (the drive, not the contact, sets it).
+  std::vector<RigidMasterDrive> rigid_drives;
+  /// The solve turns each rigid master body about its centre of mass under the contact forces
+  /// (RigidGroups::spin, enforcement/lagrange.hpp), as well as translating it. Off: the rotation is
+  /// left to the rigid-body update after the solve (the behaviour before 2026-11-27; kept for
+  /// comparisons, docs/contact.md "Rigid masters").
+  bool rigid_master_rotation = true;
   /// Mortar transfer (a deck's _MORTAR with _LAGRANGE; needs the slave surface, and not the
   /// mutual-pair rule): each slave node's constraint holds the weighted master point
   /// sum_a w_a x_a of its mortar weights (enforcement/mortar_weights.hpp: the nodes of every master
@@ -144,7 +154,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
     constraints_.reserve(ns);
     owner_.clear();
     owner_.reserve(ns);
-    rigid_.setup(master(), c, s_.rigid_fixed_translations);
+    rigid_.setup(master(), c, s_.rigid_fixed_translations, s_.rigid_fixed_rotations, s_.rigid_master_rotation, s_.rigid_drives);
     predicted_.resize(c.nodes.size());
     constraint_of_.assign(c.nodes.size(), -1);
     keep_.reserve(ns);
@@ -218,6 +228,8 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   std::size_t slave_count() const { return pairs_.slaves().size(); }
   /// The contact-pairs stage (search, tracking, offsets, side memory) the interface consumes.
   const ContactPairs& pairs() const { return pairs_; }
+  /// The rigid master groups (centres and rotational compliances of the last cycle).
+  const RigidMasterGroups& rigid_groups() const { return rigid_; }
 
  private:
   /// The stage's options: a quarter of the smallest segment as the allowance, boxes padded by the
@@ -472,7 +484,7 @@ class LagrangeInterface final : public ContactAlgorithm, public ContactConstrain
   Real friction_work_ = 0.0;
   Real max_penetration_ = 0.0;
   LagrangeSolveStats stats_;
-  RigidMasterGroups rigid_;  ///< the rigid master parts, moved as translating masses by the solve
+  RigidMasterGroups rigid_;  ///< the rigid master parts, moved as rigid bodies by the solve
   Vec3Field predicted_;  ///< x^{n+1} of the interface's nodes during reproject()
   std::vector<Index> constraint_of_;  ///< per node: its constraint this cycle, -1 (mutual-pair check)
   std::vector<std::uint8_t> keep_;

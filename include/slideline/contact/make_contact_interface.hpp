@@ -13,6 +13,7 @@
 namespace slideline {
 
 class ContactErosion;
+struct LagrangeContactSettings;
 
 /// Contact with eroding parts (docs/contact_erosion.md), before make_contact_interface():
 /// `eroding_part` holds, per internal node, the deck id of an eroding part that holds it (0:
@@ -45,9 +46,13 @@ std::unique_ptr<ContactAlgorithm> make_sliding_contact(InterfaceSpec& spec);
 /// Types 2 (tied surfaces), 6 (tied nodes), 7 (tied shell edge): kinematic.
 std::unique_ptr<ContactAlgorithm> make_tied_contact(InterfaceSpec& spec);
 /// Type 1 (sliding only): kinematic.
-std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(InterfaceSpec& spec);
+std::unique_ptr<ContactAlgorithm> make_sliding_only_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
 /// Lagrange-multiplier enforcement of Types 3, 5, 10, 12.
 std::unique_ptr<ContactAlgorithm> make_lagrange_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
+/// The dofs the deck holds on rigid bodies, for a Lagrange or Type 1 solve's rigid masters:
+/// *MAT_RIGID CMO = 1 CON1 (translations) and CON2 (rotations), *BOUNDARY_PRESCRIBED_MOTION_RIGID
+/// (driven dofs, while their drive acts); make_lagrange_contact.cpp.
+void set_rigid_master_constraints(LagrangeContactSettings& s, const model::Model& model);
 /// Types 5 (nodes to surface) and 12 (automatic): penalty.
 std::unique_ptr<ContactAlgorithm> make_node_and_automatic_contact(InterfaceSpec& spec, const ContactBuildContext& ctx);
 /// The LS-DYNA automatic cards of type family 12 (model::ContactForm other than dyna3d), penalty:

@@ -36,8 +36,12 @@
 /// alternating between 0 and twice the load). With `RigidGroups` the solve moves each rigid body
 /// as ONE translating mass (its total mass; components where any of its nodes is fixed stay
 /// immovable): a force df on a node of group g moves every node of g by c_g df,
-/// c_g = dt_next dt_avg / ((1 + h) M_g). Rotations of the rigid body are left to the simulation's
-/// update after the solve (a second-order lag for off-centre loads).
+/// c_g = dt_next dt_avg / ((1 + h) M_g). With `RigidGroups::spin` the group also turns about its
+/// centre of mass c_g: the forces add the torque T_g = sum (x_i - c_g) x df_i and every node of g
+/// moves by (J_g T_g) x (x_i - c_g) more, J_g = dt_next dt_avg / (1 + h) I_g^-1 (I_g the body's
+/// inertia tensor about c_g; rows and columns of held rotations zero): the increment the rigid-body
+/// update gives a node under those forces, to first order in the turn of one step. Without it the
+/// turn is left to the update after the solve, and the next cycle corrects the gap it opened.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -112,11 +116,18 @@ struct LagrangeWorkspace {
   std::vector<Row> rows;
 };
 
-/// Rigid bodies taking part in a solve as translating masses (see the file comment).
+/// Rigid bodies taking part in a solve as translating (and, with `spin`, turning) masses (see the
+/// file comment).
 struct RigidGroups {
   std::span<const Index> group;    ///< per node (global index): group, or -1
   std::span<const Vec3> compliance;  ///< per group: c_g per component (length / force; 0 = immovable)
   std::span<Vec3> force;             ///< per group: force accumulated by the solve (scratch)
+  /// Rotation (all empty: the groups only translate). Per group: the centre of mass at x^n
+  /// (length), the rotational compliance J_g (1 / (force length)), the torque about the centre
+  /// accumulated by the solve (force length; scratch).
+  std::span<const Vec3> center = {};
+  std::span<const Mat3> spin = {};
+  std::span<Vec3> torque = {};
 };
 
 namespace detail {
@@ -130,6 +141,12 @@ struct Predictor {
 
   Index group(Index i) const {
     return rigid && !rigid->group.empty() ? rigid->group[static_cast<std::size_t>(i)] : Index(-1);
+  }
+  /// True when the rigid groups turn in the solve (RigidGroups::spin).
+  bool spinning() const { return rigid && !rigid->group.empty() && !rigid->spin.empty(); }
+  /// Arm of node i about the centre of its group g (length).
+  Vec3 arm(Index i, Index g) const {
+    return view.nodes.x.get(i) - rigid->center[static_cast<std::size_t>(g)];
   }
 
   Real h(Index i) const { return 0.5 * view.damping[static_cast<std::size_t>(i)] * dt_avg; }
@@ -145,14 +162,20 @@ struct Predictor {
   Vec3 increment(Index i) const {
     const Real hi = h(i);
     Vec3 d = dt_next * ((1.0 - hi) * view.nodes.v.get(i) + dt_avg * view.a.get(i)) / (1.0 + hi);
-    if (const Index g = group(i); g >= 0)
-      d += rigid->compliance[static_cast<std::size_t>(g)].cwiseProduct(rigid->force[static_cast<std::size_t>(g)]);
+    if (const Index g = group(i); g >= 0) {
+      const auto gi = static_cast<std::size_t>(g);
+      d += rigid->compliance[gi].cwiseProduct(rigid->force[gi]);
+      if (!rigid->spin.empty()) d += (rigid->spin[gi] * rigid->torque[gi]).cross(arm(i, g));
+    }
     return d;
   }
   void apply(Index i, const Vec3& df) const {
     view.f_contact.add(i, df);
     view.force.add(i, df);
-    if (const Index g = group(i); g >= 0) rigid->force[static_cast<std::size_t>(g)] += df;
+    if (const Index g = group(i); g >= 0) {
+      rigid->force[static_cast<std::size_t>(g)] += df;
+      if (!rigid->spin.empty()) rigid->torque[static_cast<std::size_t>(g)] += arm(i, g).cross(df);
+    }
     const Real m = view.mass[static_cast<std::size_t>(i)];
     for (int c = 0; c < 3; ++c)
       if (movable(i, c)) view.a[c][static_cast<std::size_t>(i)] += df[c] / m;
@@ -200,6 +223,35 @@ struct Predictor {
     add(k.slave, 1.0);
     for_each_master(k, [&](int, Index m, Real w) { add(m, -w); });
     for (int j = 0; j < ng; ++j) c += ws[j] * ws[j] * rigid->compliance[static_cast<std::size_t>(gs[j])];
+    return c;
+  }
+  /// The rotational part of the constraint's compliance (spinning() only; length / force): a
+  /// force df on the constraint (+df on the slave, -N_a df on the masters) turns group g by
+  /// J_g (rho_g x df), rho_g = sum of the weighted arms of the constraint's nodes in g, which moves
+  /// the relative increment by (J_g (rho_g x df)) x rho_g = [rho_g]x^T J_g [rho_g]x df.
+  Mat3 pair_rotation(const LagrangeConstraint& k) const {
+    std::array<Index, 1 + LagrangeConstraint::max_masters> gs{};
+    std::array<Vec3, 1 + LagrangeConstraint::max_masters> rho{};
+    int ng = 0;
+    const auto add = [&](Index node, Real w) {
+      const Index g = group(node);
+      if (g < 0) return;
+      for (int j = 0; j < ng; ++j)
+        if (gs[j] == g) {
+          rho[j] += w * arm(node, g);
+          return;
+        }
+      gs[ng] = g;
+      rho[ng++] = w * arm(node, g);
+    };
+    add(k.slave, 1.0);
+    for_each_master(k, [&](int, Index m, Real w) { add(m, -w); });
+    Mat3 c = Mat3::Zero();
+    for (int j = 0; j < ng; ++j) {
+      Mat3 x;  // [rho]x: x v = rho x v
+      x << 0.0, -rho[j][2], rho[j][1], rho[j][2], 0.0, -rho[j][0], -rho[j][1], rho[j][0], 0.0;
+      c += x.transpose() * rigid->spin[static_cast<std::size_t>(gs[j])] * x;
+    }
     return c;
   }
 };
@@ -342,9 +394,12 @@ inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint>
                                                    const RigidGroups* rigid = nullptr,
                                                    LagrangeWorkspace* workspace = nullptr,
                                                    Vec3* master_added = nullptr) {
-  if (rigid)
+  if (rigid) {
     for (Vec3& f : rigid->force) f.setZero();
+    for (Vec3& t : rigid->torque) t.setZero();
+  }
   const detail::Predictor p{view, times.dt_next, times.dt_avg, rigid, master_added};
+  const bool spin = p.spinning();
   LagrangeSolveResult result;
   for (auto& k : cs) {
     if (!k.bilateral) k.lambda = std::max(k.lambda, Real(0));
@@ -360,7 +415,11 @@ inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint>
     for (auto& k : cs) {
       const Vec3 c = p.pair_compliance(k);
       const Vec3& n = k.normal;
-      const Real wn = n[0] * n[0] * c[0] + n[1] * n[1] * c[1] + n[2] * n[2] * c[2];
+      // A turning rigid group couples the components (cr, RigidGroups::spin); the translation
+      // and node parts stay the diagonal c, so without spin the arithmetic is the same as ever.
+      const Mat3 cr = spin ? p.pair_rotation(k) : Mat3::Zero();
+      Real wn = n[0] * n[0] * c[0] + n[1] * n[1] * c[1] + n[2] * n[2] * c[2];
+      if (spin) wn += n.dot(cr * n);
       if (!(wn > 0.0)) continue;  // both sides immovable
       Vec3 r = p.relative_increment(k);
       const Real g = n.dot(p.relative_position(k) + r) - k.target;
@@ -370,6 +429,7 @@ inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint>
       if (dl != 0.0) {
         p.apply(k, dl * n);
         r += dl * c.cwiseProduct(n);
+        if (spin) r += dl * (cr * n);
         k.lambda = lambda;
         worst = std::max(worst, std::abs(dl) * wn);
       }
@@ -377,7 +437,12 @@ inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint>
       // Stick: the 2 x 2 block of the compliance in the tangent plane, solved exactly.
       Vec3 t1, t2;
       detail::tangent_basis(n, t1, t2);
-      const Real a11 = t1.dot(c.cwiseProduct(t1)), a12 = t1.dot(c.cwiseProduct(t2)), a22 = t2.dot(c.cwiseProduct(t2));
+      Real a11 = t1.dot(c.cwiseProduct(t1)), a12 = t1.dot(c.cwiseProduct(t2)), a22 = t2.dot(c.cwiseProduct(t2));
+      if (spin) {
+        a11 += t1.dot(cr * t1);
+        a12 += t1.dot(cr * t2);
+        a22 += t2.dot(cr * t2);
+      }
       const Real det = a11 * a22 - a12 * a12;
       if (!(det > 0.0)) continue;
       const Real u1 = t1.dot(r), u2 = t2.dot(r);
@@ -390,7 +455,7 @@ inline LagrangeSolveResult solve_forward_increment(std::span<LagrangeConstraint>
       if (dt.squaredNorm() > 0.0) {
         p.apply(k, dt);
         k.tau = trial;
-        worst = std::max(worst, c.cwiseProduct(dt).norm());
+        worst = std::max(worst, spin ? Vec3(c.cwiseProduct(dt) + cr * dt).norm() : c.cwiseProduct(dt).norm());
       }
     }
     if (detail::end_sweep(result, sweep, worst, opt.tolerance)) break;
