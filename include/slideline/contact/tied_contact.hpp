@@ -8,28 +8,20 @@
 /// i.e. shell on shell, because the simulation does not integrate a dictated node's rotation:
 /// a shell slave on a solid master keeps its initial (zero) angular velocity).
 ///
-/// Kinematics: x_s = sum N_a x_a + d_s, v_s = sum N_a v_a + r_s, omega_s = sum N_a omega_a.
-/// d_s, the offset at tie time, turns with the master segment (tie_offset.hpp: its components in
-/// segment_frame are kept, d_s = F(x) d_local), so that a tied pair turning as a rigid body stays
-/// rigid; a round-off offset (the slave on the surface) is not carried: d_s stays as found, r_s = 0,
-/// and the tie computes exactly what it did before offsets turned.
-///
-/// The offset's rate r_s (docs/contact.md, "Tied offsets that turn"): the position reset makes the
-/// slave's step x_s^{n+1} - x_s^n = dt (v_p + (d_s^{n+1} - d_s^n) / dt); the slave's velocity
-/// carries the last completed step's rate, r_s^{n+1/2} = (d_s^n - d_s^{n-1}) / dt^{n-1/2} (one step
-/// behind, so that its change is known when the masters are accelerated: its sum over the steps
-/// telescopes, so the slave's integrated velocity stays within one step's change of its reset
-/// position, without drift). At the first cycle r_s is the deck's relative velocity v_s - v_p
-/// (a pair spun as a rigid body starts with r_s = omega x d_s, no impulse). Momentum: the slave's
-/// momentum changes by m_s (r_s^new - r_s^old) besides the masters' share; the masters give it up,
-/// the force g = -m_s (r_s^new - r_s^old) / dt_avg condensed with the slave's force (N_a g to each),
-/// so the total momentum sum m v (slaves at their own velocity) is conserved to round-off.
+/// Kinematics: x_s = sum N_a x_a + d_s, v_s = sum N_a v_a, omega_s = sum N_a omega_a. d_s, the
+/// offset at tie time, turns with the master segment (tie_offset.hpp: its components in
+/// segment_frame are kept, d_s = F(x) d_local, reset with the position every cycle), so that a tied
+/// pair turning as a rigid body stays rigid; a round-off offset (the slave on the surface) is not
+/// carried: d_s stays as found and the tie computes exactly what it did before offsets turned.
+/// The slave's velocity stays the master point's: the offset's own rate (omega x d_s) is left out
+/// (docs/contact.md, "Tied offsets that turn": a rate one step behind, the only one known when the
+/// masters are accelerated, made the pair unstable through the bulk viscosity).
 ///
 /// Interface force on the slave side: the force the tie applies to the slaves, sum (m_s a_s - f_s)
-/// with a_s = sum N_a a_a + (r_s^new - r_s^old) / dt_avg, i.e. sum (m_s sum N_a a_a - (f_s + g)); on
-/// the master side: what the condensation actually added to each master node, its force df_a less
-/// its mass dm_a times its final acceleration, sum (df_a - dm_a a_a) (equal and opposite to the
-/// slave total to round-off when the scatter is right: sum N_a = 1).
+/// with a_s = sum N_a a_a (masters' final accelerations); on the master side: what the condensation
+/// actually added to each master node, its force df_a less its mass dm_a times its final
+/// acceleration, sum (df_a - dm_a a_a) (equal and opposite to the slave total to round-off when the
+/// scatter is right: sum N_a = 1).
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -81,21 +73,17 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
       slaves_.push_back(links_[k].slave);
       for (int a = 0; a < 4; ++a) masters_.push_back(links_[k].master[a]);
     }
-    // Offsets that turn with the master segment (tie_offset.hpp): their frame components, the
-    // global offset at the last position reset and the one before, the rate in the slave's velocity.
+    // Offsets that turn with the master segment (tie_offset.hpp): their frame components and the
+    // global offset at the last position reset.
     carried_.assign(links_.size(), 0);
     offset_local_.assign(links_.size(), Vec3::Zero());
     offset_now_.assign(links_.size(), Vec3::Zero());
-    offset_before_.assign(links_.size(), Vec3::Zero());
-    rate_.assign(links_.size(), Vec3::Zero());
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const TiePoint& t = links_[k];
       if (!carry_tie_offset(master_, t, nodes.x, offset_local_[k])) continue;
       carried_[k] = 1;
-      offset_now_[k] = offset_before_[k] = carried_tie_offset(master_, t.segment, nodes.x, offset_local_[k]);
-      rate_[k] = nodes.v.get(t.slave) - tie_point_value(t, nodes.v);  // the deck's, until the first step
+      offset_now_[k] = t.offset;
     }
-    stepped_ = false;
     std::sort(masters_.begin(), masters_.end());
     masters_.erase(std::unique(masters_.begin(), masters_.end()), masters_.end());
     force_.assign(links_.size(), Vec3::Zero());
@@ -115,14 +103,8 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const TiePoint& t = links_[k];
       const Real ms = v.mass[t.slave];
-      Vec3 fs = v.force.get(t.slave);
-      if (carried_[k] && v.dt_avg > 0.0) {
-        // The offset's rate over the last step (none before the first: the deck's stays); the
-        // masters give up the momentum the slave's velocity gains with it.
-        const Vec3 rate = stepped_ ? Vec3((offset_now_[k] - offset_before_[k]) / dt_last_) : rate_[k];
-        fs -= (ms / v.dt_avg) * (rate - rate_[k]);
-        rate_[k] = rate;
-      }
+      const Vec3 fs = v.force.get(t.slave);
+
       mass_[k] = ms;
       force_[k] = fs;
       kinematic::scatter(t, v.mass, ms);
@@ -136,7 +118,6 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
       master_df_[m] = v.force.get(masters_[m]) - master_df_[m];
       master_dm_[m] = v.mass[masters_[m]] - master_dm_[m];
     }
-    if (v.dt_avg > 0.0) stepped_ = true;
   }
 
   void follow_velocities(NodalFields& nodes) override {
@@ -149,27 +130,23 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
       const TiePoint& t = links_[k];
       const Vec3 tie = mass_[k] * tie_point_value(t, nodes.a) - force_[k];
       slave += tie;
-      if (carried_[k]) nodes.v.set(t.slave, tie_point_value(t, nodes.v) + rate_[k]);
-      else nodes.v.set(t.slave, tie_point_value(t, nodes.v));
+      nodes.v.set(t.slave, tie_point_value(t, nodes.v));
       if (rotation_[k]) nodes.omega.set(t.slave, tie_point_value(t, nodes.omega));
     }
     slave_ = slave;
     master_total_ = master;
   }
 
-  /// dt: the position step just taken (time).
-  void follow_positions(NodalFields& nodes, Real dt) override {
+  void follow_positions(NodalFields& nodes, Real /*dt*/) override {
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const TiePoint& t = links_[k];
       if (!carried_[k]) {
         nodes.x.set(t.slave, tie_point_value(t, nodes.x) + t.offset);
         continue;
       }
-      offset_before_[k] = offset_now_[k];
       offset_now_[k] = carried_tie_offset(master_, t.segment, nodes.x, offset_local_[k]);
       nodes.x.set(t.slave, tie_point_value(t, nodes.x) + offset_now_[k]);
     }
-    dt_last_ = dt;
   }
 
   std::span<const Index> dictated_nodes() const override { return slaves_; }
@@ -203,10 +180,6 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
   std::vector<std::uint8_t> carried_;  ///< per link: its offset turns with the master segment
   std::vector<Vec3> offset_local_;     ///< per carried link: the offset in segment_frame (length)
   std::vector<Vec3> offset_now_;       ///< per carried link: the offset at the last position reset
-  std::vector<Vec3> offset_before_;    ///< per carried link: the offset at the reset before it
-  std::vector<Vec3> rate_;             ///< per carried link: the offset's rate in v_s (velocity)
-  Real dt_last_ = 0.0;                 ///< the last position step (time)
-  bool stepped_ = false;               ///< a step's condensation has run (rate_ from offsets)
 };
 
 /// Type 2: tied surfaces.
