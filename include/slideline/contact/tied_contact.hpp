@@ -104,7 +104,6 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
       const TiePoint& t = links_[k];
       const Real ms = v.mass[t.slave];
       const Vec3 fs = v.force.get(t.slave);
-
       mass_[k] = ms;
       force_[k] = fs;
       kinematic::scatter(t, v.mass, ms);
