@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slideline/contact/search/tie_offset.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
 
 namespace slideline {
@@ -41,6 +42,8 @@ void StickingTiebreakContact::initialize(const ContactContext& c) {
   kc_.assign(n, 0.0);
   tie_time_.assign(n, -1.0);
   force_.assign(n, Vec3::Zero());
+  carried_.assign(n, 0);
+  offset_local_.assign(n, Vec3::Zero());
   // Candidates: the slave side's nodes that are not also the master side's (a shared node is not
   // tied to itself), with their tributary areas on the slave surface.
   for (std::size_t i = 0; i < n; ++i)
@@ -85,6 +88,8 @@ void StickingTiebreakContact::tie(std::size_t i, const TiePoint& t, Real time, c
   state_[i] = State::tied;
   tie_[i] = t;
   tie_time_[i] = time;
+  // The offset turns with the master segment (tie_offset.hpp), where it is not round-off.
+  carried_[i] = carry_tie_offset(pass_->master(), t, nodes.x, offset_local_[i]) ? 1 : 0;
   held_node_[static_cast<std::size_t>(t.slave)] = 1;  // the pass leaves it from the next cycle
   ++tied_count_;
   // Tension and shear: kappa A_k (a uniform traction needs a uniform stretch); closing: the pass's
@@ -131,7 +136,8 @@ void StickingTiebreakContact::apply_forces(const NodalFields& nodes, const StepT
   for (std::size_t i = 0; i < n; ++i) {
     if (state_[i] != State::tied) continue;
     const TiePoint& t = tie_[i];
-    const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - t.offset;
+    const Vec3 offset = carried_[i] ? carried_tie_offset(surface, t.segment, nodes.x, offset_local_[i]) : t.offset;
+    const Vec3 d = nodes.x.get(t.slave) - tie_point_value(t, nodes.x) - offset;
     const Vec3 nk = segment_normal(surface, t.segment, nodes.x);
     const Real dn = d.dot(nk);
     Vec3 f = -k_[i] * d;

@@ -87,12 +87,7 @@ void TiebreakContact::initialize(const ContactContext& c) {
   carried_.assign(n, 0);
   offset_local_.assign(n, Vec3::Zero());
   for (std::size_t k = 0; k < n; ++k) {
-    const TiePoint& t = links_[k];
-    const Eigen::Matrix3d frame = segment_frame(master, t.segment, nodes.x);
-    if (!(t.offset.norm() > kCarriedOffset * segment_max_diagonal(master, t.segment, nodes.x)) || frame.isZero(0.0))
-      continue;
-    carried_[k] = 1;
-    offset_local_[k] = frame.transpose() * t.offset;
+    if (carry_tie_offset(master, links_[k], nodes.x, offset_local_[k])) carried_[k] = 1;
   }
   std::vector<Index> link_of(nodes.size(), -1);
   for (std::size_t k = 0; k < n; ++k) link_of[links_[k].slave] = static_cast<Index>(k);

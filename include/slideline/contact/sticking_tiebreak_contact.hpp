@@ -11,6 +11,9 @@
 ///   segment and shape functions), its reference state the touch: the stretch's zero is the point
 ///   on the surface, so the node's current penetration g is the tie's compression and the normal
 ///   force c k g goes on where the pass's k g left off (c k = the pass's spring on that segment).
+/// The stretch is x_s - x_point - d, d the offset at the tie (a touch's tangential remainder, a
+/// node tied at t = 0 off the surface): carried in the master segment's frame (tie_offset.hpp), so
+/// a tied pair that turns as a rigid body keeps its ties unstretched.
 /// Each tied node has an isotropic spring kappa A_k (kappa = the master segment's penalty stiffness
 /// per unit area f K A / V, as the other OPTIONs; A_k the node's tributary area on the slave
 /// surface, a quarter of each quadrilateral around it, a third of each triangle), its normal part
@@ -86,6 +89,8 @@ class StickingTiebreakContact final : public ContactAlgorithm, public ContactFor
   /// Per slave of the pass: tributary area on the slave surface (0 off the slave side).
   std::span<const Real> areas() const { return area_; }
   std::span<const Index> pass_slaves() const { return pass_->slaves(); }
+  /// The pass's surface (both sides' segments): the surface of ties()' segments.
+  const Surface& pass_surface() const { return pass_->master(); }
   /// Ties formed so far (at t = 0 included) and released so far (OPTION 3).
   Index tied_count() const { return tied_count_; }
   Index released_count() const { return released_count_; }
@@ -123,6 +128,10 @@ class StickingTiebreakContact final : public ContactAlgorithm, public ContactFor
   std::vector<Real> k_reverse_;
   std::vector<Real> tie_time_;  ///< per pass slave
   std::vector<Vec3> force_;     ///< per pass slave: tie force on the slave, last cycle
+  /// per pass slave: whether its tie's offset turns with the master segment, and its components in
+  /// the segment's frame at the tie (tie_offset.hpp; the stretch's zero turns with the segment).
+  std::vector<std::uint8_t> carried_;
+  std::vector<Vec3> offset_local_;
   Index tied_count_ = 0, released_count_ = 0;
   Real dt_ = std::numeric_limits<Real>::max();  ///< the ties' springs alone
   std::vector<Real> tie_inv2_;  ///< per pass slave: omega^2 / 4 of its tie's spring (0: never tied)

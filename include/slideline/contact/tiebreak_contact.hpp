@@ -57,6 +57,7 @@
 #include "slideline/contact/mixed_mode_cohesive_law.hpp"
 #include "slideline/contact/search/closest_point.hpp"
 #include "slideline/contact/search/contact_pairs.hpp"
+#include "slideline/contact/search/tie_offset.hpp"
 #include "slideline/contact/search/tie_search.hpp"
 #include "slideline/contact/shell_offset.hpp"
 #include "slideline/mesh/segment_geometry.hpp"
@@ -207,15 +208,13 @@ class TiebreakContact final : public ContactAlgorithm, public ContactForces {
   /// Link k's tie stretch at x: x_slave - x_point - the tie-time offset, carried in the master
   /// segment's frame (segment_frame: it turns with the segment, so a rigid rotation of a pair tied
   /// at a stand-off h does not stretch the tie by about h theta). An offset of round-off size
-  /// (below kCarriedOffset of the segment's diagonal: the slave on the surface) has no direction
+  /// (below kCarriedTieOffset of the segment's diagonal: the slave on the surface) has no direction
   /// to carry and is subtracted as it was at tie time.
   Vec3 tie_stretch(std::size_t k, const Vec3Field& x) const {
     const TiePoint& t = links_[k];
     if (!carried_[k]) return x.get(t.slave) - tie_point_value(t, x) - t.offset;
-    return x.get(t.slave) - tie_point_value(t, x) - segment_frame(master(), t.segment, x) * offset_local_[k];
+    return x.get(t.slave) - tie_point_value(t, x) - carried_tie_offset(master(), t.segment, x, offset_local_[k]);
   }
-  /// Offsets longer than this fraction of the master segment's diagonal are carried in its frame.
-  static constexpr Real kCarriedOffset = 1e-9;
   /// offset_shells: the tie search's options with the shell offsets (per master segment and per
   /// node index; the tables are filled here and must outlive the options).
   TieSearchOptions offset_search(const Surface& onto, const ShellOffsetRule& onto_rule, const Surface& from,

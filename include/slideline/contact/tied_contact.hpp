@@ -8,19 +8,29 @@
 /// i.e. shell on shell, because the simulation does not integrate a dictated node's rotation:
 /// a shell slave on a solid master keeps its initial (zero) angular velocity).
 ///
-/// Kinematics: x_s = sum N_a x_a + d_s (d_s, the offset at tie time, kept constant),
-/// v_s = sum N_a v_a, omega_s = sum N_a omega_a. Interface force on the slave side: the force the
-/// tie applies to the slaves, sum (m_s a_s - f_s) with a_s = sum N_a a_a; on the master side: what
-/// the condensation actually added to each master node, its force df_a less its mass dm_a times its
-/// final acceleration, sum (df_a - dm_a a_a) (equal and opposite to the slave total to round-off
-/// when the scatter is right: sum N_a = 1).
+/// Kinematics: x_s = sum N_a x_a + d_s, v_s = sum N_a v_a, omega_s = sum N_a omega_a. d_s, the
+/// offset at tie time, turns with the master segment (tie_offset.hpp: its components in
+/// segment_frame are kept, d_s = F(x) d_local, reset with the position every cycle), so that a tied
+/// pair turning as a rigid body stays rigid; a round-off offset (the slave on the surface) is not
+/// carried: d_s stays as found and the tie computes exactly what it did before offsets turned.
+/// The slave's velocity stays the master point's: the offset's own rate (omega x d_s) is left out
+/// (docs/contact.md, "Tied offsets that turn": a rate one step behind, the only one known when the
+/// masters are accelerated, made the pair unstable through the bulk viscosity).
+///
+/// Interface force on the slave side: the force the tie applies to the slaves, sum (m_s a_s - f_s)
+/// with a_s = sum N_a a_a (masters' final accelerations); on the master side: what the condensation
+/// actually added to each master node, its force df_a less its mass dm_a times its final
+/// acceleration, sum (df_a - dm_a a_a) (equal and opposite to the slave total to round-off when the
+/// scatter is right: sum N_a = 1).
 #include <algorithm>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "slideline/contact/contact_algorithm.hpp"
 #include "slideline/contact/enforcement/kinematic.hpp"
+#include "slideline/contact/search/tie_offset.hpp"
 #include "slideline/contact/search/tie_search.hpp"
 #include "slideline/core/error.hpp"
 #include "slideline/mesh/surface.hpp"
@@ -62,6 +72,17 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
                          " or its master nodes have no rotational degrees of freedom (shells required)");
       slaves_.push_back(links_[k].slave);
       for (int a = 0; a < 4; ++a) masters_.push_back(links_[k].master[a]);
+    }
+    // Offsets that turn with the master segment (tie_offset.hpp): their frame components and the
+    // global offset at the last position reset.
+    carried_.assign(links_.size(), 0);
+    offset_local_.assign(links_.size(), Vec3::Zero());
+    offset_now_.assign(links_.size(), Vec3::Zero());
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+      const TiePoint& t = links_[k];
+      if (!carry_tie_offset(master_, t, nodes.x, offset_local_[k])) continue;
+      carried_[k] = 1;
+      offset_now_[k] = t.offset;
     }
     std::sort(masters_.begin(), masters_.end());
     masters_.erase(std::unique(masters_.begin(), masters_.end()), masters_.end());
@@ -115,8 +136,16 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
     master_total_ = master;
   }
 
-  void follow_positions(NodalFields& nodes) override {
-    for (const TiePoint& t : links_) nodes.x.set(t.slave, tie_point_value(t, nodes.x) + t.offset);
+  void follow_positions(NodalFields& nodes, Real /*dt*/) override {
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+      const TiePoint& t = links_[k];
+      if (!carried_[k]) {
+        nodes.x.set(t.slave, tie_point_value(t, nodes.x) + t.offset);
+        continue;
+      }
+      offset_now_[k] = carried_tie_offset(master_, t.segment, nodes.x, offset_local_[k]);
+      nodes.x.set(t.slave, tie_point_value(t, nodes.x) + offset_now_[k]);
+    }
   }
 
   std::span<const Index> dictated_nodes() const override { return slaves_; }
@@ -129,6 +158,10 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
   /// Slave nodes that projected outside every master segment and were left free.
   const std::vector<Index>& untied_nodes() const { return untied_nodes_; }
   const Surface& master_surface() const { return master_; }
+  /// Per link: whether its offset turns with the master segment, and the offset now (length; the
+  /// tie-time offset where not carried).
+  bool offset_carried(std::size_t k) const { return carried_[k] != 0; }
+  Vec3 offset_now(std::size_t k) const { return carried_[k] ? offset_now_[k] : links_[k].offset; }
 
  private:
   std::string name_;
@@ -143,6 +176,9 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
   std::vector<Vec3> master_df_;  ///< per entry of masters_: force the last condensation added
   std::vector<Real> master_dm_;  ///< per entry of masters_: mass the last condensation added
   Vec3 slave_ = Vec3::Zero(), master_total_ = Vec3::Zero();
+  std::vector<std::uint8_t> carried_;  ///< per link: its offset turns with the master segment
+  std::vector<Vec3> offset_local_;     ///< per carried link: the offset in segment_frame (length)
+  std::vector<Vec3> offset_now_;       ///< per carried link: the offset at the last position reset
 };
 
 /// Type 2: tied surfaces.
