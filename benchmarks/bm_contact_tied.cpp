@@ -55,7 +55,7 @@ void BM_TiedCycle(benchmark::State& state) {
   for (auto _ : state) {
     tie.condense(nodes, CondenseView{mass, force, rot, moment});
     tie.follow_velocities(nodes);
-    tie.follow_positions(nodes, 1.0);
+    tie.follow_positions(nodes);
     benchmark::DoNotOptimize(nodes.x.x.data());
   }
   state.counters["slave_nodes"] = static_cast<double>(slaves.size());

@@ -416,7 +416,7 @@ void Simulation::advance(const StepPlan& plan) {
       contacts_.follow_velocities(nodes_);
       ledger_.add_contact_work(exchange_->sum_reset_work(translational_kinetic_energy(nodes_, dictated) - k_before));
     }
-    contacts_.follow_positions(nodes_, dt_);
+    contacts_.follow_positions(nodes_);
   }
 }
 

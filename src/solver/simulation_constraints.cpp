@@ -14,7 +14,7 @@ void Simulation::apply_constraints(const StepPlan& plan) {
   //    immovable; then 2-3 again so that rigid bodies carry the contact forces on their nodes;
   // 5. support reactions from the final loads.
   // Tied slaves follow their masters after the velocity and position updates.
-  if (has_contact()) condense_ties(plan.dt_avg);
+  if (has_contact()) condense_ties();
   constrain_rigid_bodies(plan);
   prescribe_supports(plan);
   if (has_contact()) {
@@ -41,7 +41,7 @@ ConstraintLoads Simulation::constraint_loads() const {
   return ConstraintLoads{effective_mass(), nodes_, &f_total_, &m_total_};
 }
 
-void Simulation::condense_ties(Real dt_avg) {
+void Simulation::condense_ties() {
   // Total loads: the nodes' own, then tied slaves moved onto their masters.
   const Index n = static_cast<Index>(nodes_.size());
   const bool condensing = contacts_.condenses();
@@ -56,7 +56,7 @@ void Simulation::condense_ties(Real dt_avg) {
     }
   });
   if (!condensing) return;
-  contacts_.condense(nodes_, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_, dt_avg});
+  contacts_.condense(nodes_, CondenseView{mass_eff_, f_total_, rot_inertia_eff_, m_total_});
   const auto kinds = roles_.kinds();
   parallel_for(n, [&](Index i) {
     if (kinds[i] == kFree) return;  // unchanged by the condensation

@@ -70,9 +70,6 @@ struct CondenseView {
   Vec3Field& force;             ///< total force (starts as f_int + f_ext + f_contact)
   std::span<Real> rot_inertia;  ///< effective rotary inertia (starts as NodalFields::rot_inertia)
   Vec3Field& moment;            ///< total moment
-  /// The step's dt_avg (time; the velocity update's v^{n+1/2} = v^{n-1/2} + dt_avg a): 0 when the
-  /// condensation is for the masses only (at initialisation), where a tie changes no state.
-  Real dt_avg = 0.0;
 };
 
 /// The Lagrange-multiplier phase: accelerations at t^n are formed and every other constraint
@@ -124,9 +121,8 @@ class KinematicTie {
   virtual void condense(const NodalFields& nodes, CondenseView view) = 0;
   /// After the velocity update: tied slaves take the velocity of their master point.
   virtual void follow_velocities(NodalFields& nodes) = 0;
-  /// After the position update (and after rigid bodies reset their nodes); dt: the position step
-  /// just taken, x^{n+1} = x^n + dt v^{n+1/2} (time).
-  virtual void follow_positions(NodalFields& nodes, Real dt) = 0;
+  /// After the position update (and after rigid bodies reset their nodes).
+  virtual void follow_positions(NodalFields& nodes) = 0;
   /// Nodes whose motion the tie dictates (its slaves): the simulation books the work of the forces
   /// that move them to the contact term.
   virtual std::span<const Index> dictated_nodes() const = 0;

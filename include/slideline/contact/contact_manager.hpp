@@ -114,9 +114,9 @@ class ContactManager {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
       if (active(k) && phases_[k].tie) phases_[k].tie->follow_velocities(nodes);
   }
-  void follow_positions(NodalFields& nodes, Real dt) {
+  void follow_positions(NodalFields& nodes) {
     for (std::size_t k = 0; k < algorithms_.size(); ++k)
-      if (active(k) && phases_[k].tie) phases_[k].tie->follow_positions(nodes, dt);
+      if (active(k) && phases_[k].tie) phases_[k].tie->follow_positions(nodes);
   }
   /// Energy dissipated by friction in all interfaces so far (a dead interface keeps its share).
   Real friction_work() const {

@@ -136,7 +136,7 @@ class TiedInterface final : public ContactAlgorithm, public KinematicTie {
     master_total_ = master;
   }
 
-  void follow_positions(NodalFields& nodes, Real /*dt*/) override {
+  void follow_positions(NodalFields& nodes) override {
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const TiePoint& t = links_[k];
       if (!carried_[k]) {

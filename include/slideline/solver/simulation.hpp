@@ -157,7 +157,7 @@ class Simulation {
 
   // The constraint phase (simulation_constraints.cpp), in the order apply_constraints documents.
   void apply_constraints(const StepPlan& plan);
-  void condense_ties(Real dt_avg);
+  void condense_ties();
   void constrain_rigid_bodies(const StepPlan& plan);
   void prescribe_supports(const StepPlan& plan);
   void compute_reactions();

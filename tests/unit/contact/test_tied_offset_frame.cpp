@@ -72,7 +72,7 @@ void check_turning_offsets(const Eigen::Matrix3d& place) {
   const Real a1 = 0.4, a2 = 0.9;  // rad
   tie.condense(nodes, CondenseView{mass, force, rot, moment, dt});
   put(rotation(a1));
-  tie.follow_positions(nodes, dt);
+  tie.follow_positions(nodes);
   for (std::size_t k = 0; k < 4; ++k) {
     const TiePoint& t = tie.links()[k];
     const Vec3 want = tie_point_value(t, nodes.x) + (tie.offset_carried(k) ? Vec3(rotation(a1) * t.offset) : t.offset);
@@ -84,7 +84,7 @@ void check_turning_offsets(const Eigen::Matrix3d& place) {
   // A second turn, from a1 to a2, with a velocity field: the slave takes its master point's
   // velocity (the offset's own rate is left out), exactly as a zero-offset tie.
   put(rotation(a2));
-  tie.follow_positions(nodes, dt);
+  tie.follow_positions(nodes);
   for (std::size_t i = 0; i < n; ++i) nodes.v.set(static_cast<Index>(i), Vec3(0.1 * Real(i), -0.2, 0.05 * Real(i * i)));
   tie.condense(nodes, CondenseView{mass, force, rot, moment, dt});
   tie.follow_velocities(nodes);

@@ -87,7 +87,7 @@ class StandInTie final : public ContactAlgorithm, public KinematicTie {
   void follow_velocities(NodalFields& nodes) override {
     for (const auto& l : links_) nodes.v.set(l.slave, point(nodes.v, l));
   }
-  void follow_positions(NodalFields& nodes, Real /*dt*/) override {
+  void follow_positions(NodalFields& nodes) override {
     for (std::size_t k = 0; k < links_.size(); ++k)
       nodes.x.set(links_[k].slave, point(nodes.x, links_[k]) + offset_[k]);
   }
