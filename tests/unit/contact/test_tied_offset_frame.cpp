@@ -70,7 +70,7 @@ void check_turning_offsets(const Eigen::Matrix3d& place) {
   force.resize(n, 0.0);
   moment.resize(n, 0.0);
   const Real a1 = 0.4, a2 = 0.9;  // rad
-  tie.condense(nodes, CondenseView{mass, force, rot, moment, dt});
+  tie.condense(nodes, CondenseView{mass, force, rot, moment});
   put(rotation(a1));
   tie.follow_positions(nodes);
   for (std::size_t k = 0; k < 4; ++k) {
@@ -86,7 +86,7 @@ void check_turning_offsets(const Eigen::Matrix3d& place) {
   put(rotation(a2));
   tie.follow_positions(nodes);
   for (std::size_t i = 0; i < n; ++i) nodes.v.set(static_cast<Index>(i), Vec3(0.1 * Real(i), -0.2, 0.05 * Real(i * i)));
-  tie.condense(nodes, CondenseView{mass, force, rot, moment, dt});
+  tie.condense(nodes, CondenseView{mass, force, rot, moment});
   tie.follow_velocities(nodes);
   for (std::size_t k = 0; k < 4; ++k) {
     const TiePoint& t = tie.links()[k];
