@@ -57,8 +57,7 @@ void check_turning_offsets(const Eigen::Matrix3d& place) {
   }
   EXPECT_EQ(carried, 2);
   // Three rigid placements of every node (a turn about an axis in the face's plane, so the gap's
-  // direction turns), the step between them dt.
-  const Real dt = 1e-3;
+  // direction turns).
   const Vec3 c = place * Vec3(0.3, 0.5, 0.6), axis = place * Vec3(1.0, 0.0, 0.4).normalized();
   auto rotation = [&](Real a) { return Eigen::AngleAxisd(a, axis).toRotationMatrix().eval(); };
   auto put = [&](const Eigen::Matrix3d& q) {
