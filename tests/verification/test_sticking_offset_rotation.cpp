@@ -50,17 +50,8 @@ StuckSpin run_stuck(const Frame& frame) {
   model::Model m;
   add_elastic_part(m, 1, 1.0, 1e4, 0.3, 4);
   add_elastic_part(m, 2, 1.0, 1e4, 0.3, 4);
-  const BoxIds l = add_box(m, 1, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.5, 1.0), {2, 1, 2}, frame);
-  const BoxIds u = add_box(m, 2, Vec3(0.0, 0.5 + kGap, 0.0), Vec3(1.0, 0.5, 1.0), {2, 1, 2}, frame);
-  model::SegmentSet master{1, "master", {}, {}};
-  model::SegmentSet slave{2, "slave", {}, {}};
-  for (int k = 0; k < 2; ++k)
-    for (int i = 0; i < 2; ++i) {
-      master.segments.push_back({l.at(i, 1, k), l.at(i, 1, k + 1), l.at(i + 1, 1, k + 1), l.at(i + 1, 1, k)});
-      slave.segments.push_back({u.at(i, 0, k), u.at(i + 1, 0, k), u.at(i + 1, 0, k + 1), u.at(i, 0, k + 1)});
-    }
-  m.segment_sets.push_back(master);
-  m.segment_sets.push_back(slave);
+  const test_support::TiebreakBlocks blocks = test_support::add_gapped_blocks(m, frame, kGap);
+  const BoxIds& l = blocks.lower;
   model::Contact card = test_support::tiebreak_card("option 1, spun", 1);
   card.ssid = 2;
   card.msid = 1;

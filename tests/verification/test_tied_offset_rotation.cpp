@@ -36,6 +36,7 @@
 #include "slideline/contact/tied_contact.hpp"
 
 #include "slideline/mesh/segment_geometry.hpp"
+#include "tiebreak_blocks.hpp"
 
 namespace slideline {
 namespace {
@@ -68,17 +69,9 @@ SpinResult run_spin(TieKind kind, const Frame& frame, Real end, Real gap = kGap)
   model::Model m;
   add_elastic_part(m, 1, kRho, kE, kNu);
   add_elastic_part(m, 2, kRho, kE, kNu);
-  const BoxIds l = add_box(m, 1, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.5, 1.0), {2, 1, 2}, frame);
-  const BoxIds u = add_box(m, 2, Vec3(0.0, 0.5 + gap, 0.0), Vec3(1.0, 0.5, 1.0), {2, 1, 2}, frame);
-  model::SegmentSet master{1, "master", {}, {}};
-  model::SegmentSet slave{2, "slave", {}, {}};
-  for (int k = 0; k < 2; ++k)
-    for (int i = 0; i < 2; ++i) {
-      master.segments.push_back({l.at(i, 1, k), l.at(i, 1, k + 1), l.at(i + 1, 1, k + 1), l.at(i + 1, 1, k)});
-      slave.segments.push_back({u.at(i, 0, k), u.at(i + 1, 0, k), u.at(i + 1, 0, k + 1), u.at(i, 0, k + 1)});
-    }
-  m.segment_sets.push_back(master);
-  m.segment_sets.push_back(slave);
+  const test_support::TiebreakBlocks blocks = test_support::add_gapped_blocks(m, frame, gap);
+  const BoxIds& l = blocks.lower;
+  const BoxIds& u = blocks.upper;
   m.node_sets.push_back({3, "slave_nodes", u.face_j(0), {}});
   model::Contact card;
   {

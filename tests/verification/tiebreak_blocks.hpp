@@ -30,6 +30,27 @@ inline TiebreakBlocks add_tiebreak_blocks(model::Model& m, const Frame& frame, R
   return b;
 }
 
+/// Two blocks 1 x 0.5 x 1 of 2 x 1 x 2 hexahedra in `frame`: part 1 below, part 2 `gap` above it
+/// (both parts already added); segment set 1 the lower block's top face (master), set 2 the upper
+/// block's bottom face (slave).
+inline TiebreakBlocks add_gapped_blocks(model::Model& m, const Frame& frame, Real gap) {
+  TiebreakBlocks b;
+  b.lower = add_box(m, 1, Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.5, 1.0), {2, 1, 2}, frame);  // the lower first
+  b.upper = add_box(m, 2, Vec3(0.0, 0.5 + gap, 0.0), Vec3(1.0, 0.5, 1.0), {2, 1, 2}, frame);
+  const BoxIds& l = b.lower;
+  const BoxIds& u = b.upper;
+  model::SegmentSet master{1, "master", {}, {}};
+  model::SegmentSet slave{2, "slave", {}, {}};
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 2; ++i) {
+      master.segments.push_back({l.at(i, 1, k), l.at(i, 1, k + 1), l.at(i + 1, 1, k + 1), l.at(i + 1, 1, k)});
+      slave.segments.push_back({u.at(i, 0, k), u.at(i + 1, 0, k), u.at(i + 1, 0, k + 1), u.at(i, 0, k + 1)});
+    }
+  m.segment_sets.push_back(master);
+  m.segment_sets.push_back(slave);
+  return b;
+}
+
 /// The tiebreak card between segment sets 1 (slave) and 2 (master), OPTION `option`, named
 /// `what` in its keyword (for messages).
 inline model::Contact tiebreak_card(const std::string& what, int option) {
