@@ -63,9 +63,8 @@ NodalEnergySums update_velocities(NodalFields& nodes, const NodeRoles& roles, st
                                   const VelocityStep& s, std::span<NodalEnergySums> chunk_sums) {
   const Index n = static_cast<Index>(nodes.size());
   const Real dt_avg = s.dt_avg;
-  // The kinetic energy at t^n is that of the mean of the half-step velocities, except at t = 0:
-  // there the initial velocity is v(0) itself (the first step is a half step from it), and the
-  // mean would put an O(dt) offset into the balance that never goes away (book_dof).
+  // The kinetic energy at t^n is that of the mean of the half-step velocities, v(0) itself at
+  // t = 0 (book_dof).
   const bool with_contact = s.with_contact;
   const auto kinds = roles.kinds();
   parallel_for_chunks(n, [&](Index b, Index end, Index chunk) {

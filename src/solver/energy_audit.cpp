@@ -23,13 +23,10 @@ NodalEnergySums dictated_node_sums(const NodalFields& nodes, std::span<const Ind
     const auto book = [&](Real m, Real vold, Real vnew, Real fi, Real fe) {
       const DofMotion d = book_dof(e, m, vold, vnew, fi, fe, step);
       const Real f = m * (vnew - vold) / step.dt_avg - fi - fe;  // the tie's force on the dof
+      // On the first cycle book_dof's d.dnext is the travel under the impulse f dt_avg, so a slave
+      // that starts with a velocity other than its master point's and is stopped dead there books
+      // what the impulse does (docs/contact.md, "A tie that starts with a relative velocity").
       e.contact.add(f, d.dprev, d.dnext);
-      // The first cycle is a half step from v(0): the sums book the tie's impulse J = f dt_avg over
-      // x^1 - x^0 only, where it does J (v(0) + v^{1/2}) / 2 (a slave that starts with a velocity
-      // other than its master point's is stopped dead there); the difference, as the rigid wall's
-      // first_cycle_work (docs/solver.md, "A node on the wall at t = 0"; docs/contact.md, "A tie
-      // that starts with a relative velocity"), booked with the step (from the next report on).
-      if (step.first && f != 0.0) e.contact.after += f * step.dt_avg * 0.5 * (vold + vnew) - f * d.dnext;
     };
     for (int c = 0; c < 3; ++c)
       book(nodes.mass[i], v_old[k][c], nodes.v[c][i], nodes.f_int[c][i], nodes.f_ext[c][i]);

@@ -30,22 +30,6 @@ void RigidWall::initialize(NodalFields& nodes, std::span<const Real>) {
                        " starts behind the wall (the normal points from XT YT ZT to XH YH ZH, towards the "
                        "nodes)");
   }
-  first_cycle_ = true;
-  impulse0_.assign(spec_.nodes.size(), Vec3::Zero());
-  velocity0_.assign(spec_.nodes.size(), Vec3::Zero());
-}
-
-Real RigidWall::first_cycle_work(const NodalFields& nodes) const {
-  if (!first_cycle_ || !(dt_avg0_ > 0.0)) return 0.0;
-  Real w = 0.0;
-  for (std::size_t k = 0; k < spec_.nodes.size(); ++k) {
-    const Vec3& j = impulse0_[k];
-    if (j.isZero(0.0)) continue;
-    const Vec3 v_half = nodes.v.get(spec_.nodes[k]);
-    // What the impulse does, less what the velocity update booked for its force J / dt_avg.
-    w += j.dot(0.5 * (velocity0_[k] + v_half)) - j.dot(v_half) * (0.5 * dt_next0_ / dt_avg0_);
-  }
-  return w;
 }
 
 Vec3 RigidWall::velocity_change(std::size_t k, const NodalFields& nodes, Real dt_avg, Real dt_next) const {
@@ -90,12 +74,6 @@ void RigidWall::constrain_accelerations(const ConstraintLoads& loads, NodalField
     }
     force_ -= f;
     ++in_contact_;
-    if (first_cycle_) {
-      if (impulse0_[k].isZero(0.0)) velocity0_[k] = nodes.v.get(i);
-      impulse0_[k] += m * dv;
-      dt_avg0_ = loads.dt_avg;
-      dt_next0_ = loads.dt_next;
-    }
   }
 }
 

@@ -382,15 +382,6 @@ void Simulation::book_energies(NodalEnergySums sums) {
   exchange_->sum_energies(sums, friction);
   ledger_.book(sums, cycle_ == 0);
   ledger_.set_friction(friction);
-  if (cycle_ == 0 && !constraints_.empty()) {
-    // An impulse at t = 0 (a rigid wall stopping a node that starts on it): the part of its work
-    // the first cycle's half step does not book (NodalConstraint::first_cycle_work).
-    Real w = 0.0;
-    for (const auto& c : constraints_) w += c->first_cycle_work(nodes_);
-    // Exchange point 3 (exchange.hpp): a sum over all processes, as the resets' work.
-    w = exchange_->sum_reset_work(w);
-    if (w != 0.0) ledger_.add_external_work(w);
-  }
 }
 
 void Simulation::advance(const StepPlan& plan) {

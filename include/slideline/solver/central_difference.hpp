@@ -39,7 +39,9 @@ NodalEnergySums update_velocities(NodalFields& nodes, const NodeRoles& roles, st
 struct DofMotion {
   Real vbar;   ///< (v^{n-1/2} + v^{n+1/2}) / 2
   Real dprev;  ///< half of x^n - x^{n-1}
-  Real dnext;  ///< half of x^{n+1} - x^n
+  /// Half of x^{n+1} - x^n; on the first cycle dt_avg (v(0) + v^{1/2}) / 2, the travel of a node
+  /// taken from v(0) to v^{1/2} by a constant force over the half step dt_avg = dt / 2.
+  Real dnext;
 };
 
 /// Books into `e` the kinetic energy at t^n of one degree of freedom of mass (or rotary inertia)
@@ -47,9 +49,20 @@ struct DofMotion {
 /// velocity), and the work halves of its internal (`fi`) and external (`fe`) loads; returns its
 /// motion for the works the caller books next. The one rule of the velocity update's energy sums
 /// (update_velocities, tied slaves in energy_audit.hpp).
+///
+/// With these sums the balance of a linear elastic model at a constant step is exactly
+/// sum m (v^{n+1/2} - v^{n-1/2})^2 / 8 = sum (f^n dt)^2 / (8 m): the mean-velocity kinetic energy
+/// exceeds m v^{n-1/2} v^{n+1/2} / 2, which the central difference conserves with the trapezoid's
+/// works, by that much (docs/solver.md, "The discrete energy identity"). It is bounded by
+/// (omega dt)^2 / 4 of the energy of a mode of frequency omega and grows with a mode that
+/// diverges by reversing its sign every step, which is what makes the balance an instability
+/// detector. The first cycle is a half step from v(0): its forces are booked over
+/// dnext = dt_avg (v(0) + v^{1/2}) / 2, the travel under a constant force, which leaves no offset
+/// (over dt v^{1/2} / 2 the balance kept -(f^0 dt)^2 / (8 m) for ever).
 inline DofMotion book_dof(NodalEnergySums& e, Real m, Real vold, Real vnew, Real fi, Real fe,
                           const VelocityStep& s) {
-  const DofMotion d{0.5 * (vold + vnew), 0.5 * s.dt_prev * vold, 0.5 * s.dt_next * vnew};
+  const DofMotion d{0.5 * (vold + vnew), 0.5 * s.dt_prev * vold,
+                    s.first ? s.dt_avg * 0.5 * (vold + vnew) : 0.5 * s.dt_next * vnew};
   const Real vk = s.first ? vold : d.vbar;
   e.kinetic += 0.5 * m * vk * vk;
   e.stress.add(-fi, d.dprev, d.dnext);

@@ -108,21 +108,28 @@ class EnergyLedger {
   void reset() { *this = EnergyLedger{}; }
 
   /// Element-side powers at t^n (hourglass, bulk viscosity, stiffness damping) over the step `dt`
-  /// that ends at t^n (0 on the first evaluation).
+  /// that ends at t^n (0 on the first evaluation). Reported from the next book() on: the forces at
+  /// t^n are evaluated at the end of the cycle before, so the report stays a snapshot of t^n
+  /// between two cycles.
   void add_element_powers(Real hourglass_power, Real viscous_power, Real damping_power, Real dt) {
-    report_.hourglass += hourglass_power * dt;
-    report_.bulk_viscosity += viscous_power * dt;
+    hourglass_ += hourglass_power * dt;
+    bulk_viscosity_ += viscous_power * dt;
     element_damping_ += damping_power * dt;
   }
   /// Erosion: the stress and hourglass work that the elements deleted at this force evaluation
-  /// held (energies): moved from the internal and hourglass terms to the eroded ones.
+  /// held (energies): moved from the internal and hourglass terms to the eroded ones (from the
+  /// next book() on, as add_element_powers).
   void add_eroded(Real internal, Real hourglass) {
-    report_.eroded_internal += internal;
-    report_.eroded_hourglass += hourglass;
-    report_.hourglass -= hourglass;
+    eroded_internal_ += internal;
+    eroded_hourglass_ += hourglass;
+    hourglass_ -= hourglass;
   }
   /// Books one velocity update's sums; `first` on the first cycle (sets kinetic0).
   void book(const NodalEnergySums& s, bool first) {
+    report_.hourglass = hourglass_;
+    report_.bulk_viscosity = bulk_viscosity_;
+    report_.eroded_internal = eroded_internal_;
+    report_.eroded_hourglass = eroded_hourglass_;
     report_.kinetic = s.kinetic;
     if (first) report_.kinetic0 = s.kinetic;
     report_.external = external_.at_n(s.external);
@@ -144,9 +151,6 @@ class EnergyLedger {
   void add_mass_scaling_work(Real w) { report_.mass_scaling += w; }
   /// Work done on constrained nodes outside the velocity update (a rigid body's velocity reset).
   void add_constraint_work(Real w) { constraint_.committed += w; }
-  /// External work the velocity update did not book (a rigid wall's impulse at t = 0:
-  /// NodalConstraint::first_cycle_work); reported from the next record on.
-  void add_external_work(Real w) { external_.committed += w; }
   /// Work done by contact outside the velocity update (a tie resetting its slaves).
   void add_contact_work(Real w) { contact_.committed += w; }
   /// The friction dissipation reported by the interfaces (a running total).
@@ -163,7 +167,9 @@ class EnergyLedger {
     void commit(const WorkHalves& h) { committed += h.before + h.after; }
   };
   Accumulator stress_, external_, contact_, damping_, support_, constraint_;
-  Real element_damping_ = 0.0;
+  /// The element-side terms as of the last force evaluation (report_ takes them at book()).
+  Real hourglass_ = 0.0, bulk_viscosity_ = 0.0, element_damping_ = 0.0;
+  Real eroded_internal_ = 0.0, eroded_hourglass_ = 0.0;
   Real contact_work_ = 0.0;
   EnergyReport report_;
 };

@@ -52,14 +52,6 @@ class NodalConstraint {
   virtual void constrain_accelerations(const ConstraintLoads& loads, NodalFields& nodes, Real t) = 0;
   /// Corrects positions and velocities after the position update.
   virtual void after_positions(std::span<const Real> mass, NodalFields& nodes, Real t) = 0;
-  /// The work of the constraint's loads in the first cycle that the velocity update's sums do not
-  /// book (external work; 0 unless the constraint applies an impulse at t = 0). Called once, right
-  /// after the first velocity update (nodes.v = v^{1/2}). The first cycle is a half step from v(0):
-  /// the trapezoid books a force f over x^1 - x^0 only, f dt_avg v^{1/2}, while an impulse
-  /// J = f dt_avg that takes a node from v(0) to v^{1/2} does the work J (v(0) + v^{1/2}) / 2 (what
-  /// the trapezoid books for an impulse on any later cycle): a node stopped dead at t = 0 loses
-  /// 1/2 m v(0)^2 that the sums would book as nothing (docs/solver.md, "Rigid walls").
-  virtual Real first_cycle_work(const NodalFields& /*nodes*/) const { return 0.0; }
   /// The nodes whose motion the constraint dictates (internal indices). The simulation books the
   /// work it does on them (EnergyReport::constraint); a hook that only adds loads lists none.
   virtual std::span<const Index> constrained_nodes() const { return {}; }

@@ -42,12 +42,7 @@ class RigidWall final : public NodalConstraint {
   /// adds the wall's force on them to f_ext (so the energy audit books its work as external work).
   /// A second call in the same cycle adds only what is still needed.
   void constrain_accelerations(const ConstraintLoads& loads, NodalFields& nodes, Real t) override;
-  /// Ends the first cycle (first_cycle_work's record is no longer kept up).
-  void after_positions(std::span<const Real>, NodalFields&, Real) override { first_cycle_ = false; }
-  /// The first cycle's impulses J_k on the nodes the wall stops at t = 0 do the work
-  /// J_k (v_k(0) + v_k^{1/2}) / 2; the velocity update books J_k / dt_avg (dt_next / 2) v_k^{1/2}:
-  /// returns the difference (NodalConstraint::first_cycle_work).
-  Real first_cycle_work(const NodalFields& nodes) const override;
+  void after_positions(std::span<const Real>, NodalFields&, Real) override {}
   void append_output_names(std::vector<std::string>& names) const override;
   /// force: the force the nodes exert on the wall (global); normal_force: its normal component
   /// (>= 0 pushing the wall), the magnitude of its tangential part, the nodes in contact.
@@ -67,11 +62,6 @@ class RigidWall final : public NodalConstraint {
   Vec3 force_ = Vec3::Zero();
   Index in_contact_ = 0;
   Real cycle_time_ = -1.0;  ///< the t of the sums above (a second call in the cycle adds to them)
-  /// The first cycle (from initialize() to the first after_positions()): per slave node, the
-  /// wall's impulse m dv and the velocity v(0) before it, and the cycle's dt_avg and dt_next.
-  bool first_cycle_ = false;
-  std::vector<Vec3> impulse0_, velocity0_;
-  Real dt_avg0_ = 0.0, dt_next0_ = 0.0;
 };
 
 }  // namespace slideline
