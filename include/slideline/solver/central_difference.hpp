@@ -50,7 +50,7 @@ struct DofMotion {
 /// motion for the works the caller books next. The one rule of the velocity update's energy sums
 /// (update_velocities, tied slaves in energy_audit.hpp).
 ///
-/// With these sums the balance of a linear elastic model at a constant step is exactly
+/// With these sums the balance of any model at a constant step is exactly
 /// sum m (v^{n+1/2} - v^{n-1/2})^2 / 8 = sum (f^n dt)^2 / (8 m): the mean-velocity kinetic energy
 /// exceeds m v^{n-1/2} v^{n+1/2} / 2, which the central difference conserves with the trapezoid's
 /// works, by that much (docs/solver.md, "The discrete energy identity"). It is bounded by
