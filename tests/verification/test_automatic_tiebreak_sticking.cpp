@@ -119,6 +119,16 @@ DriveResult run_drive(const DriveCase& dc) {
     m.prescribed_motions.push_back(p);
   }
   m.termination.endtim = end;
+  // The run's energy stop (5 % of the largest energy in play by default) is set to 50 %: this test
+  // judges the balance itself, after the touch, against the work done then (r.energy below). The
+  // energy in play at the touch is small (the drive has slowed to v: 2.9e-7 against the 4.3e-6 of
+  // the 4 v phase), and the cycle a tie forms kicks the node back to the face with a spring at
+  // omega dt ~ 1.8, which leaves the central difference's own term m (dv)^2 / 8 in the balance
+  // (docs/solver.md, "The discrete energy identity"): 1.1 % of that largest energy in the straight
+  // OPTION 3 case and 5.5 % in the turned one, whose touch falls at another phase of the step
+  // (measured 2026-11-27 with the contact step counting the elements; each spring voting alone
+  // left it below 5 %).
+  m.termination.endeng = 50.0;
 
   test_support::Run run(m);
   const auto& tb = dynamic_cast<const StickingTiebreakContact&>(run.sim->contacts()[0]);

@@ -85,7 +85,7 @@ RestResult rest(int soft, const Frame& frame, bool type3 = false) {
 
   test_support::Run run(m);
   RestResult r;
-  r.dt0 = run.sim->stable_dt();
+  r.dt0 = run.sim->votes().elements;  // SOFT = 2 sizes its springs on it (not on the contact's vote)
   const Real dt_c = 0.6 * r.dt0;
   for (Id id : block.node) r.weight += run.mass(id) * kG;
   r.contact_dt_min = std::numeric_limits<Real>::max();
@@ -136,8 +136,11 @@ TEST(SegmentContact, SoftBlockOnStiffPlateRestsAtTheClosedFormPenetration) {
     EXPECT_NEAR(s2.mean_depth / s2.closed_depth, 1.0, 5e-3);
     EXPECT_LT(s2.k_code_dev, 1e-12);
     EXPECT_LT(s2.energy_error, 1e-3);
-    // The springs never set the step: k = 0.05 m* / dt_c^2 is far below an element's.
-    EXPECT_GT(s2.contact_dt_min, s2.dt0);
+    // The springs are soft (k = 0.05 m* / dt_c^2): with the elements on their nodes they vote
+    // 1 / dt^2 = 1 / dt_e^2 + 1 / dt_spring^2 (docs/solver.md), below the elements' step but close
+    // to it (measured: the contact's smallest vote 0.936 of the elements' step at t = 0).
+    EXPECT_LT(s2.contact_dt_min, s2.dt0);
+    EXPECT_GT(s2.contact_dt_min, 0.9 * s2.dt0);
   }
 }
 
@@ -175,7 +178,7 @@ PressResult press(int soft, const Frame& frame) {
   m.timestep.tssfac = 0.6;
   test_support::Run run(m);
   PressResult r;
-  const Real dt_c = 0.6 * run.sim->stable_dt();
+  const Real dt_c = 0.6 * run.sim->votes().elements;  // SOFT = 2 sizes its springs on the elements' step
   for (Id id : block.node) r.weight += run.mass(id) * kG;
   while (run.sim->step()) {
   }

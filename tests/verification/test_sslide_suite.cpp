@@ -1,9 +1,7 @@
 // The spec's 19 problems, one test each: build, run, and require every criterion of every pairing
 // (docs/verification.md). A criterion that does not hold fails its problem's test, and so does a
-// problem that cannot be built (a NotImplementedError is a failure, not a skip). The one exception
-// is kOpenRow below, a single row that is still open on issue 17 with its measured cause: it is
-// asserted to FAIL (so it cannot start passing unnoticed) and every other row of its problem is
-// hard. The same test runs the problem on one thread and, in a build with portable code generation,
+// problem that cannot be built (a NotImplementedError is a failure, not a skip); there is no list
+// of exceptions. The same test runs the problem on one thread and, in a build with portable code generation,
 // requires its history's CSV to match the digest stored in sslide_digests.txt: a change that moves
 // one bit of one problem's physics fails here, and a deliberate one regenerates the file
 // (scripts/sslide_digests.py) and says why in its commit. A second test per problem requires
@@ -73,23 +71,6 @@ std::map<std::string, std::string> stored_digests() {
   return out;
 }
 
-/// The one row open on issue 17: sslide9ps measures 3.647 against [3.36, 3.64]. The measured
-/// cause (docs/verification.md, Type 9 shear): failed segments keep their Coulomb friction and the
-/// load's overturning moment presses the failed leading columns to ~12.7, so the peak is P_x when
-/// the last (left) column fails, not the uniform 3.5 (mu_s 0.20/0.25/0.30/0.35 give 3.015/3.315/
-/// 3.647/3.955). The bound is the spec owner's; it is not widened here. When the row holds, this
-/// test fails and asks for the entry to be removed.
-struct OpenRow {
-  const char* problem;
-  const char* pairing;
-  const char* criterion;
-};
-constexpr OpenRow kOpenRow{"sslide9ps", "solid_on_solid", "peak |F_x| (shear failure)"};
-
-bool is_open_row(const std::string& problem, const SslideCriterion& r) {
-  return problem == kOpenRow.problem && r.pairing == kOpenRow.pairing && r.criterion == kOpenRow.criterion;
-}
-
 class SslideSuite : public ::testing::TestWithParam<std::string> {};
 
 /// Runs `problem` on `threads` threads into `history`; with `csv_path`, also writes the CSV history
@@ -140,13 +121,6 @@ TEST_P(SslideSuite, EveryCriterionHolds) {
   const auto rows = evaluate_sslide_criteria(problem, sslide_histories(history, problem), Dyna3dReported::builtin());
   ASSERT_FALSE(rows.empty());
   for (const auto& r : rows) {
-    if (is_open_row(GetParam(), r)) {
-      EXPECT_FALSE(r.pass) << "now holds (" << r.measured << ", bound " << r.bound
-                           << "): remove kOpenRow from test_sslide_suite.cpp, .ci/run and docs/verification.md";
-      std::printf("open on issue 17: %s %s %s = %.6g, bound %s\n", GetParam().c_str(), r.pairing.c_str(),
-                  r.criterion.c_str(), r.measured, r.bound.c_str());
-      continue;
-    }
     EXPECT_TRUE(r.pass) << r.pairing << ": " << r.criterion << " = " << r.measured << ", bound " << r.bound
                         << (r.dyna3d ? " (DYNA3D " + std::to_string(*r.dyna3d) + ")" : std::string())
                         << (r.note.empty() ? "" : " [" + r.note + "]");

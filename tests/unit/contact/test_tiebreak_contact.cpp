@@ -192,20 +192,35 @@ TEST(TiebreakNodes, FailsInShearAtTheAnalyticalLoad) {
 }
 
 TEST(TiebreakNodes, SpringsVoteTheirStableStep) {
-  TiebreakBlocks m(parameters(TiebreakParameters::FailureUnit::node, 1.0, 1.0), 1);
-  m.setup.controls.end_time = 0.01;
-  m.start();
-  // k = f K A / h of the master face (f = 0.1, K = 1000 / (3 (1 - 0.6)), A = 0.25, h = 0.5),
-  // between a slave of mass 0.3 / 8 and the lightest master corner.
-  const Real k = 0.1 * (1000.0 / 1.2) * 0.25 * 0.25 / (0.25 * 0.5);
-  ASSERT_EQ(m.tie->links().size(), 4u);
-  EXPECT_NEAR(m.tie->stiffness(0), k, 1e-9 * k);
-  Real mm = 1e300;
-  for (const TiePoint& t : m.tie->links())
-    for (int a = 0; a < 4; ++a)
-      if (t.shape[a] != 0.0) mm = std::min(mm, m.sim().nodes().mass[t.master[a]]);
-  const Real ms = m.sim().nodes().mass[m.tie->links()[0].slave];
-  EXPECT_NEAR(m.tie->stable_dt(), 2.0 / std::sqrt(k * (1.0 / ms + 1.0 / mm)), 1e-9);
+  // Each spring's own vote (SimulationControls::contact_step_with_elements off), then the default:
+  // the same spring with the elements on its nodes, 1 / dt^2 = 1 / dt_e^2 + 1 / dt_c^2, dt_e the
+  // smaller block vote (the slave's block and the masters' are the two blocks of the model).
+  Real alone = 0.0;
+  for (const bool with_elements : {false, true}) {
+    TiebreakBlocks m(parameters(TiebreakParameters::FailureUnit::node, 1.0, 1.0), 1);
+    m.setup.controls.end_time = 0.01;
+    m.setup.controls.contact_step_with_elements = with_elements;
+    m.start();
+    // k = f K A / h of the master face (f = 0.1, K = 1000 / (3 (1 - 0.6)), A = 0.25, h = 0.5),
+    // between a slave of mass 0.3 / 8 and the lightest master corner.
+    const Real k = 0.1 * (1000.0 / 1.2) * 0.25 * 0.25 / (0.25 * 0.5);
+    ASSERT_EQ(m.tie->links().size(), 4u);
+    EXPECT_NEAR(m.tie->stiffness(0), k, 1e-9 * k);
+    Real mm = 1e300;
+    for (const TiePoint& t : m.tie->links())
+      for (int a = 0; a < 4; ++a)
+        if (t.shape[a] != 0.0) mm = std::min(mm, m.sim().nodes().mass[t.master[a]]);
+    const Real ms = m.sim().nodes().mass[m.tie->links()[0].slave];
+    const Real dt_c = 2.0 / std::sqrt(k * (1.0 / ms + 1.0 / mm));
+    if (!with_elements) {
+      alone = m.tie->stable_dt();
+      EXPECT_NEAR(alone, dt_c, 1e-9);
+    } else {
+      const Real dt_e = m.sim().votes().elements;
+      EXPECT_NEAR(m.tie->stable_dt(), 1.0 / std::sqrt(1.0 / (dt_e * dt_e) + 1.0 / (dt_c * dt_c)), 1e-12);
+      EXPECT_LT(m.tie->stable_dt(), alone);
+    }
+  }
 }
 
 /// Type 9 between shells (issue 9, item: post-failure shell thickness): a 3 x 3 shell plate
