@@ -178,6 +178,12 @@ void print_run_end(const slideline::Simulation& sim, double wall) {
                "(the run stops at {:.1f}%: --energy-limit or *CONTROL_TERMINATION ENDENG)\n",
                100.0 * w->relative_error, w->time, w->cycle, 100.0 * sim.energy_error_fraction(),
                100.0 * sim.controls().energy_error_limit);
+  if (const auto& w = sim.contact_energy_warning())
+    fmt::print(stderr, "warning: the contact forces did {:.1f}% of the largest energy in play more work on the bodies "
+               "than they took from them by t = {:g} (cycle {}, the first check): contact created energy (the energy balance cannot "
+               "show it; a contact spring too stiff for the step, chatter, or initial penetrations pushed out); "
+               "the contact energy ended at {:.4g}\n",
+               100.0 * w->relative_error, w->time, w->cycle, sim.energy().contact);
   const double element_cycles = double(sim.element_count()) * double(std::max(1L, sim.cycle()));
   fmt::print("done: {} cycles to t = {:g} in {:.2f} s ({:.1f} ns per element-cycle, contact {:.0f}% of the time)\n",
              sim.cycle(), sim.time(), wall, element_cycles > 0 ? 1e9 * wall / element_cycles : 0.0,

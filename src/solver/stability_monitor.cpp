@@ -124,6 +124,11 @@ void StabilityMonitor::check_energy(const EnergyReport& e, PartEnergyMonitor& pa
                                std::to_string(100.0 * controls.energy_error_limit) + "%" + at(t, cycle) +
                                "; the fastest node is " + describe_node(model, fastest_node(model.nodes)),
                            t, cycle);
+  // Every ledger term is a nodal work, so energy that contact creates balances: it shows only as
+  // contact forces that did more work on the bodies than they took from them (penalty springs
+  // store, friction dissipates: contact + friction >= 0 for a contact that creates nothing).
+  const Real created = -(e.contact + e.friction) / std::max(peak_energy_, std::numeric_limits<Real>::min());
+  if (created > kContactEnergyWarning && !contact_warning_) contact_warning_ = EnergyWarning{t, cycle, created};
 }
 
 }  // namespace slideline

@@ -107,6 +107,9 @@ class Simulation {
   Real contact_seconds() const { return contact_seconds_; }
   /// Set once the energy balance error first passed controls.energy_error_warning.
   const std::optional<EnergyWarning>& energy_warning() const { return monitor_.energy_warning(); }
+  /// Set once contact had created more than StabilityMonitor::kContactEnergyWarning of the largest
+  /// energy in play (its forces did that much more work on the bodies than they took from them).
+  const std::optional<EnergyWarning>& contact_energy_warning() const { return monitor_.contact_energy_warning(); }
   /// Parts whose hourglass energy passed 10% of their internal energy, in the order it happened
   /// (one entry per part at most; part_energy_monitor.hpp).
   const std::vector<HourglassWarning>& hourglass_warnings() const { return part_energy_.hourglass_warnings(); }

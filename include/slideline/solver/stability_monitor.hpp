@@ -43,11 +43,18 @@ class StabilityMonitor {
   Real energy_error_fraction(const EnergyReport& e) const;
   /// Set once the energy balance error first passed controls.energy_error_warning.
   const std::optional<EnergyWarning>& energy_warning() const { return energy_warning_; }
+  /// Set once the contact forces first did more than kContactEnergyWarning of the largest energy
+  /// in play more work on the bodies than they took from them (relative_error: that excess over
+  /// the energy in play). Every ledger term is a nodal work, so the balance cannot see energy that
+  /// contact creates; this is where it shows.
+  const std::optional<EnergyWarning>& contact_energy_warning() const { return contact_warning_; }
+  static constexpr Real kContactEnergyWarning = 0.05;
 
  private:
   Real dt_first_ = 0.0;     // the first step taken (for dt_min_fraction)
   Real peak_energy_ = 0.0;  // largest energy in play so far
   std::optional<EnergyWarning> energy_warning_;
+  std::optional<EnergyWarning> contact_warning_;
 };
 
 }  // namespace slideline
